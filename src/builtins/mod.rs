@@ -1,0 +1,1 @@
+//! The library, one module per area; each registers its builtins with a one-line doc.

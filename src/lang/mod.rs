@@ -1,0 +1,1 @@
+//! The language: reader, values, compiler, evaluator, errors.

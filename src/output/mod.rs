@@ -1,0 +1,1 @@
+//! The drawing model and its writers (SVG, DXF).
