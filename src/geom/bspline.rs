@@ -223,12 +223,7 @@ impl BSpline {
 fn insert_knot(knots: &mut Vec<f64>, pw: &mut Vec<DVec4>, p: usize, u: f64) {
     // Span k: knots[k] <= u < knots[k+1], taking the last such k for repeated knots.
     let n = pw.len();
-    let mut k = p;
-    for i in p..n {
-        if knots[i] <= u {
-            k = i;
-        }
-    }
+    let k = (p..n).rfind(|&i| knots[i] <= u).unwrap_or(p);
     let mut new_pts = Vec::with_capacity(n + 1);
     for i in 0..=n {
         if i + p <= k {
