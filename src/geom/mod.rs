@@ -5,6 +5,7 @@
 
 pub mod bspline;
 pub mod frame;
+pub mod quadspline;
 pub mod traits;
 
 pub use glam::{DMat4, DVec2, DVec3};
