@@ -1,1 +1,54 @@
-//! The library, one module per area; each registers its builtins with a one-line doc.
+//! The library, one module per area (as Lua's `lmathlib.c`, `lstrlib.c`...). Each module holds a
+//! flat list of small functions and one `static` registration table whose entries carry the
+//! name, signature and one-line doc that `help`, `lispcad doc` and the README show.
+
+use crate::lang::{Builtin, Interp};
+
+pub mod control;
+pub mod io;
+pub mod lists;
+pub mod numbers;
+pub mod predicates;
+pub mod special;
+pub mod strings;
+pub mod system;
+
+/// Every registration table, in the order `lispcad doc` lists them.
+pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
+    vec![
+        ("Special forms", special::BUILTINS),
+        ("Evaluation and errors", control::BUILTINS),
+        ("Lists", lists::BUILTINS),
+        ("Lists: car/cdr compositions", lists::CXR),
+        ("Numbers", numbers::BUILTINS),
+        ("Predicates", predicates::BUILTINS),
+        ("Strings", strings::BUILTINS),
+        ("Printing and files", io::BUILTINS),
+        ("System", system::BUILTINS),
+    ]
+}
+
+/// Per-interpreter set-up a library area needs beyond its functions (system variables...).
+pub fn init(it: &mut Interp) {
+    system::init(it);
+}
+
+/// Finds a builtin's descriptor by name (case-insensitive).
+pub fn find(name: &str) -> Option<&'static Builtin> {
+    tables()
+        .into_iter()
+        .flat_map(|(_, t)| t.iter())
+        .find(|b| b.name.eq_ignore_ascii_case(name))
+}
+
+/// Writes the interpreter's drawing to each output path (format from the extension).
+pub fn write_outputs(
+    _it: &mut Interp,
+    outputs: &[std::path::PathBuf],
+    _common: &crate::cli::Common,
+) -> Result<(), String> {
+    if outputs.is_empty() {
+        return Ok(());
+    }
+    Err("drawing output is not available yet in this build".into())
+}

@@ -1,6 +1,97 @@
-//! Command line: argument parsing, subcommands, REPL, batch.
+//! Command line: argument parsing and dispatch. Each subcommand is a module taking its options
+//! and returning an exit status; exit codes live here (0 ok, 1 script error, 2 usage error).
 
-/// Entry point; returns the process exit status (0 ok, 1 script error, 2 usage error).
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+pub mod check;
+pub mod diag;
+pub mod doc;
+pub mod repl;
+pub mod run;
+
+pub const EXIT_OK: i32 = 0;
+pub const EXIT_SCRIPT_ERROR: i32 = 1;
+pub const EXIT_USAGE: i32 = 2;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "lispcad",
+    version,
+    about = "An AutoLISP dialect over a 3D geometry core, writing SVG and DXF"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    #[command(flatten)]
+    pub common: Common,
+}
+
+/// Options every evaluating command shares.
+#[derive(Args, Debug, Clone, Default)]
+pub struct Common {
+    /// Evaluation budget: stop with an error after N steps (calls and loop iterations).
+    #[arg(long, global = true, value_name = "N")]
+    pub max_steps: Option<u64>,
+    /// DXF flavour: cad (R2000, full) or cam (R12, arcs and polylines only).
+    #[arg(long, global = true, value_name = "cad|cam")]
+    pub dxf_profile: Option<String>,
+    /// Arc-fitting tolerance of the CAM profile, in drawing units (mm).
+    #[arg(long, global = true, value_name = "MM")]
+    pub cam_tol: Option<f64>,
+    /// Scripted answers for getpoint/getreal/... (one per line).
+    #[arg(long, global = true, value_name = "FILE")]
+    pub answers: Option<PathBuf>,
+    /// Allow file writes anywhere (default: below the script's and the outputs' directories).
+    #[arg(long, global = true)]
+    pub allow_fs: bool,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Interactive REPL (files are loaded first).
+    Repl { files: Vec<PathBuf> },
+    /// Evaluate a script and write the drawing to each output.
+    Run(run::RunArgs),
+    /// Evaluate one expression and print its value.
+    Eval {
+        expr: String,
+        /// Bind a global before evaluating: NAME=VALUE (VALUE read as a literal).
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+    },
+    /// Parse and lint without running; non-zero exit on errors.
+    Check { files: Vec<PathBuf> },
+    /// Print the reference of every builtin.
+    Doc,
+}
+
+/// Entry point; returns the process exit status.
 pub fn main() -> i32 {
-    0
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
+            let _ = e.print();
+            return code;
+        }
+    };
+    // Everything that evaluates Lisp runs on a thread with a large stack (see `with_eval_stack`).
+    crate::lang::eval::with_eval_stack(move || dispatch(cli))
+}
+
+fn dispatch(cli: Cli) -> i32 {
+    let common = cli.common;
+    match cli.command {
+        None => repl::repl(&[], &common),
+        Some(Command::Repl { files }) => repl::repl(&files, &common),
+        Some(Command::Run(args)) => run::run(&args, &common),
+        Some(Command::Eval { expr, set }) => run::eval_expr(&expr, &set, &common),
+        Some(Command::Check { files }) => check::check(&files),
+        Some(Command::Doc) => {
+            print!("{}", doc::reference());
+            EXIT_OK
+        }
+    }
 }

@@ -1,1 +1,20 @@
-//! The language: reader, values, compiler, evaluator, errors.
+//! The language: reader, values, compiler, evaluator, errors, printer.
+//!
+//! One file per phase, as in Lua's source: `reader` (text → values, with spans), `compile`
+//! (values → closures), `eval` (the interpreter state and driver), `print`, `error`; `value` and
+//! `symbols` hold the data; `builtin` is the descriptor every library function registers.
+
+pub mod builtin;
+pub mod compile;
+pub mod error;
+pub mod eval;
+pub mod lint;
+pub mod print;
+pub mod reader;
+pub mod symbols;
+pub mod value;
+
+pub use builtin::Builtin;
+pub use error::{ErrorKind, Exn, LResult, LispError};
+pub use eval::Interp;
+pub use value::{Sym, Value};

@@ -1,0 +1,274 @@
+//! Printing and files. Writing files is allowed only below the permitted roots (the script's
+//! directory and the output directories) unless the run allows all of the file system.
+
+use std::cell::RefCell;
+use std::fmt;
+use std::fs::File;
+use std::io::{BufRead, BufReader, BufWriter, Read, Write};
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use crate::builtin;
+use crate::lang::builtin::{bad_arg, Builtin};
+use crate::lang::error::{err, LResult};
+use crate::lang::value::Object;
+use crate::lang::{Interp, Value};
+
+pub static BUILTINS: &[Builtin] = &[
+    builtin!("princ", "(princ [x [file]])", "Prints x as text (strings without quotes); returns x. (princ) prints nothing: a quiet exit.", 0, 2, princ),
+    builtin!("prin1", "(prin1 [x [file]])", "Prints x readably (strings quoted and escaped); returns x.", 0, 2, prin1),
+    builtin!("print", "(print [x [file]])", "Prints a newline, x readably, and a space; returns x.", 0, 2, print),
+    builtin!("terpri", "(terpri)", "Prints a newline; returns nil.", 0, 0, terpri),
+    builtin!("prompt", "(prompt string)", "Prints the string; returns nil.", 1, 1, prompt),
+    builtin!("alert", "(alert string)", "Shows a message (printed, headless); returns nil.", 1, 1, alert),
+    builtin!("open", "(open filename mode)", "Opens a file for \"r\"ead, \"w\"rite or \"a\"ppend; a file descriptor, or nil on failure.", 2, 2, open),
+    builtin!("close", "(close file)", "Closes a file; returns nil.", 1, 1, close),
+    builtin!("read-line", "(read-line [file])", "The next line of a file without its newline; nil at end of file.", 0, 1, read_line),
+    builtin!("write-line", "(write-line string [file])", "Writes the string and a newline; returns the string.", 1, 2, write_line),
+    builtin!("read-char", "(read-char [file])", "The code of the next character of a file; nil at end of file.", 0, 1, read_char),
+    builtin!("write-char", "(write-char code [file])", "Writes one character; returns its code.", 1, 2, write_char),
+    builtin!("findfile", "(findfile name)", "The full path of a file found in the script's directory or the current one, or nil.", 1, 1, findfile),
+];
+
+/// Which directories a script may write below.
+#[derive(Default)]
+pub struct FsPolicy {
+    pub allow_all: bool,
+    pub roots: Vec<PathBuf>,
+}
+
+impl FsPolicy {
+    /// Whether writing `path` is permitted.
+    pub fn may_write(&self, path: &Path) -> bool {
+        if self.allow_all {
+            return true;
+        }
+        let dir = path.parent().filter(|p| !p.as_os_str().is_empty());
+        let dir = match dir {
+            Some(d) => d.canonicalize(),
+            None => std::env::current_dir(),
+        };
+        let Ok(dir) = dir else { return false };
+        let roots: Vec<PathBuf> = if self.roots.is_empty() {
+            std::env::current_dir().into_iter().collect()
+        } else {
+            self.roots.clone()
+        };
+        roots
+            .iter()
+            .filter_map(|r| r.canonicalize().ok())
+            .any(|r| dir.starts_with(r))
+    }
+}
+
+enum Handle {
+    Read(BufReader<File>),
+    Write(BufWriter<File>),
+    Closed,
+}
+
+/// A file descriptor value.
+pub struct LispFile {
+    name: String,
+    handle: RefCell<Handle>,
+}
+
+impl Object for LispFile {
+    fn type_name(&self) -> &'static str {
+        "FILE"
+    }
+    fn print(&self, f: &mut dyn fmt::Write) -> fmt::Result {
+        write!(f, "#<FILE \"{}\">", self.name)
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+fn file_arg<'a>(it: &Interp, v: &'a Value) -> Result<&'a LispFile, crate::lang::Exn> {
+    v.as_obj::<LispFile>()
+        .ok_or_else(|| bad_arg(it, "streamp", v))
+}
+
+/// Writes text to the interpreter's output or to a file argument.
+fn emit(it: &mut Interp, text: &str, file: Option<&Value>) -> Result<(), crate::lang::Exn> {
+    match file {
+        None => {
+            it.write_out(text);
+            Ok(())
+        }
+        Some(f) => {
+            let f = file_arg(it, f)?;
+            match &mut *f.handle.borrow_mut() {
+                Handle::Write(w) => w
+                    .write_all(text.as_bytes())
+                    .map_err(|e| err(format!("write to {} failed: {e}", f.name))),
+                _ => Err(err(format!("file {} is not open for writing", f.name))),
+            }
+        }
+    }
+}
+
+fn princ(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(x) = a.first() else {
+        return Ok(quiet(it));
+    };
+    let s = it.princ_string(x);
+    emit(it, &s, a.get(1))?;
+    Ok(x.clone())
+}
+
+/// The value of `(princ)`: a symbol with an empty name, which prints as nothing.
+fn quiet(it: &mut Interp) -> Value {
+    Value::Sym(it.intern(""))
+}
+
+fn prin1(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(x) = a.first() else {
+        return Ok(quiet(it));
+    };
+    let s = it.prin1_string(x);
+    emit(it, &s, a.get(1))?;
+    Ok(x.clone())
+}
+
+fn print(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(x) = a.first() else {
+        return Ok(quiet(it));
+    };
+    let s = format!("\n{} ", it.prin1_string(x));
+    emit(it, &s, a.get(1))?;
+    Ok(x.clone())
+}
+
+fn terpri(it: &mut Interp, _: &[Value]) -> LResult {
+    it.write_out("\n");
+    Ok(Value::Nil)
+}
+
+fn prompt(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.string(&a[0])?.to_string();
+    it.write_out(&s);
+    Ok(Value::Nil)
+}
+
+fn alert(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.string(&a[0])?.to_string();
+    it.write_out(&format!("{s}\n"));
+    Ok(Value::Nil)
+}
+
+fn open(it: &mut Interp, a: &[Value]) -> LResult {
+    let name = it.string(&a[0])?.to_string();
+    let mode = it.string(&a[1])?.to_lowercase();
+    let path = match &it.base_dir {
+        Some(b) if Path::new(&name).is_relative() => b.join(&name),
+        _ => PathBuf::from(&name),
+    };
+    let handle = match mode.as_str() {
+        "r" => match File::open(&path) {
+            Ok(f) => Handle::Read(BufReader::new(f)),
+            Err(_) => return Ok(Value::Nil),
+        },
+        "w" | "a" => {
+            if !it.ext::<FsPolicy>().may_write(&path) {
+                return Err(err(format!(
+                    "file access refused: {} is outside the script and output directories (use --allow-fs)",
+                    path.display()
+                )));
+            }
+            let f = std::fs::OpenOptions::new()
+                .write(true)
+                .create(true)
+                .append(mode == "a")
+                .truncate(mode == "w")
+                .open(&path);
+            match f {
+                Ok(f) => Handle::Write(BufWriter::new(f)),
+                Err(_) => return Ok(Value::Nil),
+            }
+        }
+        _ => return Err(err(format!("bad argument value: file mode \"{mode}\""))),
+    };
+    Ok(Value::Obj(Rc::new(LispFile {
+        name,
+        handle: RefCell::new(handle),
+    })))
+}
+
+fn close(it: &mut Interp, a: &[Value]) -> LResult {
+    let f = file_arg(it, &a[0])?;
+    let old = std::mem::replace(&mut *f.handle.borrow_mut(), Handle::Closed);
+    if let Handle::Write(mut w) = old {
+        w.flush()
+            .map_err(|e| err(format!("close of {} failed: {e}", f.name)))?;
+    }
+    Ok(Value::Nil)
+}
+
+fn reader_of<'a>(it: &Interp, a: &'a [Value]) -> Result<&'a LispFile, crate::lang::Exn> {
+    match a.first() {
+        Some(f) => file_arg(it, f),
+        None => Err(err(
+            "no console input: read-line and read-char need a file headless",
+        )),
+    }
+}
+
+fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
+    let f = reader_of(it, a)?;
+    let mut h = f.handle.borrow_mut();
+    let Handle::Read(r) = &mut *h else {
+        return Err(err(format!("file {} is not open for reading", f.name)));
+    };
+    let mut line = String::new();
+    match r.read_line(&mut line) {
+        Ok(0) => Ok(Value::Nil),
+        Ok(_) => {
+            let trimmed = line.trim_end_matches(['\n', '\r']);
+            Ok(Value::str(trimmed))
+        }
+        Err(e) => Err(err(format!("read from {} failed: {e}", f.name))),
+    }
+}
+
+fn write_line(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = format!("{}\n", it.string(&a[0])?);
+    emit(it, &s, a.get(1))?;
+    Ok(a[0].clone())
+}
+
+fn read_char(it: &mut Interp, a: &[Value]) -> LResult {
+    let f = reader_of(it, a)?;
+    let mut h = f.handle.borrow_mut();
+    let Handle::Read(r) = &mut *h else {
+        return Err(err(format!("file {} is not open for reading", f.name)));
+    };
+    let mut b = [0u8; 1];
+    match r.read(&mut b) {
+        Ok(0) => Ok(Value::Nil),
+        Ok(_) => Ok(Value::Int(b[0] as i32)),
+        Err(e) => Err(err(format!("read from {} failed: {e}", f.name))),
+    }
+}
+
+fn write_char(it: &mut Interp, a: &[Value]) -> LResult {
+    let c = it.int(&a[0])?;
+    let ch = u32::try_from(c)
+        .ok()
+        .and_then(char::from_u32)
+        .ok_or_else(|| err(format!("bad argument value: character code {c}")))?;
+    emit(it, ch.encode_utf8(&mut [0; 4]), a.get(1))?;
+    Ok(Value::Int(c))
+}
+
+fn findfile(it: &mut Interp, a: &[Value]) -> LResult {
+    let name = it.string(&a[0])?.to_string();
+    Ok(match it.resolve_path(&name) {
+        Some(p) => {
+            let p = p.canonicalize().unwrap_or(p);
+            Value::str(&p.display().to_string())
+        }
+        None => Value::Nil,
+    })
+}

@@ -1,0 +1,167 @@
+//! Strings: building, measuring, converting, and reading values from text.
+
+use crate::builtin;
+use crate::lang::builtin::{bad_arg, Builtin, MANY};
+use crate::lang::error::{err, LResult};
+use crate::lang::reader::read_one;
+use crate::lang::{Interp, Value};
+
+pub static BUILTINS: &[Builtin] = &[
+    builtin!(
+        "strcat",
+        "(strcat string...)",
+        "The strings joined into one.",
+        0,
+        MANY,
+        strcat
+    ),
+    builtin!(
+        "strlen",
+        "(strlen [string...])",
+        "The total number of characters of the strings.",
+        0,
+        MANY,
+        strlen
+    ),
+    builtin!(
+        "ascii",
+        "(ascii string)",
+        "The character code of the first character (0 for \"\").",
+        1,
+        1,
+        ascii
+    ),
+    builtin!(
+        "chr",
+        "(chr code)",
+        "A one-character string from a character code.",
+        1,
+        1,
+        chr
+    ),
+    builtin!("itoa", "(itoa int)", "The integer as a string.", 1, 1, itoa),
+    builtin!(
+        "read",
+        "(read [string])",
+        "The first expression read from the string (nil for none).",
+        0,
+        1,
+        read
+    ),
+    builtin!(
+        "vl-princ-to-string",
+        "(vl-princ-to-string x)",
+        "What princ would print for x, as a string.",
+        1,
+        1,
+        princ_to_string
+    ),
+    builtin!(
+        "vl-prin1-to-string",
+        "(vl-prin1-to-string x)",
+        "What prin1 would print for x, as a string.",
+        1,
+        1,
+        prin1_to_string
+    ),
+    builtin!(
+        "vl-string->list",
+        "(vl-string->list string)",
+        "The character codes of a string.",
+        1,
+        1,
+        string_to_list
+    ),
+    builtin!(
+        "vl-list->string",
+        "(vl-list->string codes)",
+        "A string from a list of character codes.",
+        1,
+        1,
+        list_to_string
+    ),
+];
+
+fn strcat(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut s = String::new();
+    for x in a {
+        s.push_str(it.string(x)?);
+    }
+    Ok(Value::str(&s))
+}
+
+fn strlen(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut n = 0;
+    for x in a {
+        n += it.string(x)?.chars().count();
+    }
+    Ok(Value::Int(n as i32))
+}
+
+fn ascii(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.string(&a[0])?;
+    Ok(Value::Int(s.chars().next().map_or(0, |c| c as i32)))
+}
+
+fn chr(it: &mut Interp, a: &[Value]) -> LResult {
+    let c = it.int(&a[0])?;
+    match u32::try_from(c).ok().and_then(char::from_u32) {
+        Some('\0') => Ok(Value::str("")),
+        Some(ch) => Ok(Value::str(ch.encode_utf8(&mut [0; 4]))),
+        None => Err(err(format!("bad argument value: character code {c}"))),
+    }
+}
+
+fn itoa(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::str(&it.int(&a[0])?.to_string()))
+}
+
+fn read(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(s) = a.first() else {
+        return Ok(Value::Nil);
+    };
+    let text = it.string(s)?.to_string();
+    let r = read_one(&text, &mut it.syms);
+    it.sync_cells();
+    match r {
+        Ok(Some((v, _))) => Ok(v),
+        Ok(None) => Ok(Value::Nil),
+        Err(e) => Err(err(if e.message.starts_with("malformed list") {
+            "malformed list on input".to_string()
+        } else {
+            e.message
+        })),
+    }
+}
+
+fn princ_to_string(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::str(&it.princ_string(&a[0])))
+}
+
+fn prin1_to_string(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::str(&it.prin1_string(&a[0])))
+}
+
+fn string_to_list(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.string(&a[0])?;
+    Ok(Value::list(
+        s.chars().map(|c| Value::Int(c as i32)).collect::<Vec<_>>(),
+    ))
+}
+
+fn list_to_string(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut s = String::new();
+    for x in it.list_arg(&a[0])?.iter() {
+        let c = match x {
+            Value::Int(c) => *c,
+            other => return Err(bad_arg(it, "fixnump", other)),
+        };
+        s.push(
+            u32::try_from(c)
+                .ok()
+                .and_then(char::from_u32)
+                .unwrap_or('\u{FFFD}'),
+        );
+    }
+    Ok(Value::str(&s))
+}

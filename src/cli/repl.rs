@@ -1,0 +1,246 @@
+//! The REPL: rustyline with history, multi-line entry until the form is complete (the reader's
+//! own scan, so strings and comments are understood), completion of builtins and user symbols,
+//! matching-bracket highlight, `:help`/`:load`/`:save`, Ctrl-C interrupting an evaluation.
+//!
+//! When standard input is not a terminal the same loop runs without line editing, so the REPL
+//! can be driven by a pipe (tests, editors).
+
+use std::borrow::Cow;
+use std::cell::RefCell;
+use std::io::{BufRead, IsTerminal, Write};
+use std::path::PathBuf;
+use std::rc::Rc;
+
+use rustyline::completion::Completer;
+use rustyline::highlight::{CmdKind, Highlighter, MatchingBracketHighlighter};
+use rustyline::hint::Hinter;
+use rustyline::validate::{ValidationContext, ValidationResult, Validator};
+use rustyline::{Context, Helper};
+
+use super::{diag, Common, EXIT_OK};
+use crate::lang::reader::{scan, Scan};
+use crate::lang::{ErrorKind, Interp, Value};
+
+const PROMPT: &str = "_$ ";
+
+struct ReplHelper {
+    names: Rc<RefCell<Vec<String>>>,
+    brackets: MatchingBracketHighlighter,
+}
+
+impl Completer for ReplHelper {
+    type Candidate = String;
+    fn complete(
+        &self,
+        line: &str,
+        pos: usize,
+        _ctx: &Context<'_>,
+    ) -> rustyline::Result<(usize, Vec<String>)> {
+        let start = line[..pos]
+            .rfind(|c: char| c.is_whitespace() || "()'\"".contains(c))
+            .map_or(0, |i| i + 1);
+        let prefix = line[start..pos].to_lowercase();
+        if prefix.is_empty() {
+            return Ok((start, Vec::new()));
+        }
+        let mut found: Vec<String> = self
+            .names
+            .borrow()
+            .iter()
+            .filter(|n| n.starts_with(&prefix))
+            .cloned()
+            .collect();
+        found.sort();
+        found.dedup();
+        Ok((start, found))
+    }
+}
+
+impl Hinter for ReplHelper {
+    type Hint = String;
+}
+
+impl Highlighter for ReplHelper {
+    fn highlight<'l>(&self, line: &'l str, pos: usize) -> Cow<'l, str> {
+        self.brackets.highlight(line, pos)
+    }
+    fn highlight_char(&self, line: &str, pos: usize, kind: CmdKind) -> bool {
+        self.brackets.highlight_char(line, pos, kind)
+    }
+}
+
+impl Validator for ReplHelper {
+    fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
+        Ok(match scan(ctx.input()) {
+            Scan::Incomplete(_) if !ctx.input().trim_start().starts_with(':') => {
+                ValidationResult::Incomplete
+            }
+            _ => ValidationResult::Valid(None),
+        })
+    }
+}
+
+impl Helper for ReplHelper {}
+
+fn history_path() -> Option<PathBuf> {
+    if let Some(p) = std::env::var_os("LISPCAD_HISTORY") {
+        return Some(PathBuf::from(p));
+    }
+    std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".lispcad_history"))
+}
+
+/// Every name completion offers: builtins and the symbols that have values.
+fn completion_names(it: &Interp) -> Vec<String> {
+    it.syms
+        .all()
+        .filter(|(s, n)| !n.is_empty() && it.values.get(s.idx()).is_some_and(Value::truthy))
+        .map(|(_, n)| n.to_lowercase())
+        .collect()
+}
+
+pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
+    let mut it = super::run::configured_interp(common);
+    for f in files {
+        if let Err(e) = it.load_file(&f.display().to_string()) {
+            diag::print_error(&it, &e);
+        }
+    }
+    let flag = it.interrupt.clone();
+    // Ctrl-C while evaluating interrupts the evaluation; while editing, rustyline sees it.
+    let _ = ctrlc::set_handler(move || flag.store(true, std::sync::atomic::Ordering::Relaxed));
+    if std::io::stdin().is_terminal() {
+        interactive(&mut it)
+    } else {
+        piped(&mut it)
+    }
+}
+
+fn interactive(it: &mut Interp) -> i32 {
+    let names = Rc::new(RefCell::new(completion_names(it)));
+    let config = rustyline::Config::builder().auto_add_history(false).build();
+    let mut ed = match rustyline::Editor::with_config(config) {
+        Ok(e) => e,
+        Err(e) => {
+            eprintln!("error: cannot start the line editor: {e}");
+            return piped(it);
+        }
+    };
+    ed.set_helper(Some(ReplHelper {
+        names: names.clone(),
+        brackets: MatchingBracketHighlighter::new(),
+    }));
+    let hist = history_path();
+    if let Some(h) = &hist {
+        let _ = ed.load_history(h);
+    }
+    println!(
+        "lispcad {} — AutoLISP REPL. :help NAME, :load FILE, :save FILE, :quit; Ctrl-D exits.",
+        env!("CARGO_PKG_VERSION")
+    );
+    loop {
+        match ed.readline(PROMPT) {
+            Ok(line) => {
+                if line.trim().is_empty() {
+                    continue;
+                }
+                let _ = ed.add_history_entry(line.as_str());
+                if let Some(h) = &hist {
+                    let _ = ed.save_history(h);
+                }
+                if !entry(it, &line) {
+                    break;
+                }
+                *names.borrow_mut() = completion_names(it);
+            }
+            Err(rustyline::error::ReadlineError::Interrupted) => continue,
+            Err(_) => break,
+        }
+    }
+    EXIT_OK
+}
+
+fn piped(it: &mut Interp) -> i32 {
+    let stdin = std::io::stdin();
+    let mut pending = String::new();
+    for line in stdin.lock().lines() {
+        let Ok(line) = line else { break };
+        pending.push_str(&line);
+        pending.push('\n');
+        let is_command = pending.trim_start().starts_with(':');
+        if !is_command && matches!(scan(&pending), Scan::Incomplete(_)) {
+            continue;
+        }
+        let text = std::mem::take(&mut pending);
+        if text.trim().is_empty() {
+            continue;
+        }
+        if !entry(it, &text) {
+            return EXIT_OK;
+        }
+    }
+    if !pending.trim().is_empty() {
+        entry(it, &pending);
+    }
+    EXIT_OK
+}
+
+/// Handles one complete entry; false to leave the REPL.
+fn entry(it: &mut Interp, text: &str) -> bool {
+    let trimmed = text.trim();
+    if let Some(cmd) = trimmed.strip_prefix(':') {
+        return command(it, cmd);
+    }
+    it.interrupt
+        .store(false, std::sync::atomic::Ordering::Relaxed);
+    it.set_max_steps(None);
+    let r = it.eval_source("<repl>", text);
+    it.flush_out();
+    match r {
+        Ok(v) => {
+            let shown = it.prin1_string(&v);
+            if !shown.is_empty() {
+                println!("{shown}");
+            }
+        }
+        Err(e) if e.kind == ErrorKind::Exit => return false,
+        Err(e) => {
+            eprintln!("{}", diag::render_error(it, &e));
+        }
+    }
+    let _ = std::io::stdout().flush();
+    true
+}
+
+fn command(it: &mut Interp, cmd: &str) -> bool {
+    let (name, arg) = cmd.split_once(char::is_whitespace).unwrap_or((cmd, ""));
+    let arg = arg.trim();
+    match name {
+        "q" | "quit" | "exit" => return false,
+        "help" | "h" => {
+            if arg.is_empty() {
+                println!(":help NAME   signature and description of a builtin");
+                println!(":load FILE   load and evaluate a .lsp file");
+                println!(":save FILE   write the drawing (.svg or .dxf)");
+                println!(":quit        leave (or Ctrl-D)");
+            } else {
+                match crate::builtins::system::help_text(arg) {
+                    Some(t) => println!("{t}"),
+                    None => println!("no help for {arg}: not a builtin"),
+                }
+            }
+        }
+        "load" => match it.load_file(arg) {
+            Ok(v) => println!("{}", it.prin1_string(&v)),
+            Err(e) => eprintln!("{}", diag::render_error(it, &e)),
+        },
+        "save" => {
+            let common = Common::default();
+            match crate::builtins::write_outputs(it, &[PathBuf::from(arg)], &common) {
+                Ok(()) => println!("wrote {arg}"),
+                Err(msg) => eprintln!("error: {msg}"),
+            }
+        }
+        other => eprintln!("unknown command :{other} (try :help)"),
+    }
+    true
+}

@@ -1,0 +1,118 @@
+//! `lispcad run` and `lispcad eval`: evaluate a script or an expression.
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use super::{diag, Common, EXIT_OK, EXIT_SCRIPT_ERROR, EXIT_USAGE};
+use crate::builtins::io::FsPolicy;
+use crate::lang::reader::read_one;
+use crate::lang::{ErrorKind, Interp};
+
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// The script to evaluate.
+    pub file: PathBuf,
+    /// Write the drawing here after the script ends (.svg or .dxf); repeatable.
+    #[arg(short = 'o', long = "output", value_name = "OUT")]
+    pub outputs: Vec<PathBuf>,
+    /// Bind a global before the script runs: NAME=VALUE (VALUE read as a lispcad literal).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<String>,
+}
+
+/// An interpreter configured from the common options.
+pub fn configured_interp(common: &Common) -> Interp {
+    let mut it = Interp::new();
+    it.set_max_steps(common.max_steps);
+    it.ext::<FsPolicy>().allow_all = common.allow_fs;
+    it
+}
+
+/// Applies `--set NAME=VALUE` bindings; an error message on a malformed one.
+pub fn apply_sets(it: &mut Interp, sets: &[String]) -> Result<(), String> {
+    for s in sets {
+        let (name, value) = s
+            .split_once('=')
+            .ok_or_else(|| format!("--set {s}: expected NAME=VALUE"))?;
+        let name = name.trim();
+        if name.is_empty() || crate::lang::reader::parse_number(name).is_some() {
+            return Err(format!("--set {s}: `{name}` is not a symbol name"));
+        }
+        let v = match read_one(value, &mut it.syms) {
+            Ok(Some((v, end))) if value[end..].trim().is_empty() => v,
+            Ok(_) => return Err(format!("--set {s}: `{value}` is not one lispcad literal")),
+            Err(e) => return Err(format!("--set {s}: {}", e.message)),
+        };
+        it.sync_cells();
+        it.set_global(name, v);
+    }
+    Ok(())
+}
+
+pub fn run(args: &RunArgs, common: &Common) -> i32 {
+    let mut it = configured_interp(common);
+    let roots = script_roots(&args.file, &args.outputs);
+    it.ext::<FsPolicy>().roots = roots;
+    if let Err(msg) = apply_sets(&mut it, &args.set) {
+        eprintln!("error: {msg}");
+        return EXIT_USAGE;
+    }
+    if !args.file.is_file() {
+        eprintln!("error: cannot read script {}", args.file.display());
+        return EXIT_USAGE;
+    }
+    let name = args.file.display().to_string();
+    let r = it.load_file(&name);
+    it.flush_out();
+    match r {
+        Ok(_) => {}
+        Err(e) if e.kind == ErrorKind::Exit => {}
+        Err(e) => {
+            diag::print_error(&it, &e);
+            return EXIT_SCRIPT_ERROR;
+        }
+    }
+    match crate::builtins::write_outputs(&mut it, &args.outputs, common) {
+        Ok(()) => EXIT_OK,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            EXIT_SCRIPT_ERROR
+        }
+    }
+}
+
+/// The directories a script may write below: its own and each output's.
+fn script_roots(file: &Path, outputs: &[PathBuf]) -> Vec<PathBuf> {
+    let dir_of = |p: &Path| -> PathBuf {
+        match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        }
+    };
+    std::iter::once(dir_of(file))
+        .chain(outputs.iter().map(|o| dir_of(o)))
+        .collect()
+}
+
+pub fn eval_expr(expr: &str, sets: &[String], common: &Common) -> i32 {
+    let mut it = configured_interp(common);
+    if let Err(msg) = apply_sets(&mut it, sets) {
+        eprintln!("error: {msg}");
+        return EXIT_USAGE;
+    }
+    let r = it.eval_source("<eval>", expr);
+    it.flush_out();
+    match r {
+        Ok(v) => {
+            let s = it.prin1_string(&v);
+            println!("{s}");
+            EXIT_OK
+        }
+        Err(e) if e.kind == ErrorKind::Exit => EXIT_OK,
+        Err(e) => {
+            diag::print_error(&it, &e);
+            EXIT_SCRIPT_ERROR
+        }
+    }
+}

@@ -1,0 +1,585 @@
+//! The compiler: forms to closures. Special forms are recognised once, symbols become direct
+//! indices into the value cells, and calls look their function up in the symbol's cell at run
+//! time (AutoLISP is a Lisp-1 with redefinable functions), so evaluation never walks the list
+//! structure or hashes a name.
+//!
+//! Malformed special forms compile to code that raises AutoLISP's error when (and only when)
+//! it runs, as an interpreter would: a bad `setq` inside a function that is never called is
+//! not an error.
+
+use std::rc::Rc;
+
+use smallvec::SmallVec;
+
+use super::error::{err, Exn, Frame, LResult, Span};
+use super::eval::Interp;
+use super::reader::SpanMap;
+use super::symbols::*;
+use super::value::{Sym, Value};
+
+/// Compiled code: run it against the interpreter to get the form's value.
+pub type Code = Box<dyn Fn(&mut Interp) -> LResult>;
+
+/// Argument vectors live on the Rust stack for the common arities.
+pub type Args = SmallVec<[Value; 6]>;
+
+/// A user function (from `defun`, `lambda`, or a quoted lambda list applied at run time).
+pub struct Lambda {
+    pub name: Option<Sym>,
+    pub params: Box<[Sym]>,
+    pub locals: Box<[Sym]>,
+    pub body: Code,
+    /// `((params / locals) body...)`, for printing and `defun-q-list-ref`.
+    pub source: Value,
+}
+
+/// Deepest form nesting the compiler follows (the reader already bounds source text; this
+/// bounds lists built at run time and handed to `eval`).
+const MAX_DEPTH: usize = 4_000;
+
+pub struct Compiler<'a> {
+    spans: Option<&'a SpanMap>,
+    depth: usize,
+}
+
+impl<'a> Compiler<'a> {
+    pub fn new(spans: Option<&'a SpanMap>) -> Self {
+        Compiler { spans, depth: 0 }
+    }
+
+    fn span_of(&self, form: &Value) -> Option<Span> {
+        self.spans.and_then(|m| m.get(form))
+    }
+
+    pub fn compile(&mut self, form: &Value) -> Code {
+        self.depth += 1;
+        let code = if self.depth > MAX_DEPTH {
+            fail(err("stack overflow: expression nested too deeply"), None)
+        } else {
+            self.compile_inner(form)
+        };
+        self.depth -= 1;
+        code
+    }
+
+    fn compile_inner(&mut self, form: &Value) -> Code {
+        match form {
+            Value::Sym(S_T) => Box::new(|_| Ok(Value::T)),
+            Value::Sym(s) => {
+                let i = s.idx();
+                Box::new(move |it| Ok(it.values[i].clone()))
+            }
+            Value::Cons(c) => {
+                let span = self.span_of(form);
+                match &c.car {
+                    Value::Sym(s) => self.compile_list(*s, &c.cdr, span),
+                    head => {
+                        let f = self.compile(head);
+                        let args = self.compile_args(&c.cdr);
+                        call_computed(f, args, span)
+                    }
+                }
+            }
+            other => {
+                let v = other.clone();
+                Box::new(move |_| Ok(v.clone()))
+            }
+        }
+    }
+
+    fn compile_args(&mut self, args: &Value) -> Box<[Code]> {
+        args.iter().map(|a| self.compile(a)).collect()
+    }
+
+    fn compile_body(&mut self, body: &Value) -> Code {
+        let mut codes: Vec<Code> = body.iter().map(|f| self.compile(f)).collect();
+        match codes.len() {
+            0 => Box::new(|_| Ok(Value::Nil)),
+            1 => codes.pop().expect("one form"),
+            _ => {
+                let codes = codes.into_boxed_slice();
+                Box::new(move |it| {
+                    let (last, init) = codes.split_last().expect("several forms");
+                    for c in init {
+                        c(it)?;
+                    }
+                    last(it)
+                })
+            }
+        }
+    }
+
+    fn compile_list(&mut self, head: Sym, rest: &Value, span: Option<Span>) -> Code {
+        let n = rest.iter().count();
+        let arg = |i: usize| rest.iter().nth(i).cloned().unwrap_or(Value::Nil);
+        match head {
+            S_QUOTE | S_FUNCTION if n != 1 => arity_error(n < 1, span),
+            S_QUOTE => {
+                let v = arg(0);
+                Box::new(move |_| Ok(v.clone()))
+            }
+            S_FUNCTION => {
+                let v = arg(0);
+                if matches!(&v, Value::Cons(c) if c.car.as_sym() == Some(S_LAMBDA)) {
+                    self.compile(&v)
+                } else {
+                    Box::new(move |_| Ok(v.clone()))
+                }
+            }
+            S_SETQ => self.compile_setq(rest, span),
+            S_IF => {
+                if !(2..=3).contains(&n) {
+                    return arity_error(n < 2, span);
+                }
+                let test = self.compile(&arg(0));
+                let then = self.compile(&arg(1));
+                if n == 3 {
+                    let els = self.compile(&arg(2));
+                    Box::new(move |it| {
+                        if test(it)?.truthy() {
+                            then(it)
+                        } else {
+                            els(it)
+                        }
+                    })
+                } else {
+                    Box::new(move |it| {
+                        if test(it)?.truthy() {
+                            then(it)
+                        } else {
+                            Ok(Value::Nil)
+                        }
+                    })
+                }
+            }
+            S_COND => self.compile_cond(rest, span),
+            S_PROGN => self.compile_body(rest),
+            S_AND | S_OR => {
+                let parts = self.compile_args(rest);
+                let want = head == S_OR;
+                Box::new(move |it| {
+                    for p in parts.iter() {
+                        if p(it)?.truthy() == want {
+                            return Ok(Value::bool(want));
+                        }
+                    }
+                    Ok(Value::bool(!want))
+                })
+            }
+            S_WHILE => {
+                if n < 1 {
+                    return arity_error(true, span);
+                }
+                let test = self.compile(&arg(0));
+                let body = self.compile_body(&rest.cdr());
+                Box::new(move |it| {
+                    let mut last = Value::Nil;
+                    while test(it)?.truthy() {
+                        it.tick()?;
+                        last = body(it)?;
+                    }
+                    Ok(last)
+                })
+            }
+            S_REPEAT => {
+                if n < 1 {
+                    return arity_error(true, span);
+                }
+                let count = self.compile(&arg(0));
+                let body = self.compile_body(&rest.cdr());
+                Box::new(move |it| {
+                    let c = count(it)?;
+                    let times = match c {
+                        Value::Int(i) => i,
+                        _ => return Err(it_bad_arg(it, "fixnump", &c, span)),
+                    };
+                    let mut last = Value::Nil;
+                    for _ in 0..times.max(0) {
+                        it.tick()?;
+                        last = body(it)?;
+                    }
+                    Ok(last)
+                })
+            }
+            S_FOREACH => self.compile_foreach(rest, n, span),
+            S_DEFUN | S_DEFUN_Q => self.compile_defun(head, rest, span),
+            S_LAMBDA => match self.lambda(None, rest) {
+                Ok(l) => {
+                    let f = Value::Func(Rc::new(l));
+                    Box::new(move |_| Ok(f.clone()))
+                }
+                Err(e) => fail(e, span),
+            },
+            _ => {
+                let args = self.compile_args(rest);
+                call_symbol(head, args, span)
+            }
+        }
+    }
+
+    fn compile_setq(&mut self, rest: &Value, span: Option<Span>) -> Code {
+        let items: Vec<&Value> = rest.iter().collect();
+        if items.is_empty() {
+            return arity_error(true, span);
+        }
+        let mut pairs: Vec<(Sym, Code)> = Vec::new();
+        for chunk in items.chunks(2) {
+            let target = match chunk[0] {
+                Value::Sym(s) if *s != S_T => *s,
+                other => {
+                    let other = other.clone();
+                    return Box::new(move |it| Err(it_bad_arg(it, "symbolp", &other, span)));
+                }
+            };
+            if chunk.len() < 2 {
+                return arity_error(true, span);
+            }
+            pairs.push((target, self.compile(chunk[1])));
+        }
+        if pairs.len() == 1 {
+            let (s, code) = pairs.pop().expect("one pair");
+            let i = s.idx();
+            return Box::new(move |it| {
+                let v = code(it)?;
+                it.values[i] = v.clone();
+                Ok(v)
+            });
+        }
+        let pairs = pairs.into_boxed_slice();
+        Box::new(move |it| {
+            let mut last = Value::Nil;
+            for (s, code) in pairs.iter() {
+                last = code(it)?;
+                it.values[s.idx()] = last.clone();
+            }
+            Ok(last)
+        })
+    }
+
+    fn compile_cond(&mut self, rest: &Value, span: Option<Span>) -> Code {
+        let mut clauses: Vec<(Code, Option<Code>)> = Vec::new();
+        for clause in rest.iter() {
+            if !matches!(clause, Value::Cons(_)) {
+                let c = clause.clone();
+                return Box::new(move |it| Err(it_bad_arg(it, "consp", &c, span)));
+            }
+            let test = self.compile(&clause.car());
+            let body = clause.cdr();
+            let body = if body.is_nil() {
+                None
+            } else {
+                Some(self.compile_body(&body))
+            };
+            clauses.push((test, body));
+        }
+        let clauses = clauses.into_boxed_slice();
+        Box::new(move |it| {
+            for (test, body) in clauses.iter() {
+                let t = test(it)?;
+                if t.truthy() {
+                    return match body {
+                        Some(b) => b(it),
+                        None => Ok(t),
+                    };
+                }
+            }
+            Ok(Value::Nil)
+        })
+    }
+
+    fn compile_foreach(&mut self, rest: &Value, n: usize, span: Option<Span>) -> Code {
+        if n < 2 {
+            return arity_error(true, span);
+        }
+        let var = match rest.car() {
+            Value::Sym(s) if s != S_T => s,
+            other => return Box::new(move |it| Err(it_bad_arg(it, "symbolp", &other, span))),
+        };
+        let list = self.compile(&rest.cdr().car());
+        let body = self.compile_body(&rest.cdr().cdr());
+        Box::new(move |it| {
+            let l = list(it)?;
+            if !l.is_list() {
+                return Err(it_bad_arg(it, "listp", &l, span));
+            }
+            let base = it.bind(var, Value::Nil);
+            let mut last = Ok(Value::Nil);
+            for x in l.iter() {
+                if let Err(e) = it.tick() {
+                    last = Err(e);
+                    break;
+                }
+                it.values[var.idx()] = x.clone();
+                last = body(it);
+                if last.is_err() {
+                    break;
+                }
+            }
+            it.unwind_to(base);
+            last
+        })
+    }
+
+    fn compile_defun(&mut self, head: Sym, rest: &Value, span: Option<Span>) -> Code {
+        let name = match rest.car() {
+            Value::Sym(s) if s != S_T => s,
+            other => return Box::new(move |it| Err(it_bad_arg(it, "symbolp", &other, span))),
+        };
+        if !rest.cdr().is_list() || rest.cdr().is_nil() {
+            return arity_error(true, span);
+        }
+        if head == S_DEFUN_Q {
+            // defun-q keeps the definition as a list: ((params / locals) body...).
+            let def = rest.cdr();
+            return Box::new(move |it| {
+                it.values[name.idx()] = def.clone();
+                Ok(Value::Sym(name))
+            });
+        }
+        match self.lambda(Some(name), &rest.cdr()) {
+            Ok(l) => {
+                let f = Value::Func(Rc::new(l));
+                Box::new(move |it| {
+                    it.values[name.idx()] = f.clone();
+                    Ok(Value::Sym(name))
+                })
+            }
+            Err(e) => fail(e, span),
+        }
+    }
+
+    /// A lambda from `((params / locals) body...)`.
+    pub fn lambda(&mut self, name: Option<Sym>, def: &Value) -> Result<Lambda, Exn> {
+        let arglist = def.car();
+        if !arglist.is_list() {
+            return Err(err(format!(
+                "bad argument list: {}",
+                if arglist.is_nil() {
+                    "nil"
+                } else {
+                    "not a list"
+                }
+            )));
+        }
+        let mut params = Vec::new();
+        let mut locals = Vec::new();
+        let mut after_slash = false;
+        for a in arglist.iter() {
+            match a {
+                Value::Sym(S_SLASH) if !after_slash => after_slash = true,
+                Value::Sym(s) if *s != S_T => {
+                    if after_slash {
+                        locals.push(*s)
+                    } else {
+                        params.push(*s)
+                    }
+                }
+                _ => return Err(err("bad argument list: parameters must be symbols")),
+            }
+        }
+        let body = self.compile_body(&def.cdr());
+        Ok(Lambda {
+            name,
+            params: params.into(),
+            locals: locals.into(),
+            body,
+            source: def.clone(),
+        })
+    }
+}
+
+fn it_bad_arg(it: &Interp, pred: &str, v: &Value, span: Option<Span>) -> Exn {
+    with_span(super::builtin::bad_arg(it, pred, v), span)
+}
+
+#[inline]
+fn with_span(e: Exn, span: Option<Span>) -> Exn {
+    match span {
+        Some(s) => e.with_span(s),
+        None => e,
+    }
+}
+
+fn fail(e: Exn, span: Option<Span>) -> Code {
+    Box::new(move |_| Err(with_span(e.clone(), span)))
+}
+
+fn arity_error(too_few: bool, span: Option<Span>) -> Code {
+    fail(
+        err(if too_few {
+            "too few arguments"
+        } else {
+            "too many arguments"
+        }),
+        span,
+    )
+}
+
+/// Adds a call-stack frame as an error leaves a user function.
+fn add_frame(it: &Interp, mut e: Exn, name: Option<Sym>, span: Option<Span>) -> Exn {
+    const MAX_FRAMES: usize = 64;
+    if e.stack.len() < MAX_FRAMES {
+        e.stack.push(Frame {
+            function: name.map_or_else(|| "LAMBDA".to_string(), |s| it.syms.name(s).to_string()),
+            call_site: span,
+        });
+    }
+    e
+}
+
+fn eval_args(it: &mut Interp, args: &[Code]) -> Result<Args, Exn> {
+    let mut v = Args::new();
+    for a in args {
+        v.push(a(it)?);
+    }
+    Ok(v)
+}
+
+/// `(f args...)` with `f` a symbol: the function is whatever the symbol's cell holds when the
+/// call runs.
+fn call_symbol(fsym: Sym, args: Box<[Code]>, span: Option<Span>) -> Code {
+    let fi = fsym.idx();
+    Box::new(move |it| {
+        if it.values[fi].is_nil() {
+            return Err(with_span(
+                err(format!("no function definition: {}", it.syms.name(fsym))),
+                span,
+            ));
+        }
+        let argv = eval_args(it, &args)?;
+        match &it.values[fi] {
+            Value::Subr(b) => {
+                let b = *b;
+                match b.check_arity(argv.len()) {
+                    Ok(()) => (b.f)(it, &argv).map_err(|e| with_span(e, span)),
+                    Err(e) => Err(with_span(e, span)),
+                }
+            }
+            Value::Func(l) => {
+                let l = l.clone();
+                it.call_lambda(&l, argv)
+                    .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+            }
+            other => {
+                let f = other.clone();
+                it.apply_args(&f, argv)
+                    .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+            }
+        }
+    })
+}
+
+/// `((lambda ...) args...)` and other computed heads.
+fn call_computed(f: Code, args: Box<[Code]>, span: Option<Span>) -> Code {
+    Box::new(move |it| {
+        let fv = f(it)?;
+        let argv = eval_args(it, &args)?;
+        it.apply_args(&fv, argv).map_err(|e| with_span(e, span))
+    })
+}
+
+impl Interp {
+    /// Compile a form read at run time (`eval`, quoted lambdas): no source spans.
+    pub fn compile_value(&mut self, form: &Value) -> Code {
+        self.sync_cells();
+        Compiler::new(None).compile(form)
+    }
+
+    /// Calls a user function with dynamic (shallow) binding: parameters and locals get their
+    /// new values in the symbols' own cells, the old values go on the save stack and come back
+    /// on return, error or not. Before unwinding on an error, `*error*` is offered the error
+    /// while every binding is still in place, as AutoLISP does.
+    pub fn call_lambda(&mut self, l: &Lambda, args: Args) -> LResult {
+        if args.len() != l.params.len() {
+            return Err(err(if args.len() < l.params.len() {
+                "too few arguments"
+            } else {
+                "too many arguments"
+            }));
+        }
+        self.tick()?;
+        self.check_stack()?;
+        let base = self.saves_len();
+        for (p, a) in l.params.iter().zip(args) {
+            self.bind(*p, a);
+        }
+        for p in l.locals.iter() {
+            self.bind(*p, Value::Nil);
+        }
+        let r = (l.body)(self);
+        let r = match r {
+            Ok(v) => Ok(v),
+            Err(e) => Err(self.offer_to_error_handler(e)),
+        };
+        self.unwind_to(base);
+        r
+    }
+
+    /// Applies any function value: builtin, user function, a symbol naming one, or a list
+    /// `(lambda ...)` / defun-q definition.
+    pub fn apply_args(&mut self, f: &Value, args: Args) -> LResult {
+        match f {
+            Value::Subr(b) => {
+                if b.special {
+                    return Err(err(format!("bad function: {}", b.name.to_uppercase())));
+                }
+                b.check_arity(args.len())?;
+                (b.f)(self, &args)
+            }
+            Value::Func(l) => {
+                let l = l.clone();
+                self.call_lambda(&l, args)
+                    .map_err(|e| add_frame(self, e, l.name, None))
+            }
+            Value::Sym(s) => {
+                let v = self.values[s.idx()].clone();
+                match v {
+                    Value::Nil => Err(err(format!(
+                        "no function definition: {}",
+                        self.syms.name(*s)
+                    ))),
+                    Value::Sym(_) => Err(err(format!("bad function: {}", self.prin1_string(&v)))),
+                    other => self.apply_args(&other, args),
+                }
+            }
+            Value::Cons(_) => {
+                let l = self.lambda_of_list(f)?;
+                self.call_lambda(&l, args)
+                    .map_err(|e| add_frame(self, e, l.name, None))
+            }
+            other => Err(err(format!("bad function: {}", self.prin1_string(other)))),
+        }
+    }
+
+    pub fn apply(&mut self, f: &Value, args: &[Value]) -> LResult {
+        self.apply_args(f, args.iter().cloned().collect())
+    }
+
+    /// The compiled lambda of a `(lambda params body...)` or `(params body...)` list, cached
+    /// by identity so `(mapcar '(lambda ...) big-list)` compiles once.
+    fn lambda_of_list(&mut self, f: &Value) -> Result<Rc<Lambda>, Exn> {
+        let key = match f {
+            Value::Cons(c) => Rc::as_ptr(c),
+            _ => unreachable!(),
+        };
+        if let Some((_, l)) = self.lambda_cache.get(&key) {
+            return Ok(l.clone());
+        }
+        let def = if f.car().as_sym() == Some(S_LAMBDA) {
+            f.cdr()
+        } else {
+            f.clone()
+        };
+        if !def.car().is_list() {
+            return Err(err(format!("bad function: {}", self.prin1_string(f))));
+        }
+        self.sync_cells();
+        let l = Rc::new(Compiler::new(None).lambda(None, &def)?);
+        if self.lambda_cache.len() > 4096 {
+            self.lambda_cache.clear();
+        }
+        // The key's cell is kept alive by the cached value, so the address cannot be reused.
+        self.lambda_cache.insert(key, (f.clone(), l.clone()));
+        Ok(l)
+    }
+}

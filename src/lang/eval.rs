@@ -1,0 +1,370 @@
+//! The interpreter state and the evaluation driver: value cells, the dynamic-binding save
+//! stack, limits (steps, stack depth, Ctrl-C), `*error*`, and running sources.
+
+use std::any::{Any, TypeId};
+use std::collections::HashMap;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+use super::compile::{Compiler, Lambda};
+use super::error::{abort, err, ErrorKind, Exn, LResult, LispError, Source, Span};
+use super::reader::{read_source, ReadError};
+use super::symbols::{SymbolTable, S_ERROR};
+use super::value::{Cons, Sym, Value};
+
+/// Stack size of the threads that run Lisp code (reserved, not committed: pages are touched
+/// only as deep recursion uses them).
+pub const EVAL_STACK_SIZE: usize = 1 << 30;
+/// What the stack check leaves free below the limit for builtins and Rust frames.
+const STACK_MARGIN: usize = 4 << 20;
+
+thread_local! {
+    /// (stack top address, usable bytes) of the current thread when it was started by
+    /// `with_eval_stack`.
+    static STACK_BOUNDS: std::cell::Cell<Option<(usize, usize)>> = const { std::cell::Cell::new(None) };
+}
+
+#[inline(always)]
+fn stack_pointer() -> usize {
+    let marker = 0u8;
+    std::hint::black_box(&marker) as *const u8 as usize
+}
+
+/// Runs `f` on a thread with a large stack, so deep (but bounded) recursion in Lisp programs
+/// ends in the evaluator's clean "stack overflow" error rather than a Rust abort.
+pub fn with_eval_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new()
+        .name("lispcad-eval".into())
+        .stack_size(EVAL_STACK_SIZE)
+        .spawn(move || {
+            STACK_BOUNDS.with(|b| b.set(Some((stack_pointer(), EVAL_STACK_SIZE - STACK_MARGIN))));
+            f()
+        })
+        .expect("spawn evaluation thread")
+        .join()
+        .unwrap_or_else(|p| std::panic::resume_unwind(p))
+}
+
+pub struct Interp {
+    pub syms: SymbolTable,
+    /// One value cell per symbol, indexed by `Sym`.
+    pub values: Vec<Value>,
+    /// Shallow binding: (symbol, value it had before the binding).
+    saves: Vec<(Sym, Value)>,
+    pub sources: Vec<Source>,
+    pub out: Box<dyn Write>,
+    steps: u64,
+    next_check: u64,
+    max_steps: u64,
+    pub interrupt: Arc<AtomicBool>,
+    stack_top: usize,
+    stack_budget: usize,
+    /// >0 inside `vl-catch-all-apply`: errors are caught there, not offered to `*error*`.
+    pub catch_depth: u32,
+    in_error_handler: bool,
+    pub(super) lambda_cache: HashMap<*const Cons, (Value, std::rc::Rc<Lambda>)>,
+    exts: Vec<(TypeId, Box<dyn Any>)>,
+    /// Files `load`ed so far (for `watch`).
+    pub loaded_files: Vec<PathBuf>,
+    /// The directory of the script being run: relative paths in `load` resolve against it.
+    pub base_dir: Option<PathBuf>,
+}
+
+impl Default for Interp {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Interp {
+    /// A fresh interpreter with the whole library installed.
+    pub fn new() -> Self {
+        let (stack_top, stack_budget) = STACK_BOUNDS
+            .with(|b| b.get())
+            .unwrap_or_else(|| (stack_pointer(), 512 << 10));
+        let mut it = Interp {
+            syms: SymbolTable::new(),
+            values: Vec::new(),
+            saves: Vec::new(),
+            sources: Vec::new(),
+            out: Box::new(std::io::stdout()),
+            steps: 0,
+            next_check: u64::MAX,
+            max_steps: u64::MAX,
+            interrupt: Arc::new(AtomicBool::new(false)),
+            stack_top,
+            stack_budget,
+            catch_depth: 0,
+            in_error_handler: false,
+            lambda_cache: HashMap::new(),
+            exts: Vec::new(),
+            loaded_files: Vec::new(),
+            base_dir: None,
+        };
+        it.sync_cells();
+        it.values[super::symbols::S_T.idx()] = Value::T;
+        for (_, table) in crate::builtins::tables() {
+            for b in table.iter() {
+                let s = it.syms.intern(b.name);
+                it.sync_cells();
+                it.values[s.idx()] = Value::Subr(b);
+            }
+        }
+        crate::builtins::init(&mut it);
+        it.set_max_steps(None);
+        it
+    }
+
+    /// Grows the value cells to cover every interned symbol.
+    #[inline]
+    pub fn sync_cells(&mut self) {
+        if self.values.len() < self.syms.len() {
+            self.values.resize(self.syms.len(), Value::Nil);
+        }
+    }
+
+    pub fn intern(&mut self, name: &str) -> Sym {
+        let s = self.syms.intern(name);
+        self.sync_cells();
+        s
+    }
+
+    pub fn set_global(&mut self, name: &str, v: Value) {
+        let s = self.intern(name);
+        self.values[s.idx()] = v;
+    }
+
+    pub fn global(&self, name: &str) -> Value {
+        self.syms
+            .lookup(name)
+            .map_or(Value::Nil, |s| self.values[s.idx()].clone())
+    }
+
+    /// The evaluation budget: `None` for unlimited.
+    pub fn set_max_steps(&mut self, n: Option<u64>) {
+        self.max_steps = n.unwrap_or(u64::MAX);
+        self.steps = 0;
+        self.next_check = self.max_steps.min(CHECK_EVERY);
+    }
+
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// Counts one step (a call or a loop iteration); every few thousand steps it also looks at
+    /// the budget and the interrupt flag.
+    #[inline]
+    pub fn tick(&mut self) -> Result<(), Exn> {
+        self.steps += 1;
+        if self.steps >= self.next_check {
+            self.slow_tick()
+        } else {
+            Ok(())
+        }
+    }
+
+    #[cold]
+    fn slow_tick(&mut self) -> Result<(), Exn> {
+        if self.steps >= self.max_steps {
+            return Err(abort(format!(
+                "evaluation budget exceeded: more than {} steps (--max-steps)",
+                self.max_steps
+            )));
+        }
+        if self.interrupt.swap(false, Ordering::Relaxed) {
+            return Err(abort("interrupted"));
+        }
+        self.next_check = self.max_steps.min(self.steps + CHECK_EVERY);
+        Ok(())
+    }
+
+    /// Fails cleanly before the Rust stack runs out.
+    #[inline]
+    pub fn check_stack(&self) -> Result<(), Exn> {
+        let used = self.stack_top.saturating_sub(stack_pointer());
+        if used > self.stack_budget {
+            Err(abort(
+                "stack overflow: recursion deeper than the evaluator's stack allows",
+            ))
+        } else {
+            Ok(())
+        }
+    }
+
+    #[inline]
+    pub(crate) fn saves_len(&self) -> usize {
+        self.saves.len()
+    }
+
+    /// Binds `s` to `v` dynamically; returns the mark to `unwind_to`.
+    #[inline]
+    pub fn bind(&mut self, s: Sym, v: Value) -> usize {
+        let mark = self.saves.len();
+        let old = std::mem::replace(&mut self.values[s.idx()], v);
+        self.saves.push((s, old));
+        mark
+    }
+
+    #[inline]
+    pub fn unwind_to(&mut self, mark: usize) {
+        while self.saves.len() > mark {
+            let (s, old) = self.saves.pop().expect("save stack");
+            self.values[s.idx()] = old;
+        }
+    }
+
+    /// Gives an error to the user's `*error*` function once, with bindings still in place.
+    pub(crate) fn offer_to_error_handler(&mut self, mut e: Exn) -> Exn {
+        if e.handled || self.catch_depth > 0 || self.in_error_handler || e.kind == ErrorKind::Abort
+        {
+            return e;
+        }
+        e.handled = true;
+        let handler = self.values[S_ERROR.idx()].clone();
+        if handler.is_nil() {
+            return e;
+        }
+        let msg = match e.kind {
+            ErrorKind::Exit => "quit / exit abort".to_string(),
+            _ => e.message.clone(),
+        };
+        self.in_error_handler = true;
+        let r = self.apply(&handler, &[Value::str(&msg)]);
+        self.in_error_handler = false;
+        match r {
+            Err(e2) if e2.kind == ErrorKind::Abort => e2,
+            _ => e,
+        }
+    }
+
+    /// Registers a source text and returns its id (for spans).
+    pub fn add_source(&mut self, name: &str, text: &str) -> u32 {
+        self.sources.push(Source {
+            name: name.to_string(),
+            text: Arc::from(text),
+        });
+        (self.sources.len() - 1) as u32
+    }
+
+    /// Reads, compiles and runs every form of a source; the value of the last one.
+    pub fn eval_source(&mut self, name: &str, text: &str) -> LResult {
+        let id = self.add_source(name, text);
+        let parsed = read_source(text, id, &mut self.syms).map_err(|e| read_error(e, id))?;
+        self.sync_cells();
+        let mut last = Value::Nil;
+        for (form, _span) in &parsed.forms {
+            let code = Compiler::new(Some(&parsed.spans)).compile(form);
+            last = self.run_toplevel(&code)?;
+        }
+        Ok(last)
+    }
+
+    /// Runs one compiled top-level form: errors are offered to `*error*` and the dynamic
+    /// bindings are restored.
+    pub fn run_toplevel(&mut self, code: &super::compile::Code) -> LResult {
+        let base = self.saves.len();
+        let r = code(self);
+        match r {
+            Ok(v) => Ok(v),
+            Err(e) => {
+                let e = self.offer_to_error_handler(e);
+                self.unwind_to(base);
+                Err(e)
+            }
+        }
+    }
+
+    /// Evaluates a value as a form (AutoLISP's `eval`).
+    pub fn eval_value(&mut self, form: &Value) -> LResult {
+        self.check_stack()?;
+        let code = self.compile_value(form);
+        code(self)
+    }
+
+    /// Loads a file: relative paths resolve against the running script's directory, then the
+    /// current directory; ".lsp" is added when the name has no extension.
+    pub fn load_file(&mut self, name: &str) -> LResult {
+        let path = self
+            .resolve_path(name)
+            .ok_or_else(|| err(format!("LOAD failed: \"{name}\"")))?;
+        let text = std::fs::read_to_string(&path)
+            .map_err(|e| err(format!("LOAD failed: \"{}\": {e}", path.display())))?;
+        if !self.loaded_files.contains(&path) {
+            self.loaded_files.push(path.clone());
+        }
+        let saved = self
+            .base_dir
+            .replace(path.parent().map(Path::to_path_buf).unwrap_or_default());
+        let r = self.eval_source(&path.display().to_string(), &text);
+        self.base_dir = saved;
+        r
+    }
+
+    pub fn resolve_path(&self, name: &str) -> Option<PathBuf> {
+        let p = Path::new(name);
+        let mut candidates = vec![p.to_path_buf()];
+        if p.extension().is_none() {
+            candidates.push(p.with_extension("lsp"));
+        }
+        for c in candidates {
+            if c.is_absolute() {
+                if c.is_file() {
+                    return Some(c);
+                }
+                continue;
+            }
+            if let Some(base) = &self.base_dir {
+                let q = base.join(&c);
+                if q.is_file() {
+                    return Some(q);
+                }
+            }
+            if c.is_file() {
+                return Some(c);
+            }
+        }
+        None
+    }
+
+    /// Per-interpreter state owned by a library area (the drawing, system variables...),
+    /// created on first use.
+    pub fn ext<T: Default + 'static>(&mut self) -> &mut T {
+        let id = TypeId::of::<T>();
+        let pos = match self.exts.iter().position(|(t, _)| *t == id) {
+            Some(p) => p,
+            None => {
+                self.exts.push((id, Box::new(T::default())));
+                self.exts.len() - 1
+            }
+        };
+        self.exts[pos]
+            .1
+            .downcast_mut::<T>()
+            .expect("extension type matches its TypeId")
+    }
+
+    /// Writes to the interpreter's output (stdout, or a buffer in tests).
+    pub fn write_out(&mut self, s: &str) {
+        // Output errors (a closed pipe) must not turn into Lisp errors mid-script.
+        let _ = self.out.write_all(s.as_bytes());
+    }
+
+    pub fn flush_out(&mut self) {
+        let _ = self.out.flush();
+    }
+}
+
+const CHECK_EVERY: u64 = 4096;
+
+/// A reader error as a Lisp error pointing at the source.
+pub fn read_error(e: ReadError, src: u32) -> Exn {
+    let mut le = LispError::new(ErrorKind::Error, e.message);
+    le.span = Some(Span {
+        src,
+        start: e.start as u32,
+        end: e.end as u32,
+    });
+    le
+}

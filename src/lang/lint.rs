@@ -1,0 +1,206 @@
+//! `lispcad check`: static checks on read (not evaluated) code — global leaks from `setq` inside
+//! a `defun`, wrong argument counts to builtins, calls of functions defined nowhere.
+
+use std::collections::HashSet;
+
+use super::error::Span;
+use super::reader::Parsed;
+use super::symbols::*;
+use super::value::{Sym, Value};
+use super::Interp;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Severity {
+    Error,
+    Warning,
+}
+
+#[derive(Clone, Debug)]
+pub struct Lint {
+    pub severity: Severity,
+    pub message: String,
+    pub span: Option<Span>,
+}
+
+struct Ctx<'a> {
+    it: &'a Interp,
+    parsed: &'a Parsed,
+    defined: HashSet<Sym>,
+    out: Vec<Lint>,
+}
+
+/// Lints every form of a parsed source, against the builtins of `it`.
+pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
+    let mut defined = HashSet::new();
+    for (f, _) in &parsed.forms {
+        collect_defuns(f, &mut defined, 0);
+    }
+    let mut cx = Ctx {
+        it,
+        parsed,
+        defined,
+        out: Vec::new(),
+    };
+    for (f, span) in &parsed.forms {
+        cx.walk(f, &mut Vec::new(), None, Some(*span), 0);
+    }
+    cx.out
+}
+
+fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
+    if depth > 200 {
+        return;
+    }
+    if let Value::Cons(c) = f {
+        if matches!(c.car.as_sym(), Some(S_DEFUN | S_DEFUN_Q)) {
+            if let Some(n) = c.cdr.car().as_sym() {
+                out.insert(n);
+            }
+        }
+        if c.car.as_sym() == Some(S_QUOTE) {
+            return;
+        }
+        for x in f.iter() {
+            collect_defuns(x, out, depth + 1);
+        }
+    }
+}
+
+/// Parameters and locals of `(args / locals)`.
+fn arglist_syms(v: &Value) -> Vec<Sym> {
+    v.iter()
+        .filter_map(Value::as_sym)
+        .filter(|s| *s != S_SLASH)
+        .collect()
+}
+
+impl Ctx<'_> {
+    fn push(&mut self, severity: Severity, message: String, span: Option<Span>) {
+        self.out.push(Lint {
+            severity,
+            message,
+            span,
+        });
+    }
+
+    fn walk(
+        &mut self,
+        form: &Value,
+        scope: &mut Vec<Sym>,
+        defun: Option<Sym>,
+        outer: Option<Span>,
+        depth: usize,
+    ) {
+        let Value::Cons(c) = form else { return };
+        if depth > 500 {
+            return;
+        }
+        let span = self.parsed.spans.get(form).or(outer);
+        let args: Vec<&Value> = c.cdr.iter().collect();
+        let Some(head) = c.car.as_sym() else {
+            for x in form.iter() {
+                self.walk(x, scope, defun, span, depth + 1);
+            }
+            return;
+        };
+        match head {
+            S_QUOTE => {}
+            S_DEFUN | S_DEFUN_Q | S_LAMBDA => {
+                let (name, def) = if head == S_LAMBDA {
+                    (defun, c.cdr.clone())
+                } else {
+                    (c.cdr.car().as_sym(), c.cdr.cdr())
+                };
+                let mark = scope.len();
+                scope.extend(arglist_syms(&def.car()));
+                for x in def.cdr().iter() {
+                    self.walk(x, scope, name, span, depth + 1);
+                }
+                scope.truncate(mark);
+            }
+            S_SETQ => {
+                for (i, x) in args.iter().enumerate() {
+                    if i % 2 == 0 {
+                        if let (Some(s), Some(f)) = (x.as_sym(), defun) {
+                            if !scope.contains(&s) {
+                                let (sn, fname) = (self.it.syms.name(s), self.it.syms.name(f));
+                                self.push(
+                                    Severity::Warning,
+                                    format!("setq of {sn} in {fname}: {sn} is neither a parameter nor a declared local, so it leaks into the global scope (add it after / in the argument list)"),
+                                    span,
+                                );
+                            }
+                        }
+                    } else {
+                        self.walk(x, scope, defun, span, depth + 1);
+                    }
+                }
+            }
+            S_FOREACH => {
+                let mark = scope.len();
+                if let Some(v) = args.first().and_then(|v| v.as_sym()) {
+                    scope.push(v);
+                }
+                for x in args.iter().skip(1) {
+                    self.walk(x, scope, defun, span, depth + 1);
+                }
+                scope.truncate(mark);
+            }
+            S_COND => {
+                for clause in &args {
+                    for x in clause.iter() {
+                        self.walk(x, scope, defun, span, depth + 1);
+                    }
+                }
+            }
+            S_IF | S_PROGN | S_WHILE | S_REPEAT | S_AND | S_OR | S_FUNCTION => {
+                for x in &args {
+                    self.walk(x, scope, defun, span, depth + 1);
+                }
+            }
+            _ => {
+                self.check_call(head, args.len(), scope, span);
+                for x in &args {
+                    self.walk(x, scope, defun, span, depth + 1);
+                }
+            }
+        }
+    }
+
+    fn check_call(&mut self, f: Sym, n: usize, scope: &[Sym], span: Option<Span>) {
+        let name = self.it.syms.name(f).to_string();
+        match &self.it.values.get(f.idx()) {
+            Some(Value::Subr(b)) if !self.defined.contains(&f) => {
+                if n < b.min as usize {
+                    self.push(
+                        Severity::Error,
+                        format!(
+                            "too few arguments: ({}) takes at least {}, given {n}; usage {}",
+                            b.name, b.min, b.sig
+                        ),
+                        span,
+                    );
+                } else if n > b.max as usize {
+                    self.push(
+                        Severity::Error,
+                        format!(
+                            "too many arguments: ({}) takes at most {}, given {n}; usage {}",
+                            b.name, b.max, b.sig
+                        ),
+                        span,
+                    );
+                }
+            }
+            Some(Value::Subr(_)) => {}
+            _ => {
+                if !self.defined.contains(&f) && !scope.contains(&f) {
+                    self.push(
+                        Severity::Warning,
+                        format!("call of undefined function {name}: no defun for it in this file and no builtin of that name"),
+                        span,
+                    );
+                }
+            }
+        }
+    }
+}
