@@ -42,7 +42,7 @@ fn apply(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn mapcar(it: &mut Interp, a: &[Value]) -> LResult {
-    let f = &a[0];
+    let f = &it.callable(&a[0])?;
     let mut lists: Vec<Value> = Vec::with_capacity(a.len() - 1);
     for l in &a[1..] {
         lists.push(it.list_arg(l)?.clone());

@@ -386,9 +386,10 @@ fn call1(it: &mut Interp, f: &Value, x: &Value) -> LResult {
 
 fn filter(it: &mut Interp, a: &[Value], keep_when: bool) -> LResult {
     let items = elements(it, &a[1])?;
+    let f = it.callable(&a[0])?;
     let mut out = Vec::new();
     for x in items {
-        if call1(it, &a[0], &x)?.truthy() == keep_when {
+        if call1(it, &f, &x)?.truthy() == keep_when {
             out.push(x);
         }
     }
@@ -519,7 +520,8 @@ fn sort_indices(it: &mut Interp, items: &[Value], less: &Value) -> Result<Vec<us
 
 fn vl_sort(it: &mut Interp, a: &[Value]) -> LResult {
     let items = elements(it, &a[0])?;
-    let order = sort_indices(it, &items, &a[1])?;
+    let less = it.callable(&a[1])?;
+    let order = sort_indices(it, &items, &less)?;
     let mut out: Vec<Value> = Vec::with_capacity(items.len());
     for i in order {
         let x = &items[i];
@@ -536,7 +538,8 @@ fn vl_sort(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn vl_sort_i(it: &mut Interp, a: &[Value]) -> LResult {
     let items = elements(it, &a[0])?;
-    let order = sort_indices(it, &items, &a[1])?;
+    let less = it.callable(&a[1])?;
+    let order = sort_indices(it, &items, &less)?;
     Ok(Value::list(order.into_iter().map(|i| Value::Int(i as i32))))
 }
 

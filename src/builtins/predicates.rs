@@ -35,7 +35,7 @@ fn null(_: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn eq(_: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::bool(a[0].eq(&a[1])))
+    Ok(Value::bool(a[0].is_eq(&a[1])))
 }
 
 fn equal(it: &mut Interp, a: &[Value]) -> LResult {

@@ -205,7 +205,7 @@ fn setvar(it: &mut Interp, a: &[Value]) -> LResult {
     if name == "DXFPROFILE" && !matches!(v.as_str(), Some("CAD" | "CAM")) {
         return Err(rejected());
     }
-    if name == "GEOMTOL" && !(v.as_f64().unwrap_or(0.0) > 0.0) {
+    if name == "GEOMTOL" && v.as_f64().is_none_or(|t| t.is_nan() || t <= 0.0) {
         return Err(rejected());
     }
     it.ext::<SysVars>().put(&name, v.clone());
@@ -302,7 +302,7 @@ fn getenv(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn setq_default(it: &mut Interp, a: &[Value]) -> LResult {
-    if a.len() % 2 != 0 {
+    if !a.len().is_multiple_of(2) {
         return Err(err("too few arguments"));
     }
     let mut last = Value::Nil;

@@ -21,7 +21,7 @@ use super::value::{Sym, Value};
 pub type Code = Box<dyn Fn(&mut Interp) -> LResult>;
 
 /// Argument vectors live on the Rust stack for the common arities.
-pub type Args = SmallVec<[Value; 6]>;
+pub type Args = SmallVec<[Value; 4]>;
 
 /// A user function (from `defun`, `lambda`, or a quoted lambda list applied at run time).
 pub struct Lambda {
@@ -39,12 +39,17 @@ const MAX_DEPTH: usize = 4_000;
 
 pub struct Compiler<'a> {
     spans: Option<&'a SpanMap>,
+    syms: &'a super::symbols::SymbolTable,
     depth: usize,
 }
 
 impl<'a> Compiler<'a> {
-    pub fn new(spans: Option<&'a SpanMap>) -> Self {
-        Compiler { spans, depth: 0 }
+    pub fn new(spans: Option<&'a SpanMap>, syms: &'a super::symbols::SymbolTable) -> Self {
+        Compiler {
+            spans,
+            syms,
+            depth: 0,
+        }
     }
 
     fn span_of(&self, form: &Value) -> Option<Span> {
@@ -211,8 +216,11 @@ impl<'a> Compiler<'a> {
                 Err(e) => fail(e, span),
             },
             _ => {
-                let args = self.compile_args(rest);
-                call_symbol(head, args, span)
+                let args: Vec<Code> = rest.iter().map(|a| self.compile(a)).collect();
+                match super::fastpath::compile(head, self.syms.name(head), args, span) {
+                    Ok(code) => code,
+                    Err(args) => call_symbol(head, args.into_boxed_slice(), span),
+                }
             }
         }
     }
@@ -436,37 +444,66 @@ fn eval_args(it: &mut Interp, args: &[Code]) -> Result<Args, Exn> {
 }
 
 /// `(f args...)` with `f` a symbol: the function is whatever the symbol's cell holds when the
-/// call runs.
+/// call runs. Calls of one to three arguments keep them in a fixed array (no vector at all on
+/// the builtin path).
 fn call_symbol(fsym: Sym, args: Box<[Code]>, span: Option<Span>) -> Code {
-    let fi = fsym.idx();
-    Box::new(move |it| {
-        if it.values[fi].is_nil() {
-            return Err(with_span(
-                err(format!("no function definition: {}", it.syms.name(fsym))),
-                span,
-            ));
-        }
-        let argv = eval_args(it, &args)?;
-        match &it.values[fi] {
-            Value::Subr(b) => {
-                let b = *b;
-                match b.check_arity(argv.len()) {
-                    Ok(()) => (b.f)(it, &argv).map_err(|e| with_span(e, span)),
-                    Err(e) => Err(with_span(e, span)),
+    macro_rules! fixed {
+        ($n:literal) => {{
+            let args: Box<[Code; $n]> = args.try_into().ok().expect("arity matches");
+            Box::new(move |it: &mut Interp| {
+                check_defined(it, fsym, span)?;
+                let mut argv: [Value; $n] = Default::default();
+                for (slot, a) in argv.iter_mut().zip(args.iter()) {
+                    *slot = a(it)?;
                 }
-            }
-            Value::Func(l) => {
-                let l = l.clone();
-                it.call_lambda(&l, argv)
-                    .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
-            }
-            other => {
-                let f = other.clone();
-                it.apply_args(&f, argv)
-                    .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+                dispatch(it, fsym, &argv, span)
+            }) as Code
+        }};
+    }
+    match args.len() {
+        1 => fixed!(1),
+        2 => fixed!(2),
+        3 => fixed!(3),
+        _ => Box::new(move |it| {
+            check_defined(it, fsym, span)?;
+            let argv = eval_args(it, &args)?;
+            dispatch(it, fsym, &argv, span)
+        }),
+    }
+}
+
+#[inline]
+fn check_defined(it: &Interp, fsym: Sym, span: Option<Span>) -> Result<(), Exn> {
+    if it.values[fsym.idx()].is_nil() {
+        return Err(with_span(
+            err(format!("no function definition: {}", it.syms.name(fsym))),
+            span,
+        ));
+    }
+    Ok(())
+}
+
+#[inline]
+fn dispatch(it: &mut Interp, fsym: Sym, argv: &[Value], span: Option<Span>) -> LResult {
+    match &it.values[fsym.idx()] {
+        Value::Subr(b) => {
+            let b = *b;
+            match b.check_arity(argv.len()) {
+                Ok(()) => (b.f)(it, argv).map_err(|e| with_span(e, span)),
+                Err(e) => Err(with_span(e, span)),
             }
         }
-    })
+        Value::Func(l) => {
+            let l = l.clone();
+            it.call_lambda(&l, argv.iter().cloned().collect())
+                .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+        }
+        other => {
+            let f = other.clone();
+            it.apply_args(&f, argv.iter().cloned().collect())
+                .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+        }
+    }
 }
 
 /// `((lambda ...) args...)` and other computed heads.
@@ -482,7 +519,7 @@ impl Interp {
     /// Compile a form read at run time (`eval`, quoted lambdas): no source spans.
     pub fn compile_value(&mut self, form: &Value) -> Code {
         self.sync_cells();
-        Compiler::new(None).compile(form)
+        Compiler::new(None, &self.syms).compile(form)
     }
 
     /// Calls a user function with dynamic (shallow) binding: parameters and locals get their
@@ -551,6 +588,25 @@ impl Interp {
         }
     }
 
+    /// The function a value designates, resolved once for repeated application (mapcar and
+    /// friends): a symbol's function, a lambda list compiled.
+    pub fn callable(&mut self, f: &Value) -> LResult {
+        match f {
+            Value::Subr(_) | Value::Func(_) => Ok(f.clone()),
+            Value::Sym(s) => match self.values[s.idx()].clone() {
+                v @ (Value::Subr(_) | Value::Func(_)) => Ok(v),
+                Value::Cons(_) => Ok(f.clone()),
+                Value::Nil => Err(err(format!(
+                    "no function definition: {}",
+                    self.syms.name(*s)
+                ))),
+                other => Err(err(format!("bad function: {}", self.prin1_string(&other)))),
+            },
+            Value::Cons(_) => Ok(Value::Func(self.lambda_of_list(f)?)),
+            other => Err(err(format!("bad function: {}", self.prin1_string(other)))),
+        }
+    }
+
     pub fn apply(&mut self, f: &Value, args: &[Value]) -> LResult {
         self.apply_args(f, args.iter().cloned().collect())
     }
@@ -574,7 +630,7 @@ impl Interp {
             return Err(err(format!("bad function: {}", self.prin1_string(f))));
         }
         self.sync_cells();
-        let l = Rc::new(Compiler::new(None).lambda(None, &def)?);
+        let l = Rc::new(Compiler::new(None, &self.syms).lambda(None, &def)?);
         if self.lambda_cache.len() > 4096 {
             self.lambda_cache.clear();
         }

@@ -255,7 +255,7 @@ impl Interp {
         self.sync_cells();
         let mut last = Value::Nil;
         for (form, _span) in &parsed.forms {
-            let code = Compiler::new(Some(&parsed.spans)).compile(form);
+            let code = Compiler::new(Some(&parsed.spans), &self.syms).compile(form);
             last = self.run_toplevel(&code)?;
         }
         Ok(last)

@@ -8,6 +8,7 @@ pub mod builtin;
 pub mod compile;
 pub mod error;
 pub mod eval;
+pub mod fastpath;
 pub mod lint;
 pub mod print;
 pub mod reader;

@@ -150,7 +150,7 @@ mod tests {
     fn reals_print_like_autolisp() {
         assert_eq!(format_real(1.0), "1.0");
         assert_eq!(format_real(3.5), "3.5");
-        assert_eq!(format_real(3.14159265), "3.14159");
+        assert_eq!(format_real(1.23456789), "1.23457");
         assert_eq!(format_real(100000.0), "100000.0");
         assert_eq!(format_real(1e6), "1.0e+06");
         assert_eq!(format_real(1.5e-7), "1.5e-07");

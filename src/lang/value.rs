@@ -199,7 +199,7 @@ impl Value {
     }
 
     /// `eq`: identity for conses, strings and objects; value for atoms.
-    pub fn eq(&self, other: &Value) -> bool {
+    pub fn is_eq(&self, other: &Value) -> bool {
         match (self, other) {
             (Value::Nil, Value::Nil) => true,
             (Value::Int(a), Value::Int(b)) => a == b,
@@ -242,7 +242,7 @@ impl Value {
                             x == y
                         };
                     }
-                    return a.eq(b);
+                    return a.is_eq(b);
                 }
             }
         }

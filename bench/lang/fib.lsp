@@ -1,0 +1,3 @@
+(defun fib (n) (if (< n 2) n (+ (fib (- n 1)) (fib (- n 2)))))
+(princ (fib 27))
+(princ)

@@ -1,0 +1,10 @@
+;; 10,000,000 points on a circle: x = r cos a, y = r sin a; accumulate x*y.
+(setq i 0 acc 0.0 r 2.0 step (/ (* 2 pi) 10000000.0))
+(while (< i 10000000)
+  (setq a (* i step)
+        x (* r (cos a))
+        y (* r (sin a))
+        acc (+ acc (* x y))
+        i (1+ i)))
+(princ acc)
+(princ)

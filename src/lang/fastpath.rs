@@ -1,0 +1,204 @@
+//! Inline arithmetic and comparison: calls of `+ - * / < > <= >= = /= 1+ 1- sin cos` with one
+//! or two arguments compile to code that does the operation directly on integers and reals,
+//! after one pointer comparison showing the symbol still holds the builtin (AutoLISP lets a
+//! program redefine `+`; then the ordinary call path runs). Anything unusual — a non-number,
+//! division by zero — also falls back to the builtin itself, so errors and results are the
+//! library's own.
+
+use std::sync::OnceLock;
+
+use super::builtin::Builtin;
+use super::compile::Code;
+use super::error::{Exn, LResult, Span};
+use super::eval::Interp;
+use super::value::{Sym, Value};
+
+#[derive(Clone, Copy)]
+enum Bin {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Lt,
+    Gt,
+    Le,
+    Ge,
+    Eq,
+    Ne,
+}
+
+#[derive(Clone, Copy)]
+enum Un {
+    Inc,
+    Dec,
+    Neg,
+    Sin,
+    Cos,
+}
+
+fn builtin(name: &str) -> &'static Builtin {
+    crate::builtins::find(name).expect("fast-path builtin is registered")
+}
+
+struct Known {
+    bins: Vec<(&'static str, Bin, &'static Builtin)>,
+    uns: Vec<(&'static str, Un, &'static Builtin)>,
+}
+
+fn known() -> &'static Known {
+    static K: OnceLock<Known> = OnceLock::new();
+    K.get_or_init(|| {
+        let bins = [
+            ("+", Bin::Add),
+            ("-", Bin::Sub),
+            ("*", Bin::Mul),
+            ("/", Bin::Div),
+            ("<", Bin::Lt),
+            (">", Bin::Gt),
+            ("<=", Bin::Le),
+            (">=", Bin::Ge),
+            ("=", Bin::Eq),
+            ("/=", Bin::Ne),
+        ];
+        let uns = [
+            ("1+", Un::Inc),
+            ("1-", Un::Dec),
+            ("-", Un::Neg),
+            ("sin", Un::Sin),
+            ("cos", Un::Cos),
+        ];
+        Known {
+            bins: bins.iter().map(|(n, b)| (*n, *b, builtin(n))).collect(),
+            uns: uns.iter().map(|(n, u)| (*n, *u, builtin(n))).collect(),
+        }
+    })
+}
+
+#[inline(always)]
+fn bin_numbers(op: Bin, x: &Value, y: &Value) -> Option<Value> {
+    match (x, y) {
+        (Value::Int(a), Value::Int(b)) => {
+            let (a, b) = (*a, *b);
+            Some(match op {
+                Bin::Add => Value::Int(a.wrapping_add(b)),
+                Bin::Sub => Value::Int(a.wrapping_sub(b)),
+                Bin::Mul => Value::Int(a.wrapping_mul(b)),
+                Bin::Div => {
+                    if b == 0 || (a == i32::MIN && b == -1) {
+                        return None;
+                    }
+                    Value::Int(a / b)
+                }
+                Bin::Lt => Value::bool(a < b),
+                Bin::Gt => Value::bool(a > b),
+                Bin::Le => Value::bool(a <= b),
+                Bin::Ge => Value::bool(a >= b),
+                Bin::Eq => Value::bool(a == b),
+                Bin::Ne => Value::bool(a != b),
+            })
+        }
+        _ => {
+            let a = x.as_f64()?;
+            let b = y.as_f64()?;
+            Some(match op {
+                Bin::Add => Value::Real(a + b),
+                Bin::Sub => Value::Real(a - b),
+                Bin::Mul => Value::Real(a * b),
+                Bin::Div => {
+                    if b == 0.0 {
+                        return None;
+                    }
+                    Value::Real(a / b)
+                }
+                Bin::Lt => Value::bool(a < b),
+                Bin::Gt => Value::bool(a > b),
+                Bin::Le => Value::bool(a <= b),
+                Bin::Ge => Value::bool(a >= b),
+                Bin::Eq => Value::bool(a == b),
+                Bin::Ne => Value::bool(a != b),
+            })
+        }
+    }
+}
+
+#[inline(always)]
+fn un_number(op: Un, x: &Value) -> Option<Value> {
+    Some(match (op, x) {
+        (Un::Inc, Value::Int(a)) => Value::Int(a.wrapping_add(1)),
+        (Un::Dec, Value::Int(a)) => Value::Int(a.wrapping_sub(1)),
+        (Un::Neg, Value::Int(a)) => Value::Int(a.wrapping_neg()),
+        (Un::Inc, Value::Real(a)) => Value::Real(a + 1.0),
+        (Un::Dec, Value::Real(a)) => Value::Real(a - 1.0),
+        (Un::Neg, Value::Real(a)) => Value::Real(-a),
+        (Un::Sin, v) => Value::Real(v.as_f64()?.sin()),
+        (Un::Cos, v) => Value::Real(v.as_f64()?.cos()),
+        _ => return None,
+    })
+}
+
+/// The slow path: whatever the symbol holds now, called the ordinary way.
+#[cold]
+fn fallback(it: &mut Interp, fsym: Sym, args: &[Value], span: Option<Span>) -> LResult {
+    let f = it.values[fsym.idx()].clone();
+    let with_span = |e: Exn| match span {
+        Some(s) => e.with_span(s),
+        None => e,
+    };
+    if f.is_nil() {
+        return Err(with_span(super::error::err(format!(
+            "no function definition: {}",
+            it.syms.name(fsym)
+        ))));
+    }
+    it.apply(&f, args).map_err(with_span)
+}
+
+/// Inline code for `(head args...)` when head names a fast-path builtin and the arity fits.
+pub fn compile(
+    head: Sym,
+    name: &str,
+    mut args: Vec<Code>,
+    span: Option<Span>,
+) -> Result<Code, Vec<Code>> {
+    let k = known();
+    let lname = name.to_ascii_lowercase();
+    if args.len() == 2 {
+        if let Some((_, op, b)) = k.bins.iter().find(|(n, _, _)| *n == lname) {
+            let (op, b) = (*op, *b);
+            let y = args.pop().expect("two args");
+            let x = args.pop().expect("two args");
+            let fi = head.idx();
+            return Ok(Box::new(move |it| {
+                let xv = x(it)?;
+                let yv = y(it)?;
+                if let Value::Subr(f) = &it.values[fi] {
+                    if std::ptr::eq(*f, b) {
+                        if let Some(v) = bin_numbers(op, &xv, &yv) {
+                            return Ok(v);
+                        }
+                    }
+                }
+                fallback(it, head, &[xv, yv], span)
+            }));
+        }
+    }
+    if args.len() == 1 {
+        if let Some((_, op, b)) = k.uns.iter().find(|(n, _, _)| *n == lname) {
+            let (op, b) = (*op, *b);
+            let x = args.pop().expect("one arg");
+            let fi = head.idx();
+            return Ok(Box::new(move |it| {
+                let xv = x(it)?;
+                if let Value::Subr(f) = &it.values[fi] {
+                    if std::ptr::eq(*f, b) {
+                        if let Some(v) = un_number(op, &xv) {
+                            return Ok(v);
+                        }
+                    }
+                }
+                fallback(it, head, &[xv], span)
+            }));
+        }
+    }
+    Err(args)
+}
