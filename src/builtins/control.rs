@@ -1,7 +1,6 @@
 //! Evaluation and control: eval, apply, mapcar, set, errors and their catching, exit, load.
 
 use std::fmt;
-use std::rc::Rc;
 
 use crate::builtin;
 use crate::lang::builtin::{Builtin, MANY};
@@ -110,7 +109,7 @@ fn catch_all_apply(it: &mut Interp, a: &[Value]) -> LResult {
     match r {
         Ok(v) => Ok(v),
         Err(e) if e.kind == ErrorKind::Abort => Err(e),
-        Err(e) => Ok(Value::Obj(Rc::new(CaughtError { message: e.message }))),
+        Err(e) => Ok(Value::obj(CaughtError { message: e.message })),
     }
 }
 

@@ -6,7 +6,6 @@ use std::fmt;
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
-use std::rc::Rc;
 
 use crate::builtin;
 use crate::lang::builtin::{bad_arg, Builtin};
@@ -190,10 +189,10 @@ fn open(it: &mut Interp, a: &[Value]) -> LResult {
         }
         _ => return Err(err(format!("bad argument value: file mode \"{mode}\""))),
     };
-    Ok(Value::Obj(Rc::new(LispFile {
+    Ok(Value::obj(LispFile {
         name,
         handle: RefCell::new(handle),
-    })))
+    }))
 }
 
 fn close(it: &mut Interp, a: &[Value]) -> LResult {

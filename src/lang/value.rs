@@ -28,12 +28,13 @@ pub enum Value {
     Nil,
     Int(i32),
     Real(f64),
-    Str(Rc<str>),
+    /// Strings are immutable; `Rc<String>` keeps the pointer thin so a value stays 16 bytes.
+    Str(Rc<String>),
     Sym(Sym),
     Cons(Rc<Cons>),
     Subr(&'static Builtin),
     Func(Rc<Lambda>),
-    Obj(Rc<dyn Object>),
+    Obj(Rc<Box<dyn Object>>),
 }
 
 /// A cons cell. AutoLISP has no destructive list operations, so cells are immutable.
@@ -104,7 +105,12 @@ impl Value {
     }
 
     pub fn str(s: &str) -> Value {
-        Value::Str(Rc::from(s))
+        Value::Str(Rc::new(s.to_string()))
+    }
+
+    /// Wraps an opaque object.
+    pub fn obj(o: impl Object) -> Value {
+        Value::Obj(Rc::new(Box::new(o)))
     }
 
     pub fn cons(car: Value, cdr: Value) -> Value {
@@ -232,7 +238,7 @@ impl Value {
                 }
                 (Value::Str(x), Value::Str(y)) => return x == y,
                 (Value::Obj(x), Value::Obj(y)) => {
-                    return Rc::ptr_eq(x, y) || x.equal(y.as_ref());
+                    return Rc::ptr_eq(x, y) || x.equal(y.as_ref().as_ref());
                 }
                 _ => {
                     if let (Some(x), Some(y)) = (a.as_f64(), b.as_f64()) {
