@@ -10,3 +10,18 @@ pub mod traits;
 
 pub use glam::{DMat4, DVec2, DVec3};
 pub use traits::ParamCurve;
+pub mod arc;
+pub mod bernstein;
+pub mod bezier;
+pub mod circle;
+pub mod curve;
+pub mod error;
+pub mod intersect;
+pub mod line;
+pub mod offset;
+pub mod piece;
+pub mod polyline;
+
+pub use curve::Curve;
+pub use error::GeomError;
+pub use intersect::{intersect, intersect_near, Hit, HitKind};
