@@ -83,25 +83,59 @@ pub fn push_float(out: &mut String, x: f64) {
     }
 }
 
-/// DXF strings are one line of the drawing's code page: control characters become spaces and
-/// non-ASCII characters AutoCAD's `\U+XXXX` escapes.
+/// DXF strings are one line of the drawing's code page ($DWGCODEPAGE = ANSI_1252): control
+/// characters become spaces, characters outside Windows-1252 AutoCAD's `\U+XXXX` escapes.
+/// (The file is encoded to Windows-1252 bytes at the end, by `encode_cp1252`.)
 fn push_dxf_string(out: &mut String, s: &str) {
     for c in s.chars() {
         if c.is_ascii_control() {
             out.push(' ');
-        } else if c.is_ascii() {
+        } else if c.is_ascii() || cp1252_byte(c).is_some() {
             out.push(c);
         } else {
             let cp = c as u32;
             if cp <= 0xFFFF {
                 let _ = write!(out, "\\U+{cp:04X}");
             } else {
-                // Outside the BMP: AutoCAD cannot escape it; a replacement mark keeps the
-                // file readable.
+                // Outside the BMP: AutoCAD has no escape for it; a mark keeps the file valid.
                 out.push('?');
             }
         }
     }
+}
+
+/// The Windows-1252 byte of a non-ASCII character, if it has one.
+fn cp1252_byte(c: char) -> Option<u8> {
+    const HIGH: [char; 32] = [
+        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8D}', 'Ž',
+        '\u{8F}', '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9D}',
+        'ž', 'Ÿ',
+    ];
+    let cp = c as u32;
+    if (0xA0..=0xFF).contains(&cp) {
+        return Some(cp as u8);
+    }
+    // The five undefined positions (0x81, 0x8D, 0x8F, 0x90, 0x9D) are C1 controls, never
+    // produced: `push_dxf_string` turns control characters into spaces first.
+    HIGH.iter()
+        .position(|h| *h == c && !c.is_control())
+        .map(|i| 0x80 + i as u8)
+}
+
+/// The file text as Windows-1252 bytes (every character was made representable when written).
+pub fn encode_cp1252(s: String) -> Vec<u8> {
+    if s.is_ascii() {
+        return s.into_bytes();
+    }
+    s.chars()
+        .map(|c| {
+            if c.is_ascii() {
+                c as u8
+            } else {
+                cp1252_byte(c).unwrap_or(b'?')
+            }
+        })
+        .collect()
 }
 
 // Fixed structural handles.
@@ -894,7 +928,8 @@ mod tests {
     #[test]
     fn strings_are_escaped() {
         let mut s = String::new();
-        push_dxf_string(&mut s, "a\nbé");
-        assert_eq!(s, "a b\\U+00E9");
+        push_dxf_string(&mut s, "a\nbé—α");
+        assert_eq!(s, "a bé—\\U+03B1");
+        assert_eq!(encode_cp1252(s), b"a b\xE9\x97\\U+03B1");
     }
 }

@@ -138,11 +138,10 @@ pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u
     check_drawing(d)?;
     Ok(match format {
         Format::Svg => svg::write_svg(d, opts).into_bytes(),
-        Format::Dxf => match opts.dxf_profile {
+        Format::Dxf => dxf::encode_cp1252(match opts.dxf_profile {
             DxfProfile::Cad => dxf::write_cad(d),
             DxfProfile::Cam => cam::write_cam(d, opts.cam_tol),
-        }
-        .into_bytes(),
+        }),
     })
 }
 

@@ -18,6 +18,7 @@ import sys
 
 import ezdxf
 from ezdxf import edgeminer
+from ezdxf.lldxf.encoding import decode_dxf_unicode
 from ezdxf.math import Vec3
 
 EPS = 1e-6
@@ -32,7 +33,8 @@ def dump_entity(e):
     d = {
         "type": t,
         "handle": e.dxf.handle,
-        "layer": e.dxf.layer,
+        # AutoCAD shows \\U+XXXX escapes as the character; so does this dump.
+        "layer": decode_dxf_unicode(e.dxf.layer),
         "color": e.dxf.color if e.dxf.hasattr("color") else None,
     }
     if t == "LINE":
@@ -72,7 +74,7 @@ def dump_entity(e):
     elif t == "TEXT":
         d["insert"] = v(e.dxf.insert)
         d["height"] = e.dxf.height
-        d["text"] = e.dxf.text
+        d["text"] = decode_dxf_unicode(e.dxf.text)
         d["rotation"] = e.dxf.rotation
         d["style"] = e.dxf.style
     return d
@@ -228,7 +230,7 @@ def main():
         "load_warnings": records,
         "insunits": doc.header.get("$INSUNITS"),
         "layers": [
-            {"name": l.dxf.name, "color": l.dxf.color, "linetype": l.dxf.linetype}
+            {"name": decode_dxf_unicode(l.dxf.name), "color": l.dxf.color, "linetype": l.dxf.linetype}
             for l in doc.layers
         ],
         "entities": [dump_entity(e) for e in msp],
