@@ -6,6 +6,10 @@
 pub mod bspline;
 pub mod frame;
 pub mod quadspline;
+pub mod quadspline_fit;
+pub mod quadspline_query;
+pub mod temple;
+pub mod temple_refine;
 pub mod traits;
 
 pub use glam::{DMat4, DVec2, DVec3};
