@@ -1,1 +1,3 @@
 //! The library, one module per area; each registers its builtins with a one-line doc.
+
+pub mod text;
