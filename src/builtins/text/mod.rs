@@ -4,9 +4,11 @@
 //! Rust values, so the builtins in `strings.rs`/`numbers.rs` are thin argument-checking
 //! wrappers. Behaviour follows AutoCAD's AutoLISP reference; tests cite its examples.
 
+mod decimal;
 pub mod error;
 pub mod escape;
 pub mod real;
+pub mod rtos;
 pub mod vlstring;
 pub mod wcmatch;
 
