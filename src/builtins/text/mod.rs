@@ -4,6 +4,7 @@
 //! Rust values, so the builtins in `strings.rs`/`numbers.rs` are thin argument-checking
 //! wrappers. Behaviour follows AutoCAD's AutoLISP reference; tests cite its examples.
 
+pub mod angtos;
 mod decimal;
 pub mod error;
 pub mod escape;
