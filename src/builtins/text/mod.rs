@@ -8,6 +8,7 @@ pub mod angtos;
 mod decimal;
 pub mod error;
 pub mod escape;
+pub mod parse;
 pub mod real;
 pub mod rtos;
 pub mod vlstring;
