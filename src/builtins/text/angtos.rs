@@ -73,6 +73,7 @@ pub fn angtos(a: f64, mode: i32, prec: i32, settings: &AngleSettings) -> Result<
         return Err(FmtError::Precision {
             function: "angtos",
             precision: i64::from(prec),
+            max: i64::from(max_prec),
         });
     }
     if !a.is_finite() || !settings.angbase.is_finite() {

@@ -7,7 +7,8 @@
 
 /// Formats `x` like C's `printf("%.*g", digits, x)`.
 ///
-/// `digits` is the number of significant digits; 0 is taken as 1, as C does. The exponent has
+/// `digits` is the number of significant digits; 0 is taken as 1, as C does, and more than 800
+/// as 800. The exponent has
 /// at least two digits (`1e+06`), trailing zeros and a trailing point are removed. Non-finite
 /// values give C's `inf`, `-inf` and `nan`.
 ///
@@ -23,7 +24,9 @@ pub fn format_g(x: f64, digits: usize) -> String {
     if x.is_infinite() {
         return if x < 0.0 { "-inf" } else { "inf" }.to_string();
     }
-    let p = digits.max(1);
+    // Beyond 800 digits every f64 is exact (the longest needs 767), so larger requests add
+    // only zeros that C would print and that nobody needs; clamping keeps allocation bounded.
+    let p = digits.clamp(1, 800);
     // Scientific rendering with P digits gives the post-rounding exponent X.
     let sci = format!("{:.*e}", p - 1, x);
     let (mantissa, exp) = sci
@@ -114,6 +117,14 @@ mod tests {
         for &(x, p, want) in cases {
             assert_eq!(format_g(x, p), want, "format_g({x:e}, {p})");
         }
+    }
+
+    #[test]
+    fn format_g_huge_precision_is_bounded() {
+        let text = format_g(0.1, usize::MAX);
+        assert!(text.starts_with("0.1000000000000000055511151231257827"));
+        assert!(text.len() < 900);
+        assert_eq!(format_g(0.5, 10_000), "0.5");
     }
 
     #[test]

@@ -51,6 +51,7 @@ pub fn rtos(x: f64, mode: i32, prec: i32, dimzin: i32, unitmode: i32) -> Result<
         return Err(FmtError::Precision {
             function: "rtos",
             precision: i64::from(prec),
+            max: i64::from(max_prec),
         });
     }
     if !x.is_finite() {

@@ -76,10 +76,32 @@ struct Alternative {
 /// `(wcmatch "Name" "N*")` → T, `(wcmatch "Name" "???,~*m*,N*")` → T,
 /// `(wcmatch "Name" "*`,*")` → nil (the reference's examples).
 pub fn wcmatch(s: &str, pattern: &str) -> bool {
-    let text: Vec<char> = s.chars().collect();
-    compile(pattern)
-        .iter()
-        .any(|alt| match_tokens(&text, &alt.tokens) != alt.negated)
+    WcPattern::new(pattern).matches(s)
+}
+
+/// A compiled wild-card pattern, for matching many strings against one pattern (`ssget`
+/// filters on layer names, `vl-remove-if` over a list).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WcPattern {
+    alternatives: Vec<Alternative>,
+}
+
+impl WcPattern {
+    /// Compiles `pattern`; every string is a valid pattern (see the module doc for the rules
+    /// applied to unclosed brackets and trailing escapes).
+    pub fn new(pattern: &str) -> WcPattern {
+        WcPattern {
+            alternatives: compile(pattern),
+        }
+    }
+
+    /// True if `s` matches one of the alternatives.
+    pub fn matches(&self, s: &str) -> bool {
+        let text: Vec<char> = s.chars().collect();
+        self.alternatives
+            .iter()
+            .any(|alt| match_tokens(&text, &alt.tokens) != alt.negated)
+    }
 }
 
 /// Splits the pattern at top-level commas and compiles each alternative.
@@ -334,6 +356,15 @@ mod tests {
         assert!(wcmatch("", "a,"));
         assert!(wcmatch("", ",a"));
         assert!(!wcmatch("b", "a,"));
+    }
+
+    #[test]
+    fn compiled_pattern_reused() {
+        let layers = WcPattern::new("WALL*,~*-OLD");
+        assert!(layers.matches("WALL-EXT"));
+        assert!(layers.matches("DOOR"));
+        assert!(!layers.matches("DOOR-OLD"));
+        assert!(layers.matches("WALL-OLD"));
     }
 
     #[test]
