@@ -12,6 +12,7 @@ pub mod predicates;
 pub mod special;
 pub mod strings;
 pub mod system;
+pub mod text;
 
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
