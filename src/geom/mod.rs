@@ -5,7 +5,9 @@
 
 pub mod bspline;
 pub mod frame;
+pub mod mesh;
 pub mod quadspline;
+pub mod surface;
 pub mod traits;
 
 pub use glam::{DMat4, DVec2, DVec3};
