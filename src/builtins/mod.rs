@@ -5,6 +5,7 @@
 use crate::lang::{Builtin, Interp};
 
 pub mod control;
+pub mod format;
 pub mod io;
 pub mod lists;
 pub mod numbers;
@@ -24,6 +25,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Numbers", numbers::BUILTINS),
         ("Predicates", predicates::BUILTINS),
         ("Strings", strings::BUILTINS),
+        ("Strings: formatting and matching", format::BUILTINS),
         ("Printing and files", io::BUILTINS),
         ("System", system::BUILTINS),
     ]
