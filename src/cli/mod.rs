@@ -5,11 +5,13 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+pub mod batch;
 pub mod check;
 pub mod diag;
 pub mod doc;
 pub mod repl;
 pub mod run;
+pub mod watch;
 
 pub const EXIT_OK: i32 = 0;
 pub const EXIT_SCRIPT_ERROR: i32 = 1;
@@ -61,6 +63,10 @@ pub enum Command {
         #[arg(long = "set", value_name = "NAME=VALUE")]
         set: Vec<String>,
     },
+    /// One run per row of a CSV table or per point of a grid, in parallel.
+    Batch(batch::BatchArgs),
+    /// Re-run a script whenever it (or a file it loads) changes, rewriting the outputs.
+    Watch(watch::WatchArgs),
     /// Parse and lint without running; non-zero exit on errors.
     Check { files: Vec<PathBuf> },
     /// Print the reference of every builtin.
@@ -89,6 +95,8 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Run(args)) => run::run(&args, &common),
         Some(Command::Eval { expr, set }) => run::eval_expr(&expr, &set, &common),
         Some(Command::Check { files }) => check::check(&files),
+        Some(Command::Batch(args)) => batch::batch(&args, &common),
+        Some(Command::Watch(args)) => watch::watch(&args, &common),
         Some(Command::Doc) => {
             print!("{}", doc::reference());
             EXIT_OK

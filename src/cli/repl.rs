@@ -184,6 +184,21 @@ fn piped(it: &mut Interp) -> i32 {
     EXIT_OK
 }
 
+/// The file `:preview` rewrites after every evaluation.
+#[derive(Default)]
+struct Preview(Option<PathBuf>);
+
+fn refresh_preview(it: &mut Interp) {
+    let Some(path) = it.ext::<Preview>().0.clone() else {
+        return;
+    };
+    if let Err(msg) =
+        crate::builtins::write_outputs(it, std::slice::from_ref(&path), &Common::default())
+    {
+        eprintln!("preview: {msg}");
+    }
+}
+
 /// Handles one complete entry; false to leave the REPL.
 fn entry(it: &mut Interp, text: &str) -> bool {
     let trimmed = text.trim();
@@ -207,6 +222,7 @@ fn entry(it: &mut Interp, text: &str) -> bool {
             eprintln!("{}", diag::render_error(it, &e));
         }
     }
+    refresh_preview(it);
     let _ = std::io::stdout().flush();
     true
 }
@@ -221,6 +237,9 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
                 println!(":help NAME   signature and description of a builtin");
                 println!(":load FILE   load and evaluate a .lsp file");
                 println!(":save FILE   write the drawing (.svg or .dxf)");
+                println!(
+                    ":preview FILE  rewrite FILE (.svg) after every evaluation; :preview off stops"
+                );
                 println!(":quit        leave (or Ctrl-D)");
             } else {
                 match crate::builtins::system::help_text(arg) {
@@ -238,6 +257,16 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
             match crate::builtins::write_outputs(it, &[PathBuf::from(arg)], &common) {
                 Ok(()) => println!("wrote {arg}"),
                 Err(msg) => eprintln!("error: {msg}"),
+            }
+        }
+        "preview" => {
+            if arg.is_empty() || arg == "off" {
+                it.ext::<Preview>().0 = None;
+                println!("preview off");
+            } else {
+                it.ext::<Preview>().0 = Some(PathBuf::from(arg));
+                refresh_preview(it);
+                println!("previewing into {arg} after every evaluation");
             }
         }
         other => eprintln!("unknown command :{other} (try :help)"),

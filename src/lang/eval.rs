@@ -368,3 +368,14 @@ pub fn read_error(e: ReadError, src: u32) -> Exn {
     });
     le
 }
+
+/// Marks the current thread as one started with `stack_size` bytes of stack (for thread pools
+/// that run Lisp code, such as `batch`'s): the stack check then uses the whole stack.
+pub fn mark_eval_thread(stack_size: usize) {
+    STACK_BOUNDS.with(|b| {
+        b.set(Some((
+            stack_pointer(),
+            stack_size.saturating_sub(STACK_MARGIN),
+        )))
+    });
+}

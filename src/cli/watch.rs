@@ -1,0 +1,103 @@
+//! `lispcad watch`: re-run a script whenever it, or a file it loads, changes, and rewrite the
+//! outputs. A failing run prints its error and keeps the last good outputs (writes are atomic
+//! and happen only after a successful run).
+
+use std::path::PathBuf;
+use std::sync::mpsc;
+use std::time::Duration;
+
+use clap::Args;
+use notify::{RecursiveMode, Watcher};
+
+use super::{diag, Common, EXIT_USAGE};
+use crate::lang::ErrorKind;
+
+#[derive(Args, Debug)]
+pub struct WatchArgs {
+    pub file: PathBuf,
+    /// Outputs rewritten after every successful run (.svg or .dxf).
+    #[arg(short = 'o', long = "output", value_name = "OUT", required = true)]
+    pub outputs: Vec<PathBuf>,
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    pub set: Vec<String>,
+}
+
+/// One run; returns the files the script read (itself and what it loaded).
+fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
+    let mut it = super::run::configured_interp(common);
+    let mut watched = vec![args.file.clone()];
+    if let Err(m) = super::run::apply_sets(&mut it, &args.set) {
+        eprintln!("error: {m}");
+        return watched;
+    }
+    let r = it.load_file(&args.file.display().to_string());
+    it.flush_out();
+    watched.extend(it.loaded_files.iter().cloned());
+    match r {
+        Err(e) if e.kind != ErrorKind::Exit => {
+            diag::print_error(&it, &e);
+            eprintln!("watch: run failed; the outputs keep the last good drawing");
+        }
+        _ => match crate::builtins::write_outputs(&mut it, &args.outputs, common) {
+            Ok(()) => eprintln!(
+                "watch: wrote {}",
+                args.outputs
+                    .iter()
+                    .map(|o| o.display().to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+            Err(m) => eprintln!("error: {m}"),
+        },
+    }
+    watched
+}
+
+pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
+    if !args.file.is_file() {
+        eprintln!("error: cannot read script {}", args.file.display());
+        return EXIT_USAGE;
+    }
+    let (tx, rx) = mpsc::channel();
+    let mut watcher = match notify::recommended_watcher(move |ev: notify::Result<notify::Event>| {
+        if let Ok(ev) = ev {
+            if ev.kind.is_modify() || ev.kind.is_create() || ev.kind.is_remove() {
+                let _ = tx.send(ev.paths);
+            }
+        }
+    }) {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("error: cannot watch files: {e}");
+            return EXIT_USAGE;
+        }
+    };
+    // Watch directories, not files: editors often replace a file by renaming a new one over it.
+    let mut dirs: Vec<PathBuf> = Vec::new();
+    loop {
+        let read = run_once(args, common);
+        let files: Vec<PathBuf> = read.iter().filter_map(|f| f.canonicalize().ok()).collect();
+        for f in &files {
+            if let Some(d) = f.parent() {
+                if !dirs.iter().any(|x| x == d) {
+                    if let Err(e) = watcher.watch(d, RecursiveMode::NonRecursive) {
+                        eprintln!("warning: cannot watch {}: {e}", d.display());
+                    }
+                    dirs.push(d.to_path_buf());
+                }
+            }
+        }
+        // Wait for a change to one of the files, then let a burst of events settle.
+        loop {
+            let Ok(paths) = rx.recv() else { return 0 };
+            let hit = paths.iter().any(|p| {
+                let p = p.canonicalize().unwrap_or_else(|_| p.clone());
+                files.contains(&p)
+            });
+            if hit {
+                break;
+            }
+        }
+        while rx.recv_timeout(Duration::from_millis(100)).is_ok() {}
+    }
+}
