@@ -1,0 +1,145 @@
+//! `lispcad batch`: per-row failures, determinism across -j, interruption.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn lispcad() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_lispcad"))
+}
+
+/// A small temple-like script: fast even in debug builds (point bending, no refit).
+const SCRIPT: &str = r#"
+(if (not L1) (setq L1 140.0))
+(if (not R) (setq R 15.0))
+(setq pts '((0 3) (60 4.5) (100 5) (130 6) (140 3) (140 -3) (130 -6) (100 -5) (60 -4.5) (0 -3)))
+(layer "CUT" 1)
+(draw (spline (bend-temple pts L1 30.0 R 0.5) T))
+(layer "CENTER" 5)
+(draw (temple-centerline L1 30.0 R 0.5))
+"#;
+
+fn setup(dir: &Path) -> PathBuf {
+    let script = dir.join("t.lsp");
+    std::fs::write(&script, SCRIPT).unwrap();
+    script
+}
+
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| {
+            let p = e.unwrap().path();
+            (
+                p.file_name().unwrap().to_string_lossy().to_string(),
+                std::fs::read(&p).unwrap(),
+            )
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn a_bad_row_is_reported_and_the_others_are_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = setup(dir.path());
+    let table = dir.path().join("v.csv");
+    std::fs::write(
+        &table,
+        "name,L1,R\n\"small\",135,12\n\"broken\",140,0\n\"large\",150,18\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = lispcad()
+        .arg("batch")
+        .arg(&script)
+        .arg("--vary")
+        .arg(&table)
+        .arg("-o")
+        .arg(format!("{}/{{name}}-{{L1}}.dxf", out.display()))
+        .arg("-j")
+        .arg("2")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("row 2/3 FAILED"), "{err}");
+    assert!(err.contains("bend radius R must be > 0"), "{err}");
+    assert!(err.contains("2 done, 1 failed"), "{err}");
+    let names: Vec<String> = files(&out).into_iter().map(|f| f.0).collect();
+    assert_eq!(names, ["large-150.dxf", "small-135.dxf"]);
+}
+
+#[test]
+fn outputs_do_not_depend_on_the_number_of_jobs() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = setup(dir.path());
+    let run = |jobs: &str, out: &str| {
+        let o = lispcad()
+            .arg("batch")
+            .arg(&script)
+            .arg("--grid")
+            .arg("L1=135:150:5,R=10,15")
+            .arg("-o")
+            .arg(format!("{}/{out}/t-{{L1}}-{{R}}.dxf", dir.path().display()))
+            .arg("-o")
+            .arg(format!("{}/{out}/t-{{row}}.svg", dir.path().display()))
+            .arg("-j")
+            .arg(jobs)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        files(&dir.path().join(out))
+    };
+    let one = run("1", "j1");
+    let four = run("4", "j4");
+    assert_eq!(one.len(), 16);
+    assert_eq!(one, four);
+}
+
+#[cfg(unix)]
+#[test]
+fn an_interrupted_batch_leaves_no_partial_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("slow.lsp");
+    // Each row spins for a while, then draws: the signal lands mid-batch.
+    std::fs::write(
+        &script,
+        "(setq i 0) (while (< i 300000) (setq i (1+ i))) (draw (circle '(0 0) N))",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let mut child = lispcad()
+        .arg("batch")
+        .arg(&script)
+        .arg("--grid")
+        .arg("N=1:200:1")
+        .arg("-o")
+        .arg(format!("{}/c-{{N}}.svg", out.display()))
+        .arg("-j")
+        .arg("2")
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let _ = Command::new("kill")
+        .arg("-TERM")
+        .arg(child.id().to_string())
+        .status();
+    let status = child.wait().unwrap();
+    assert!(
+        !status.success(),
+        "an interrupted batch must not report success"
+    );
+    let written = if out.exists() {
+        files(&out)
+    } else {
+        Vec::new()
+    };
+    assert!(written.len() < 200, "the batch was not interrupted");
+    for (name, bytes) in written {
+        assert!(name.ends_with(".svg"), "stray file {name}");
+        let text = String::from_utf8(bytes).unwrap();
+        assert!(text.trim_end().ends_with("</svg>"), "{name} is partial");
+    }
+}
