@@ -28,7 +28,7 @@ fn any_curve() -> impl Strategy<Value = Curve> {
             Some(n)
         )
         .ok()),
-        (pt2(), 0.5..8.0f64, 0.0..6.28f64, 0.1..6.2f64)
+        (pt2(), 0.5..8.0f64, 0.0..6.0f64, 0.1..6.2f64)
             .prop_filter_map("arc", |(c, r, a, s)| Curve::arc(c, r, a, a + s, None).ok()),
         (
             prop::collection::vec(pt2(), 3..6),
