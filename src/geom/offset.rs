@@ -145,7 +145,7 @@ fn offset_polyline(p: &Polyline, d: f64) -> Result<Polyline> {
             continue;
         }
         let v = p.vertices[(k + 1) % p.vertices.len()];
-        match join(&offs[i], &offs[j], v) {
+        match join(&offs[i], &offs[j], v, n, 4.0 * d.abs() + scale) {
             Some(q) => {
                 set_end(&mut offs[i], q);
                 set_start(&mut offs[j], q);
@@ -189,15 +189,25 @@ fn set_start(o: &mut Off, q: DVec3) {
 }
 
 /// The intersection of the two offset carriers (infinite line / full circle) nearest `v`.
-fn join(a: &Off, b: &Off, v: DVec3) -> Option<DVec3> {
-    let big = 1e6;
+/// Two lines meet in closed form (a miter); otherwise lines are extended by `ext` and the
+/// curve intersection is used.
+fn join(a: &Off, b: &Off, v: DVec3, n: DVec3, ext: f64) -> Option<DVec3> {
+    if let (Off::Line(p, p1), Off::Line(q, q1)) = (a, b) {
+        let (d1, d2) = (*p1 - *p, *q1 - *q);
+        let den = d1.cross(d2).dot(n);
+        if den.abs() <= 1e-12 * d1.length() * d2.length() {
+            return None;
+        }
+        let s = (*q - *p).cross(d2).dot(n) / den;
+        return Some(*p + d1 * s);
+    }
     let carrier = |o: &Off| -> Curve {
         match o {
             Off::Line(p, q) => {
-                let d = *q - *p;
+                let d = (*q - *p).normalize() * ext;
                 Curve::Line(Line {
-                    p0: *p - d * big,
-                    p1: *q + d * big,
+                    p0: *p - d,
+                    p1: *q + d,
                 })
             }
             Off::Arc(a, ..) => Curve::Circle(Circle {
@@ -210,7 +220,6 @@ fn join(a: &Off, b: &Off, v: DVec3) -> Option<DVec3> {
         }
     };
     let (ca, cb) = (carrier(a), carrier(b));
-    let scale = (a.end() - v).length().max(1.0);
-    let hits = super::intersect::intersect(&ca, &cb, 1e-9 * scale);
+    let hits = super::intersect::intersect(&ca, &cb, 1e-9 * ext.max(1.0));
     super::intersect::intersect_near(&hits, v)
 }
