@@ -456,3 +456,30 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn bend_spline_open_outline() {
+    // An open curve along the top edge, through the bend.
+    let pts: Vec<DVec3> = [
+        (0.0, 2.0),
+        (40.0, 1.9),
+        (80.0, 1.8),
+        (100.0, 2.2),
+        (120.0, 3.0),
+        (140.0, 1.0),
+    ]
+    .iter()
+    .map(|(x, y)| DVec3::new(*x, *y, 0.0))
+    .collect();
+    let s = QuadSpline::interpolate(&pts, false).unwrap();
+    let p = params(140.0, 35.0, 15.0, -0.6);
+    let b = bend_spline(&s, &p, 1e-6).unwrap();
+    assert!(!b.spline.closed);
+    assert!(b.deviation <= 1e-6);
+    assert_eq!(b.spline.start(), bend_point(pts[0], &p).unwrap());
+    assert_eq!(b.spline.end(), bend_point(pts[5], &p).unwrap());
+    for k in 0..=4000 {
+        let exact = bend_point(s.eval(k as f64 / 4000.0), &p).unwrap();
+        assert!(b.spline.closest_point(exact).distance <= 1.05e-6);
+    }
+}

@@ -18,7 +18,7 @@ Per variant:
 Usage:
   temple_ezdxf.py -n 1000 -o out/py                 # a built-in sweep of N variants
   temple_ezdxf.py --vary variants.csv -o out/py     # one variant per CSV row (header: variable names)
-  temple_ezdxf.py -n 1 -o out --set L1=150 --set ANGLE=30
+  temple_ezdxf.py -n 1 -o out --set L1=150 --set BENDANG=30
 Prints the number of variants, the total time and variants per second. Pure Python + ezdxf.
 """
 
@@ -35,7 +35,7 @@ DEFAULTS = {
     "L1": 140.0,  # total temple length (mm)
     "L2": 35.0,  # far end back to the bend vertex
     "R": 15.0,  # bend radius
-    "ANGLE": 40.0,  # bend angle, degrees
+    "BENDANG": 40.0,  # bend angle, degrees (ANGLE is an AutoLISP builtin)
     "HINGEW": 5.0,  # width at the hinge end
     "MINW": 3.5,  # slimmest width (at 0.7 L1)
     "TIPW": 7.0,  # width of the tip
@@ -201,7 +201,7 @@ def spline_deriv(segs, t):
 class Bend:
     def __init__(self, p):
         self.l1, self.l2, self.r = p["L1"], p["L2"], p["R"]
-        theta = math.radians(p["ANGLE"])
+        theta = math.radians(p["BENDANG"])
         if self.r <= 0:
             raise ValueError(f"bend radius R must be > 0, got {self.r}")
         if abs(theta) >= math.pi:
@@ -425,6 +425,19 @@ def bend_outline(segs, npts, bend, tol=TOL):
 # --- output ----------------------------------------------------------------------------------
 
 
+GL_X = (0.1834346424956498, 0.525532409916329, 0.7966664774136267, 0.9602898564975363)
+GL_W = (0.362683783378362, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763)
+
+
+def outline_length(segs):
+    """Arc length, 8-point Gauss-Legendre per segment (ample for two decimals)."""
+    total = 0.0
+    for s in segs:
+        for x, w in zip(GL_X, GL_W):
+            total += 0.5 * w * (norm(bez_d(s, 0.5 - 0.5 * x)) + norm(bez_d(s, 0.5 + 0.5 * x)))
+    return total
+
+
 def to_bspline(segs):
     """Control points and knots of the exact degree-2 B-spline (interior knots doubled)."""
     n = len(segs)
@@ -442,7 +455,7 @@ def fmt(x):
     return f"{x:.6f}".rstrip("0").rstrip(".")
 
 
-def write_dxf(path, segs, center, notes):
+def write_dxf(path, segs, center, notes, base):
     doc = ezdxf.new("R2000", setup=False)
     doc.header["$INSUNITS"] = 4
     for name, color in (("CUT", 1), ("CENTER", 5), ("NOTES", 7)):
@@ -460,16 +473,16 @@ def write_dxf(path, segs, center, notes):
         msp.add_line(p3, p4, dxfattribs={"layer": "CENTER"})
     for i, text in enumerate(notes):
         msp.add_text(text, height=2.5,
-                     dxfattribs={"layer": "NOTES", "insert": (0, -15 - 4 * i)})
+                     dxfattribs={"layer": "NOTES", "insert": (base[0], base[1] - 15 - 4 * i)})
     tmp = path + ".tmp"
     doc.saveas(tmp)
     os.replace(tmp, path)
 
 
-def write_svg(path, segs, center, notes):
+def write_svg(path, segs, center, notes, base):
     p1, p2, p3, p4, o1, a0, a1 = center
     xs = [c[0] for s in segs for c in s] + [p1[0], p4[0], 0.0]
-    ys = [c[1] for s in segs for c in s] + [p1[1], p4[1], -15 - 4 * len(notes)]
+    ys = [c[1] for s in segs for c in s] + [p1[1], p4[1], base[1] - 15 - 4 * len(notes)]
     pad = 5.0
     x0, x1 = min(xs) - pad, max(xs) + pad
     y0, y1 = min(ys) - pad, max(ys) + pad
@@ -500,7 +513,7 @@ def write_svg(path, segs, center, notes):
         '<g id="NOTES" fill="#000000" font-family="sans-serif" font-size="2.5">',
     ]
     for i, text in enumerate(notes):
-        out.append(f'<text x="0" y="{fmt(15 + 4 * i)}">{text}</text>')
+        out.append(f'<text x="{fmt(base[0])}" y="{fmt(-(base[1] - 15 - 4 * i))}">{text}</text>')
     out += ["</g>", "</svg>", ""]
     tmp = path + ".tmp"
     with open(tmp, "w") as f:
@@ -513,15 +526,17 @@ def run_variant(params, stem):
     segs = interpolate_closed(pts)
     bend = Bend(params)
     bent, dev, added = bend_outline(segs, len(pts), bend)
+    # The same three TEXT lines as scripts/temple.lsp (rtos modes 2 and 1).
     notes = [
-        f"L1 {fmt(params['L1'])}  L2 {fmt(params['L2'])}  R {fmt(params['R'])}  "
-        f"ANGLE {fmt(params['ANGLE'])}",
-        f"HINGEW {fmt(params['HINGEW'])}  MINW {fmt(params['MINW'])}  TIPW {fmt(params['TIPW'])}",
-        f"BENDDEV {dev:.3g}",
+        f"L1 {params['L1']:.1f}  L2 {params['L2']:.1f}  R {params['R']:.1f}  "
+        f"BEND {params['BENDANG']:.1f} deg",
+        f"HINGE {params['HINGEW']:.2f}  MIN {params['MINW']:.2f}  TIP {params['TIPW']:.2f}",
+        f"outline length {outline_length(bent):.2f}  BENDDEV {dev:.2E}",
     ]
     center = bend.centerline()
-    write_dxf(stem + ".dxf", bent, center, notes)
-    write_svg(stem + ".svg", bent, center, notes)
+    base = (params["BASEX"], params["BASEY"])
+    write_dxf(stem + ".dxf", bent, center, notes, base)
+    write_svg(stem + ".svg", bent, center, notes, base)
     return dev, added
 
 
@@ -533,7 +548,7 @@ def sweep(n):
         rows.append({
             "L1": 130.0 + (i % 21),
             "R": 10.0 + (i // 21) % 11,
-            "ANGLE": 25.0 + 5 * ((i // 231) % 5),
+            "BENDANG": 25.0 + 5 * ((i // 231) % 5),
             "L2": 30.0 + 5 * ((i // 1155) % 3),
         })
     return rows

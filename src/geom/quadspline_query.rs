@@ -4,7 +4,7 @@
 //!
 //! All parameters are the public t in [0, 1] of [`QuadSpline`] (uniform over segments).
 
-use glam::DVec3;
+use glam::{DMat4, DVec3};
 use smallvec::SmallVec;
 
 use super::quadspline::{quad_bezier, QuadSpline};
@@ -280,6 +280,43 @@ impl QuadSpline {
             t: (i as f64 + u) / n as f64,
             point: quad_bezier(&self.segments[i], u),
             distance: d2.sqrt(),
+        }
+    }
+
+    /// The spline under an affine map (move, rotate, scale, mirror): exact, since an affine
+    /// image of a quadratic Bézier is the Bézier of the mapped control points. Type-value
+    /// points are mapped alike, so `point_param` still holds.
+    pub fn transformed(&self, m: &DMat4) -> QuadSpline {
+        QuadSpline {
+            points: self.points.iter().map(|p| m.transform_point3(*p)).collect(),
+            closed: self.closed,
+            segments: self
+                .segments
+                .iter()
+                .map(|s| s.map(|p| m.transform_point3(p)))
+                .collect(),
+        }
+    }
+
+    /// The same curve traversed the other way (type-value points reversed).
+    pub fn reversed(&self) -> QuadSpline {
+        let mut points = self.points.clone();
+        let segments: Vec<[DVec3; 3]> = self
+            .segments
+            .iter()
+            .rev()
+            .map(|s| [s[2], s[1], s[0]])
+            .collect();
+        if self.closed && !points.is_empty() {
+            // The reversed segments already start at point 0; the points keep it first too.
+            points[1..].reverse();
+        } else {
+            points.reverse();
+        }
+        QuadSpline {
+            points,
+            closed: self.closed,
+            segments,
         }
     }
 
