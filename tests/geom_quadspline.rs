@@ -297,3 +297,28 @@ proptest! {
         prop_assert!((fd - s.derivative(t)).length() < 1e-4 * (1.0 + fd.length()));
     }
 }
+
+#[test]
+fn reversed_and_transformed_keep_the_layout() {
+    use glam::DMat4;
+    for closed in [false, true] {
+        let pts = temple_outline();
+        let s = QuadSpline::interpolate(&pts, closed).unwrap();
+        let r = s.reversed();
+        let n = r.points.len();
+        for j in 0..n {
+            let q = r.eval(r.point_param(j));
+            assert!(q.distance(r.points[j]) < 1e-12);
+        }
+        for k in 0..=100 {
+            let t = k as f64 / 100.0;
+            assert!(r.eval(t).distance(s.eval(1.0 - t)) < 1e-9);
+        }
+        let m = DMat4::from_rotation_z(0.7) * DMat4::from_translation(DVec3::new(3.0, -2.0, 1.0));
+        let moved = s.transformed(&m);
+        for k in 0..=100 {
+            let t = k as f64 / 100.0;
+            assert!(moved.eval(t).distance(m.transform_point3(s.eval(t))) < 1e-12);
+        }
+    }
+}

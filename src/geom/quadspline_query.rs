@@ -4,7 +4,8 @@
 //!
 //! All parameters are the public t in [0, 1] of [`QuadSpline`] (uniform over segments).
 
-use glam::DVec3;
+use glam::{DMat4, DVec3};
+use smallvec::SmallVec;
 
 use super::quadspline::{quad_bezier, QuadSpline};
 
@@ -63,17 +64,18 @@ fn seg_arclen(s: &[DVec3; 3], a: f64, b: f64, acc: f64, depth: u32) -> f64 {
 /// Every root in [0, 1] of the cubic c3 u³ + c2 u² + c1 u + c0, found by splitting [0, 1] at
 /// the roots of its derivative into monotone pieces and bisecting each sign change (with
 /// Newton steps when they stay in the bracket). Exact to machine precision, loses no root.
-fn cubic_roots_unit(c3: f64, c2: f64, c1: f64, c0: f64, out: &mut Vec<f64>) {
+fn cubic_roots_unit(c3: f64, c2: f64, c1: f64, c0: f64, out: &mut SmallVec<[f64; 6]>) {
     let f = |u: f64| ((c3 * u + c2) * u + c1) * u + c0;
     let df = |u: f64| (3.0 * c3 * u + 2.0 * c2) * u + c1;
-    let mut cuts = vec![0.0];
+    let mut cuts: SmallVec<[f64; 4]> = SmallVec::new();
+    cuts.push(0.0);
     // Critical points: 3c3 u² + 2c2 u + c1 = 0, solved without cancellation.
     let (qa, qb, qc) = (3.0 * c3, 2.0 * c2, c1);
     if qa != 0.0 {
         let disc = qb * qb - 4.0 * qa * qc;
         if disc >= 0.0 {
             let q = -0.5 * (qb + qb.signum() * disc.sqrt());
-            let mut rs = Vec::new();
+            let mut rs: SmallVec<[f64; 2]> = SmallVec::new();
             if q != 0.0 {
                 rs.push(q / qa);
                 rs.push(qc / q);
@@ -141,7 +143,8 @@ fn seg_nearest(s: &[DVec3; 3], p: DVec3) -> (f64, f64) {
     let a = s[0] - 2.0 * s[1] + s[2];
     let b = 2.0 * (s[1] - s[0]);
     let d = s[0] - p;
-    let mut cands = vec![0.0, 1.0];
+    let mut cands: SmallVec<[f64; 6]> = SmallVec::new();
+    cands.extend([0.0, 1.0]);
     cubic_roots_unit(
         2.0 * a.dot(a),
         3.0 * a.dot(b),
@@ -280,6 +283,43 @@ impl QuadSpline {
         }
     }
 
+    /// The spline under an affine map (move, rotate, scale, mirror): exact, since an affine
+    /// image of a quadratic Bézier is the Bézier of the mapped control points. Type-value
+    /// points are mapped alike, so `point_param` still holds.
+    pub fn transformed(&self, m: &DMat4) -> QuadSpline {
+        QuadSpline {
+            points: self.points.iter().map(|p| m.transform_point3(*p)).collect(),
+            closed: self.closed,
+            segments: self
+                .segments
+                .iter()
+                .map(|s| s.map(|p| m.transform_point3(p)))
+                .collect(),
+        }
+    }
+
+    /// The same curve traversed the other way (type-value points reversed).
+    pub fn reversed(&self) -> QuadSpline {
+        let mut points = self.points.clone();
+        let segments: Vec<[DVec3; 3]> = self
+            .segments
+            .iter()
+            .rev()
+            .map(|s| [s[2], s[1], s[0]])
+            .collect();
+        if self.closed && !points.is_empty() {
+            // The reversed segments already start at point 0; the points keep it first too.
+            points[1..].reverse();
+        } else {
+            points.reverse();
+        }
+        QuadSpline {
+            points,
+            closed: self.closed,
+            segments,
+        }
+    }
+
     /// The exact axis-aligned bounding box (min, max): segment ends and the interior extremum
     /// of each coordinate, u* = (p0 − p1)/(p0 − 2p1 + p2).
     pub fn bbox(&self) -> (DVec3, DVec3) {
@@ -335,7 +375,7 @@ mod tests {
     #[test]
     fn cubic_roots_found() {
         // (u − 0.2)(u − 0.5)(u − 0.9)
-        let mut r = Vec::new();
+        let mut r = SmallVec::new();
         cubic_roots_unit(1.0, -1.6, 0.73, -0.09, &mut r);
         r.sort_by(f64::total_cmp);
         assert_eq!(r.len(), 3);

@@ -19,7 +19,7 @@ use glam::{DVec2, DVec3};
 
 use super::quadspline_fit::QuadSplineError;
 
-pub use super::temple_refine::{bend_spline, BentSpline};
+pub use super::temple_refine::{bend_spline, bend_spline_interpolated, BentSpline};
 
 /// The bend parameters of paper 004.
 #[derive(Clone, Copy, Debug, PartialEq)]

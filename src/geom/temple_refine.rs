@@ -1,16 +1,29 @@
-//! Refitting a bent temple outline within a tolerance of the exact bend.
+//! Generating a bent temple outline within a tolerance of the exact bend.
 //!
-//! Paper 004 bends the type-value points and refits the quadratic spline through them
-//! ("transform first, then generate"). The refit only approximates the exact image of the
-//! original outline under the bend — the bend curves the outline between type-value points and
+//! Paper 004 bends the type-value points and regenerates the quadratic spline through them
+//! ("transform first, then generate"). Any such spline only approximates the exact image of the
+//! original outline under the bend: the bend curves the outline between type-value points and
 //! even puts a slight corner in it where the outline crosses s = L or s = L + Rθ off the
-//! centerline (the map is C1 only along the centerline). So, after each refit, the exact bent
-//! outline is sampled densely between consecutive type-value points and each sample's distance
-//! to the refit (exact nearest point on the nearby segments) is measured; every interval whose
-//! error exceeds the tolerance gets a new type-value point: the bent image of the original
-//! outline at the interval's middle parameter (bisection, so the spacing halves where the
-//! error lives — in and next to the bend). Repeated until within tolerance or a cap is hit; the
-//! achieved deviation is returned either way.
+//! centerline (the map is C1 only along the centerline). So, after each generation, the exact
+//! bent outline is sampled densely between consecutive type-value points and each sample's
+//! distance to the spline (exact nearest point on the nearby segments) is measured; every
+//! interval whose error exceeds the tolerance gets a new type-value point: the bent image of the
+//! original outline at the interval's middle parameter (bisection, so the spacing halves where
+//! the error lives — in and next to the bend). Repeated until within tolerance or a cap is hit;
+//! the achieved deviation is returned either way.
+//!
+//! Two generators are offered:
+//! - [`bend_spline`] (default): between consecutive bent type-value points, two quadratic pieces
+//!   whose controls are the intersections of the exact bent outline's tangent lines at the two
+//!   points and at the interval's middle (quadratic Hermite with a joint; C1 by construction,
+//!   the joint is the exact bent middle point). Where the bend is rigid (before the bend, and
+//!   beyond it) this reproduces the original outline's segments exactly, so points are only
+//!   added in and next to the bend: typically tens, not thousands.
+//! - [`bend_spline_interpolated`]: the literal reading, [`QuadSpline::interpolate`] through the
+//!   bent type-value points each round. A spline interpolating a superset of the original's
+//!   points never reproduces the original exactly, so at 1e-6 it adds ~1000 points all round the
+//!   outline (hundreds of ms); kept for comparison and for callers who need
+//!   `interpolate(result.points) == result`.
 
 use glam::DVec3;
 
@@ -39,15 +52,41 @@ pub struct BentSpline {
     pub rounds: usize,
 }
 
-/// Bend a quadratic-spline outline: bend its type-value points, refit with
-/// [`QuadSpline::interpolate`], and add bent type-value points where the refit is farther than
-/// `tol` from the exact bend of `s` (see the module doc). The result passes through the bent
-/// image of every original type-value point. If the caps (48 rounds, 4000 added points) are hit
-/// first, the result is returned with the deviation it achieved, which is then above `tol`.
+/// Bend a quadratic-spline outline (see the module doc): bend its type-value points, generate
+/// the C1 quadratic spline through them with tangents and joints taken from the exact bend, and
+/// add bent type-value points until the spline is within `tol` of the exact bend of `s`. The
+/// result passes through the bent image of every original type-value point and keeps the
+/// two-segments-per-interval layout (`point_param` holds). If the caps (48 rounds, 4000 added
+/// points) are hit first, the result carries the deviation it achieved, then above `tol`.
 pub fn bend_spline(
     s: &QuadSpline,
     params: &TempleParams,
     tol: f64,
+) -> Result<BentSpline, TempleError> {
+    refine(s, params, tol, Generator::Hermite)
+}
+
+/// As [`bend_spline`], but each round refits with [`QuadSpline::interpolate`] through the bent
+/// type-value points (paper 004 read literally). Much slower to converge; see the module doc.
+pub fn bend_spline_interpolated(
+    s: &QuadSpline,
+    params: &TempleParams,
+    tol: f64,
+) -> Result<BentSpline, TempleError> {
+    refine(s, params, tol, Generator::Interpolate)
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Generator {
+    Hermite,
+    Interpolate,
+}
+
+fn refine(
+    s: &QuadSpline,
+    params: &TempleParams,
+    tol: f64,
+    generator: Generator,
 ) -> Result<BentSpline, TempleError> {
     if !(tol > 0.0 && tol.is_finite()) {
         return Err(TempleError::Tolerance { tol });
@@ -71,10 +110,19 @@ pub fn bend_spline(
         .collect::<Result<Vec<_>, _>>()?;
     let mut added = 0;
     let mut round = 0;
+    // Measured error per interval; None where it must be (re)measured. Hermite pieces depend
+    // only on their own interval, so only new intervals are measured; interpolation is global.
+    let mut known: Vec<Option<f64>> = vec![None; intervals];
     loop {
         round += 1;
-        let fit = QuadSpline::interpolate(&bent, closed)?;
-        let errs = interval_errors(s, &fit, &ts, &bend)?;
+        let fit = match generator {
+            Generator::Interpolate => QuadSpline::interpolate(&bent, closed)?,
+            Generator::Hermite => hermite_fit(s, &bend, &ts, &bent)?,
+        };
+        if generator == Generator::Interpolate {
+            known.iter_mut().for_each(|e| *e = None);
+        }
+        let errs = interval_errors(s, &fit, &ts, &bend, &mut known)?;
         let deviation = errs.iter().copied().fold(0.0, f64::max);
         if deviation <= tol || round >= MAX_ROUNDS || added >= MAX_ADDED {
             return Ok(BentSpline {
@@ -87,17 +135,22 @@ pub fn bend_spline(
         let n = ts.len();
         let mut new_ts = Vec::with_capacity(n + errs.len());
         let mut new_bent = Vec::with_capacity(n + errs.len());
+        let mut new_known = Vec::with_capacity(n + errs.len());
         for i in 0..n {
             new_ts.push(ts[i]);
             new_bent.push(bent[i]);
-            if i < errs.len() && errs[i] > tol && added < MAX_ADDED {
-                let (ta, tb) = interval_span(&ts, i);
-                if tb - ta > MIN_INTERVAL {
-                    let tm = 0.5 * (ta + tb);
-                    new_ts.push(tm);
-                    new_bent.push(bend_sample(&bend, s.eval(tm), tm)?);
-                    added += 1;
-                }
+            if i >= errs.len() {
+                continue;
+            }
+            let (ta, tb) = interval_span(&ts, i);
+            if errs[i] > tol && added < MAX_ADDED && tb - ta > MIN_INTERVAL {
+                let tm = 0.5 * (ta + tb);
+                new_ts.push(tm);
+                new_bent.push(bend_sample(&bend, s.eval(tm), tm)?);
+                new_known.extend([None, None]);
+                added += 1;
+            } else {
+                new_known.push(Some(errs[i]));
             }
         }
         if new_ts.len() == n {
@@ -111,6 +164,7 @@ pub fn bend_spline(
         }
         ts = new_ts;
         bent = new_bent;
+        known = new_known;
     }
 }
 
@@ -129,41 +183,123 @@ fn bend_sample(bend: &Bend, p: DVec3, t: f64) -> Result<DVec3, TempleError> {
 }
 
 /// For each interval between consecutive type-value points, the largest distance from the
-/// exact bend of the original outline (sampled) to the refit's segments near that interval.
+/// exact bend of the original outline (sampled) to the spline's two segments of that interval
+/// (the nearest point restricted to them: an upper bound of the true distance, so honest).
+/// Intervals with a `known` value are not measured again.
 fn interval_errors(
     orig: &QuadSpline,
     fit: &QuadSpline,
     ts: &[f64],
     bend: &Bend,
+    known: &mut [Option<f64>],
 ) -> Result<Vec<f64>, TempleError> {
-    let n = ts.len();
-    let count = if orig.closed { n } else { n - 1 };
-    let mut errs = vec![0.0; count];
-    for (i, err) in errs.iter_mut().enumerate() {
+    let mut errs = Vec::with_capacity(known.len());
+    for (i, slot) in known.iter_mut().enumerate() {
+        if let Some(e) = *slot {
+            errs.push(e);
+            continue;
+        }
         let (ta, tb) = interval_span(ts, i);
+        let mut err: f64 = 0.0;
         for k in 1..=SAMPLES_PER_INTERVAL {
             let t = ta + (tb - ta) * k as f64 / (SAMPLES_PER_INTERVAL + 1) as f64;
             let exact = bend_sample(bend, orig.eval(t), t)?;
-            *err = f64::max(*err, near_distance(fit, i, count, exact));
+            err = err.max(fit.closest_point_in(exact, 2 * i, 2 * i + 2).distance);
         }
+        *slot = Some(err);
+        errs.push(err);
     }
     Ok(errs)
 }
 
-/// Distance from `p` to the refit's segments of intervals i−1, i, i+1 (two segments each,
-/// wrapping around for a closed spline).
-fn near_distance(fit: &QuadSpline, i: usize, count: usize, p: DVec3) -> f64 {
-    let near: [Option<usize>; 3] = if fit.closed {
-        [
-            Some((i + count - 1) % count),
-            Some(i),
-            Some((i + 1) % count),
-        ]
-    } else {
-        [i.checked_sub(1), Some(i), (i + 1 < count).then_some(i + 1)]
-    };
-    near.into_iter()
-        .flatten()
-        .map(|j| fit.closest_point_in(p, 2 * j, 2 * j + 2).distance)
-        .fold(f64::INFINITY, f64::min)
+/// The unit tangent of the exact bent outline at original parameter t: J(S(t))·S'(t), falling
+/// back to `fallback` where the outline has zero speed.
+fn bent_tangent(orig: &QuadSpline, bend: &Bend, t: f64, fallback: DVec3) -> DVec3 {
+    let (jx, jy) = bend.jacobian(orig.eval(t));
+    let d = orig.derivative(t);
+    (jx * d.x + jy * d.y + DVec3::Z * d.z)
+        .try_normalize()
+        .or_else(|| fallback.try_normalize())
+        .unwrap_or(DVec3::X)
+}
+
+/// The control point of a quadratic from `p` (unit tangent `tp`) to `q` (unit tangent `tq`):
+/// the meeting point of the two tangent lines, X = p + α·tp = q − γ·tq with α, γ > 0. None when
+/// the lines are parallel (unless the piece is straight), skew, or meet behind an end or
+/// within 5% of the chord from one.
+fn tangent_meet(p: DVec3, tp: DVec3, q: DVec3, tq: DVec3) -> Option<DVec3> {
+    let d = q - p;
+    let len = d.length();
+    let c = tp.dot(tq);
+    let det = 1.0 - c * c;
+    if det < 1e-12 {
+        // Parallel tangents: only a straight piece along them works (control at the middle).
+        let straight = c > 0.0 && d.dot(tp) > 0.0 && d.cross(tp).length() <= 1e-12 * len;
+        return straight.then(|| p.lerp(q, 0.5));
+    }
+    let (bp, bq) = (tp.dot(d), tq.dot(d));
+    let alpha = (bp - c * bq) / det;
+    let gamma = (bq - c * bp) / det;
+    // Legs much shorter than the chord make a near-cusp (speed almost 0 at an end), which
+    // CAM arc fitting and offsetting handle badly: refuse them as well.
+    if !(alpha > 0.05 * len && gamma > 0.05 * len) {
+        return None;
+    }
+    let x1 = p + tp * alpha;
+    let x2 = q - tq * gamma;
+    (x1.distance(x2) <= 1e-9 * len).then(|| x1.lerp(x2, 0.5))
+}
+
+/// Quadratic Hermite with a joint on every interval (see the module doc): two segments per
+/// interval, C1 at every joint and at every type-value point.
+fn hermite_fit(
+    orig: &QuadSpline,
+    bend: &Bend,
+    ts: &[f64],
+    bent: &[DVec3],
+) -> Result<QuadSpline, TempleError> {
+    let n = ts.len();
+    let closed = orig.closed;
+    let count = if closed { n } else { n - 1 };
+    let chord = |i: usize| bent[(i + 1) % n] - bent[i];
+    let tangents: Vec<DVec3> = (0..n)
+        .map(|i| {
+            let fallback = if i < count { chord(i) } else { chord(i - 1) };
+            bent_tangent(orig, bend, ts[i], fallback)
+        })
+        .collect();
+    let mut segments = Vec::with_capacity(2 * count);
+    for i in 0..count {
+        let j = (i + 1) % n;
+        let (a, b) = (bent[i], bent[j]);
+        let (ta, tb) = (tangents[i], tangents[j]);
+        let (t0, t1) = interval_span(ts, i);
+        let tm = 0.5 * (t0 + t1);
+        let m = bend_sample(bend, orig.eval(tm), tm)?;
+        let tmv = bent_tangent(orig, bend, tm, b - a);
+        match (tangent_meet(a, ta, m, tmv), tangent_meet(m, tmv, b, tb)) {
+            (Some(x1), Some(x2)) => {
+                segments.push([a, x1, m]);
+                segments.push([m, x2, b]);
+            }
+            _ => {
+                // No tangent-meeting controls (inflection or a fold of the tangents): a C1 pair
+                // with controls on the end tangents and the joint between them; the error
+                // measurement will split the interval if this is not close enough.
+                // Legs of a third of the chord: exact for a straight piece, and never a
+                // near-cusp (halves would collapse both controls onto the joint).
+                let h = a.distance(b) / 3.0;
+                let x1 = a + ta * h;
+                let x2 = b - tb * h;
+                let mid = x1.lerp(x2, 0.5);
+                segments.push([a, x1, mid]);
+                segments.push([mid, x2, b]);
+            }
+        }
+    }
+    Ok(QuadSpline {
+        points: bent.to_vec(),
+        closed,
+        segments,
+    })
 }

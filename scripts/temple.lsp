@@ -1,0 +1,95 @@
+;;; temple.lsp -- a parametric eyeglass temple, bent as in Zhou, Li & Xue (2007),
+;;; "Parametric modeling and curving algorithm of eyeglasses' temple" (paper 004).
+;;;
+;;;   lispcad run scripts/temple.lsp -o temple.svg -o temple.dxf
+;;;   lispcad run scripts/temple.lsp --set L1=145.0 --set BENDANG=35.0 -o big.dxf
+;;;   lispcad batch scripts/temple.lsp --vary bench/temple/variants.csv -o out/temple-{row}.dxf
+;;;
+;;; The straight temple lies along +X from the hinge end at the base point (BASEX, BASEY).
+;;; Its outline is a closed quadratic spline through 11 type-value points computed from the
+;;; widths below; bend-temple bends it about the centerline (bend toward -Y for a positive
+;;; angle) keeping every point's distance from the centerline, and regenerates the spline
+;;; within GEOMTOL x 1000 of the exact bend (the achieved deviation is BENDDEV).
+;;; Layers: CUT (the bent outline, for the laser/CNC), CENTER (the bent centerline:
+;;; line, arc, line), NOTES (the parameter values).
+
+;;; ---- parameters: mm and degrees; a value given with --set wins over the default ----
+(if (not L1) (setq L1 140.0))          ; total length of the temple along its centerline
+(if (not L2) (setq L2 35.0))           ; from the far end back to the bend's vertex
+(if (not R) (setq R 15.0))             ; bend radius
+(if (not BENDANG) (setq BENDANG 40.0)) ; bend angle in degrees (ANGLE is a builtin: not used)
+(if (not HINGEW) (setq HINGEW 5.0))    ; width at the hinge end
+(if (not MINW) (setq MINW 3.5))        ; slimmest width, at 0.7 L1 (the thickness profile)
+(if (not TIPW) (setq TIPW 7.0))        ; width of the tip, at 0.9 L1
+(if (not BASEX) (setq BASEX 0.0))      ; base point P1 (hinge end of the centerline)
+(if (not BASEY) (setq BASEY 0.0))
+
+;; --set L1=140 reads an integer; the geometry wants reals.
+(setq L1 (float L1) L2 (float L2) R (float R) BENDANG (float BENDANG)
+      HINGEW (float HINGEW) MINW (float MINW) TIPW (float TIPW)
+      BASEX (float BASEX) BASEY (float BASEY))
+
+(defun dtr (d) (* pi (/ d 180.0)))
+
+;; A point of the straight temple: X along the centerline, Y across it.
+(defun tpt (x y) (list (+ BASEX x) (+ BASEY y)))
+
+;; The 11 type-value points Q1..Q11 of the closed outline, counter-clockwise from the
+;; hinge end's lower corner: along the lower edge to the tip, round the tip, back along
+;; the upper edge. The widths taper from the hinge to the slimmest point, then swell
+;; into the tip.
+(defun temple-points (/ h0 hm ht hq)
+  (setq h0 (/ HINGEW 2.0)
+        hm (/ MINW 2.0)
+        ht (/ TIPW 2.0)
+        hq (+ hm (* 0.3 (- h0 hm))))
+  (list (tpt 0.0 (- h0))
+        (tpt (* 0.04 L1) (- h0))
+        (tpt (* 0.35 L1) (- hq))
+        (tpt (* 0.70 L1) (- hm))
+        (tpt (* 0.90 L1) (- ht))
+        (tpt L1 0.0)
+        (tpt (* 0.90 L1) ht)
+        (tpt (* 0.70 L1) hm)
+        (tpt (* 0.35 L1) hq)
+        (tpt (* 0.04 L1) h0)
+        (tpt 0.0 h0)))
+
+;; Checks a designer would otherwise learn from a ruined blank.
+(if (<= R (/ TIPW 2.0))
+  (progn
+    (princ (strcat "\ntemple.lsp: bend radius R " (rtos R 2 2)
+                   " must exceed half the tip width " (rtos (/ TIPW 2.0) 2 2)))
+    (exit)))
+
+;; A line of text on NOTES below the temple.
+(defun note (row str)
+  (entmake (list '(0 . "TEXT")
+                 '(8 . "NOTES")
+                 (list 10 BASEX (- BASEY 15.0 (* 4.0 row)) 0.0)
+                 '(40 . 2.5)
+                 (cons 1 str))))
+
+;;; ---- geometry ----
+(setq theta (dtr BENDANG)
+      base (list BASEX BASEY)
+      pts (temple-points)
+      outline (spline pts T)
+      bent (bend-temple outline L1 L2 R theta base))
+
+;;; ---- drawing ----
+(layer "CUT" 1)
+(draw bent)
+
+(layer "CENTER" 5)
+(foreach piece (temple-centerline L1 L2 R theta base)
+  (draw piece))
+
+(layer "NOTES" 7)
+(note 0 (strcat "L1 " (rtos L1 2 1) "  L2 " (rtos L2 2 1)
+                "  R " (rtos R 2 1) "  BEND " (rtos BENDANG 2 1) " deg"))
+(note 1 (strcat "HINGE " (rtos HINGEW 2 2) "  MIN " (rtos MINW 2 2)
+                "  TIP " (rtos TIPW 2 2)))
+(note 2 (strcat "outline length " (rtos (curve-length bent) 2 2)
+                "  BENDDEV " (rtos (getvar "BENDDEV") 1 2)))
+(princ)
