@@ -20,8 +20,38 @@ use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, Drawing, Entity, Enti
 use super::OutputOptions;
 use crate::geom::frame::arbitrary_axis;
 
-/// Segments per Bézier piece (or per radian of an oblique arc) where a curve is sampled.
-const SAMPLES_PER_PIECE: usize = 64;
+/// Largest distance (drawing units) between a curve SVG cannot express and its polyline.
+const FLATNESS: f64 = 2e-5;
+
+/// Append `f` on (t0, t1] as line segments within FLATNESS, by recursive bisection with the
+/// chord-midpoint test (at least 8 pieces, so no bump slips between samples).
+fn flatten(d: &mut String, f: &dyn Fn(f64) -> DVec2, t0: f64, t1: f64) {
+    fn rec(d: &mut String, f: &dyn Fn(f64) -> DVec2, t0: f64, t1: f64, depth: u32) {
+        let (a, b) = (f(t0), f(t1));
+        let tm = 0.5 * (t0 + t1);
+        let m = f(tm);
+        let q1 = f(0.5 * (t0 + tm));
+        let q3 = f(0.5 * (tm + t1));
+        let dev = |p: DVec2| {
+            let ab = b - a;
+            let l2 = ab.length_squared();
+            if l2 == 0.0 {
+                (p - a).length()
+            } else {
+                let s = ((p - a).dot(ab) / l2).clamp(0.0, 1.0);
+                (p - (a + ab * s)).length()
+            }
+        };
+        let flat = dev(m).max(dev(q1)).max(dev(q3)) <= FLATNESS;
+        if depth >= 3 && (flat || depth >= 24) {
+            line_to(d, b);
+        } else {
+            rec(d, f, t0, tm, depth + 1);
+            rec(d, f, tm, t1, depth + 1);
+        }
+    }
+    rec(d, f, t0, t1, 0);
+}
 
 /// Orthographic projection onto the view plane.
 #[derive(Clone, Copy, Debug)]
@@ -141,14 +171,11 @@ fn circle_arc(
             view_arc(d, c, radius, start, sweep * sign, start_new);
         }
         None => {
-            // An ellipse in this view: fine polyline.
-            let n = ((sweep.abs() * SAMPLES_PER_PIECE as f64).ceil() as usize).max(8);
+            // An ellipse in this view: a fine polyline (within FLATNESS).
             if start_new {
                 move_to(d, v.project(at3(a0)));
             }
-            for i in 1..=n {
-                line_to(d, v.project(at3(a0 + sweep * i as f64 / n as f64)));
-            }
+            flatten(d, &|t| v.project(at3(t)), a0, a0 + sweep);
         }
     }
 }
@@ -276,14 +303,12 @@ fn entity_path(e: &Entity, v: &View, stroke: f64) -> Option<String> {
                 }
             }
             if !exact {
-                // Rational or degree > 3: SVG has no such curve; a fine polyline instead.
-                let (a, b) = curve.domain();
-                let n = SAMPLES_PER_PIECE * pieces.len();
-                for i in 1..=n {
-                    line_to(
-                        &mut d,
-                        v.project(curve.eval_u(a + (b - a) * i as f64 / n as f64)),
-                    );
+                // Rational or degree > 3: SVG has no such curve; a fine polyline instead,
+                // flattened span by span so every knot is a vertex.
+                let mut spans: Vec<f64> = curve.knots[curve.degree..curve.ctrl.len() + 1].to_vec();
+                spans.dedup();
+                for w in spans.windows(2) {
+                    flatten(&mut d, &|u| v.project(curve.eval_u(u)), w[0], w[1]);
                 }
             }
         }
