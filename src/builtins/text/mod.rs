@@ -30,4 +30,4 @@ pub use vlstring::{
     vl_string_position, vl_string_right_trim, vl_string_search, vl_string_subst,
     vl_string_translate, vl_string_trim,
 };
-pub use wcmatch::wcmatch;
+pub use wcmatch::{wcmatch, WcPattern};

@@ -28,19 +28,51 @@ pub fn format_g(x: f64, digits: usize) -> String {
     // only zeros that C would print and that nobody needs; clamping keeps allocation bounded.
     let p = digits.clamp(1, 800);
     // Scientific rendering with P digits gives the post-rounding exponent X.
+    // One correctly rounded scientific rendering gives both the digits and the exponent X
+    // after rounding; fixed notation with P−1−X decimals rounds at the same digit, so it is
+    // these digits with the point moved.
     let sci = format!("{:.*e}", p - 1, x);
     let (mantissa, exp) = sci
         .split_once('e')
         .expect("Rust's {:e} always has an exponent");
     let exp: i32 = exp.parse().expect("Rust's exponent is a plain integer");
-    if exp < -4 || exp >= p as i32 {
-        let mantissa = strip_fraction_zeros(mantissa);
-        let sign = if exp < 0 { '-' } else { '+' };
-        format!("{mantissa}e{sign}{:02}", exp.unsigned_abs())
-    } else {
-        let decimals = (p as i32 - 1 - exp).max(0) as usize;
-        strip_fraction_zeros(&format!("{:.*}", decimals, x)).to_string()
+    let (negative, mantissa) = match mantissa.strip_prefix('-') {
+        Some(m) => (true, m),
+        None => (false, mantissa),
+    };
+    let mut out = String::with_capacity(p + 8);
+    if negative {
+        out.push('-');
     }
+    if exp < -4 || exp >= p as i32 {
+        out.push_str(strip_fraction_zeros(mantissa));
+        out.push('e');
+        out.push(if exp < 0 { '-' } else { '+' });
+        let e = exp.unsigned_abs();
+        if e < 10 {
+            out.push('0');
+        }
+        out.push_str(&e.to_string());
+        return out;
+    }
+    let digits: Vec<u8> = mantissa.bytes().filter(|b| *b != b'.').collect();
+    if exp < 0 {
+        out.push_str("0.");
+        for _ in 0..(-exp - 1) {
+            out.push('0');
+        }
+        out.push_str(std::str::from_utf8(&digits).expect("ASCII digits"));
+    } else {
+        let int_len = exp as usize + 1;
+        out.push_str(std::str::from_utf8(&digits[..int_len]).expect("ASCII digits"));
+        if int_len < digits.len() {
+            out.push('.');
+            out.push_str(std::str::from_utf8(&digits[int_len..]).expect("ASCII digits"));
+        }
+    }
+    let kept = strip_fraction_zeros(&out).len();
+    out.truncate(kept);
+    out
 }
 
 /// Formats a real the way AutoLISP's `princ`/`prin1`/`print` do: `%g` with 6 significant
