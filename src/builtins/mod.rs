@@ -5,6 +5,7 @@
 use crate::lang::{Builtin, Interp};
 
 pub mod control;
+pub mod geom2d;
 pub mod io;
 pub mod lists;
 pub mod numbers;
@@ -21,6 +22,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Lists", lists::BUILTINS),
         ("Lists: car/cdr compositions", lists::CXR),
         ("Numbers", numbers::BUILTINS),
+        ("Points and coordinates", geom2d::BUILTINS),
         ("Predicates", predicates::BUILTINS),
         ("Strings", strings::BUILTINS),
         ("Printing and files", io::BUILTINS),
