@@ -7,6 +7,7 @@ use crate::lang::{Builtin, Interp};
 pub mod control;
 pub mod drawing;
 pub mod format;
+pub mod geom2d;
 pub mod geometry;
 pub mod io;
 pub mod lists;
@@ -27,6 +28,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Lists", lists::BUILTINS),
         ("Lists: car/cdr compositions", lists::CXR),
         ("Numbers", numbers::BUILTINS),
+        ("Points and coordinates", geom2d::BUILTINS),
         ("Predicates", predicates::BUILTINS),
         ("Strings", strings::BUILTINS),
         ("Strings: formatting and matching", format::BUILTINS),
