@@ -50,8 +50,8 @@ fn grid_params(s: &Surface, tol: f64, along_u: bool, min_segments: usize) -> Vec
 }
 
 /// The discrete surface of `s`: an indexed triangle mesh with shared vertices whose iso-lines
-/// are within `chord_tol` of the surface (sphere: an icosphere refined until the sagitta of its
-/// edges is within `chord_tol`; plane: the boundary polygon ear-clipped). Seams and poles where
+/// are within `chord_tol` of the surface (sphere: an icosphere refined until its triangles'
+/// centroids are within `chord_tol`; plane: the boundary polygon ear-clipped). Seams and poles where
 /// grid points coincide are welded (within 1e-9 of the size) and collapsed triangles dropped.
 pub fn mesh_surface(s: &Surface, chord_tol: f64) -> Result<Mesh, SurfaceError> {
     let tol = check_positive("chord-tol", chord_tol)?;
@@ -61,15 +61,22 @@ pub fn mesh_surface(s: &Surface, chord_tol: f64) -> Result<Mesh, SurfaceError> {
             return Ok(Mesh::new(p.boundary.clone(), tris)?);
         }
         Surface::Sphere(sp) => {
-            // Icosahedron edge subtends ~63.4°; each subdivision halves it. The sagitta of an
-            // arc of angle θ on radius r is r(1 − cos(θ/2)); refine until it is within tol.
+            // Refine until every triangle's centroid (its deepest point, near enough) is within
+            // tol of the sphere; level 9 (5.2M triangles) is the cap.
             let mut n = 0;
-            let mut theta = 1.1071487177940904_f64;
-            while n < 9 && sp.radius * (1.0 - (theta / 2.0).cos()) > tol {
-                theta /= 2.0;
+            loop {
+                let m = icosphere(sp.center, sp.radius, n);
+                let dev = (0..m.len())
+                    .map(|t| {
+                        let [a, b, c] = m.corners_of(t);
+                        sp.radius - ((a + b + c) / 3.0).distance(sp.center)
+                    })
+                    .fold(0.0, f64::max);
+                if dev <= tol || n >= 9 {
+                    return Ok(m);
+                }
                 n += 1;
             }
-            return Ok(icosphere(sp.center, sp.radius, n));
         }
         _ => {}
     }
