@@ -69,6 +69,24 @@ impl Side<'_> {
 
 /// Like [`intersect_meshes`], also returning the phase counts.
 pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, IntersectStats) {
+    let (pieces, stats) = intersection_pieces(a, b);
+    let segs = pieces.into_iter().map(|p| p.seg).collect();
+    // Crossings through a vertex or an edge/edge touch are found from several (edge, triangle)
+    // keys with the same exact point; they are one node of the curve.
+    (chain_segments(merge_keys_by_point(segs)), stats)
+}
+
+/// One intersecting triangle pair's segment, with where its ends lie on `a`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Piece {
+    pub ta: u32,
+    pub seg: Segment,
+    /// For each end: the edge of `a` (vertex indices) it lies on, or None inside triangle `ta`.
+    pub a_edge: [Option<(u32, u32)>; 2],
+}
+
+/// The segments of every truly intersecting triangle pair (before chaining).
+pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
     // Which mesh the tie-break translates is chosen from the meshes' contents, not from the
@@ -88,7 +106,7 @@ pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, Inter
     };
     #[derive(Default)]
     struct Acc {
-        segs: Vec<Segment>,
+        segs: Vec<Piece>,
         plane: usize,
         irregular: usize,
     }
@@ -122,15 +140,16 @@ pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, Inter
         intersecting_pairs: acc.segs.len(),
         irregular_pairs: acc.irregular,
     };
-    // Crossings through a vertex or an edge/edge touch are found from several (edge, triangle)
-    // keys with the same exact point; they are one node of the curve.
-    (chain_segments(merge_keys_by_point(acc.segs)), stats)
+    let mut segs = acc.segs;
+    // Deterministic order whatever the thread scheduling.
+    segs.sort_unstable_by_key(|p| (p.ta, p.seg.keys));
+    (segs, stats)
 }
 
 enum PairResult {
     Rejected,
     Miss,
-    Segment(Segment),
+    Segment(Piece),
     Irregular,
 }
 
@@ -186,11 +205,13 @@ fn pair_segment(sa: &Side, ta: u32, sb: &Side, tb: u32) -> PairResult {
     }
     let mut keys = [0u128; 2];
     let mut pts = [DVec3::ZERO; 2];
+    let mut a_edge = [None; 2];
     let mut k = 0usize;
-    let mut push = |key: u128, p: DVec3, k: &mut usize| {
+    let mut push = |key: u128, p: DVec3, e: Option<(u32, u32)>, k: &mut usize| {
         if *k < 2 {
             keys[*k] = key;
             pts[*k] = p;
+            a_edge[*k] = e;
         }
         *k += 1;
     };
@@ -217,13 +238,18 @@ fn pair_segment(sa: &Side, ta: u32, sb: &Side, tb: u32) -> PairResult {
             let s2 = side_sos([p, q, pt[2], pt[0]], mv, [ip, iq, it[2], it[0]]);
             if s0 == s1 && s1 == s2 {
                 let key = node_key(edge_side.tag, ve[i], ve[j], tt);
-                push(key, edge_plane_point(p, q, pt), &mut k);
+                let e = (edge_side.tag == 0).then_some((ve[i], ve[j]));
+                push(key, edge_plane_point(p, q, pt), e, &mut k);
             }
         }
     }
     match k {
         0 => PairResult::Miss,
-        2 => PairResult::Segment(Segment { keys, points: pts }),
+        2 => PairResult::Segment(Piece {
+            ta,
+            seg: Segment { keys, points: pts },
+            a_edge,
+        }),
         _ => PairResult::Irregular,
     }
 }
@@ -264,7 +290,7 @@ fn edge_plane_point(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> DVec3 {
 }
 
 /// Re-keys segment ends so that ends with bit-identical points share one key.
-fn merge_keys_by_point(mut segs: Vec<Segment>) -> Vec<Segment> {
+pub(crate) fn merge_keys_by_point(mut segs: Vec<Segment>) -> Vec<Segment> {
     let mut ends: Vec<(DVec3, u128)> = segs
         .iter()
         .flat_map(|s| [(s.points[0], s.keys[0]), (s.points[1], s.keys[1])])

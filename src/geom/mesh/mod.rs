@@ -31,7 +31,7 @@ pub use io::{
 };
 pub use primitives::icosphere;
 pub use section::section;
-// pub use trim::trim;
+pub use trim::{trim, Trimmed};
 
 use glam::DVec3;
 use std::sync::OnceLock;
