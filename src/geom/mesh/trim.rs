@@ -58,8 +58,7 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
     let mut node_id: HashMap<u128, u32> = HashMap::new();
     let mut ids_of = Vec::with_capacity(pieces.len());
     for p in &pieces {
-        let mut ids = [0u32; 2];
-        for e in 0..2 {
+        let ids: [u32; 2] = std::array::from_fn(|e| {
             let key = p.seg.keys[e];
             let pt = p.seg.points[e];
             let snapped = p.a_edge[e].and_then(|(u, v)| {
@@ -67,14 +66,14 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
                     .into_iter()
                     .find(|&w| cmp_point(vertices[w as usize], pt).is_eq())
             });
-            ids[e] = match snapped {
+            match snapped {
                 Some(w) => w,
                 None => *node_id.entry(key).or_insert_with(|| {
                     vertices.push(pt);
                     (vertices.len() - 1) as u32
                 }),
-            };
-        }
+            }
+        });
         ids_of.push(ids);
     }
 
@@ -105,9 +104,8 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
         let tri = mesh.triangles()[t as usize];
         let mut on_edge: [Vec<u32>; 3] = Default::default();
         for &i in &by_facet[&t] {
-            for e in 0..2 {
+            for (e, &id) in ids_of[i].iter().enumerate() {
                 if let Some((u, v)) = pieces[i].a_edge[e] {
-                    let id = ids_of[i][e];
                     if tri.contains(&id) {
                         continue;
                     }
