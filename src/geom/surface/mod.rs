@@ -9,6 +9,7 @@
 mod error;
 mod hits;
 mod kinds;
+mod ops;
 mod planar;
 mod sampled;
 mod sweep;
@@ -21,6 +22,9 @@ pub use hits::{
     MeshHit,
 };
 pub use kinds::{Coons, Cylinder, PlaneRegion, Revolve, Ruled, Sphere, Surface, Sweep};
+pub use ops::{
+    arc_surface_hits, curve_surface_hits, segment_surface_hits, surface_intersect, surface_section,
+};
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};
 pub use sweep::rotation_minimizing_frames;
