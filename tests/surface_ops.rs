@@ -134,3 +134,22 @@ fn cylinder_surface_section_is_exact() {
     assert!(r[0].closed);
     assert!(surface_section(&s, DVec3::ZERO, DVec3::ZERO, 1e-3).is_err());
 }
+
+#[test]
+fn areas_and_boundaries() {
+    use lispcad::geom::surface::{surface_area, surface_boundary};
+    use std::f64::consts::PI;
+    let c = Surface::cylinder(DVec3::ZERO, DVec3::Z, 2.0, 3.0).unwrap();
+    assert_eq!(surface_area(&c, 1e-3).unwrap(), 12.0 * PI);
+    assert_eq!(surface_boundary(&c, 1e-3).unwrap().len(), 2);
+    let p = Surface::plane(vec![
+        DVec3::ZERO,
+        DVec3::new(2.0, 0.0, 0.0),
+        DVec3::new(2.0, 3.0, 0.0),
+    ])
+    .unwrap();
+    assert_eq!(surface_area(&p, 1e-3).unwrap(), 3.0);
+    assert_eq!(surface_boundary(&p, 1e-3).unwrap()[0].points.len(), 3);
+    let s = Surface::sphere(DVec3::ZERO, 1.0).unwrap();
+    assert!(surface_boundary(&s, 1e-3).unwrap().is_empty());
+}

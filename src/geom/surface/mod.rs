@@ -23,7 +23,8 @@ pub use hits::{
 };
 pub use kinds::{Coons, Cylinder, PlaneRegion, Revolve, Ruled, Sphere, Surface, Sweep};
 pub use ops::{
-    arc_surface_hits, curve_surface_hits, segment_surface_hits, surface_intersect, surface_section,
+    arc_surface_hits, curve_surface_hits, segment_surface_hits, surface_area, surface_boundary,
+    surface_intersect, surface_section,
 };
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};

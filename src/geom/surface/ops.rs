@@ -132,3 +132,27 @@ pub fn curve_surface_hits(
     let m: Mesh = mesh_surface(s, chord_tol)?;
     Ok(curve_mesh_hits(curve, &m, chord_tol))
 }
+
+/// Area: exact for cylinders (2πrh), spheres (4πr²) and planar regions (Newell's area); the
+/// mesh's area otherwise (which approaches the surface's from below as `chord_tol` shrinks).
+pub fn surface_area(s: &Surface, chord_tol: f64) -> Result<f64, SurfaceError> {
+    use std::f64::consts::{PI, TAU};
+    Ok(match s {
+        Surface::Cylinder(c) => TAU * c.radius * c.height,
+        Surface::Sphere(sp) => 4.0 * PI * sp.radius * sp.radius,
+        Surface::Plane(p) => 0.5 * super::planar::newell_normal(&p.boundary).length(),
+        _ => mesh_surface(s, chord_tol)?.area(),
+    })
+}
+
+/// The boundary as closed polylines (of the mesh within `chord_tol`; a plane region's own
+/// polygon).
+pub fn surface_boundary(s: &Surface, chord_tol: f64) -> Result<Vec<Polyline3>, SurfaceError> {
+    Ok(match s {
+        Surface::Plane(p) => vec![Polyline3 {
+            points: p.boundary.clone(),
+            closed: true,
+        }],
+        _ => mesh_surface(s, chord_tol)?.boundary(),
+    })
+}
