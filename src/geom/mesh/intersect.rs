@@ -4,7 +4,8 @@
 //!    keeping triangle pairs whose exact boxes overlap (paper 001 step 2).
 //! 2. Plane-side pre-test (paper 002): the corners of Q against P's plane, then P's corners
 //!    against Q's plane, all on one side → no intersection. The signs are exact (Shewchuk's
-//!    orient3d), with a consistent symbolic tie-break for exact zeros ([`side_perturbed`]).
+//!    orient3d); exact zeros (touching, coplanar) are decided by a symbolic translation of one
+//!    mesh ([`side_sos`]), so every decision agrees with one real perturbed configuration.
 //! 3. Exact triangle/triangle: the intersection segment's ends are where an edge of one
 //!    triangle passes through the other (paper 001 step 3: a point is valid only inside the
 //!    facet and on the other facet's edge). An edge `pq` crossing the plane of `rst` passes
@@ -18,8 +19,8 @@
 //! The output is canonicalised by coordinates ([`chain_segments`]), so it does not depend on
 //! triangle or vertex order or on which mesh comes first.
 
-use super::chain::{chain_segments, Polyline3, Segment};
-use super::predicates::side_perturbed;
+use super::chain::{chain_segments, cmp_point, Polyline3, Segment};
+use super::predicates::side_sos;
 use super::Mesh;
 use glam::DVec3;
 use rayon::prelude::*;
@@ -50,6 +51,8 @@ struct Side<'m> {
     id_base: u64,
     /// Distinguishes the mesh in node keys.
     tag: u128,
+    /// Whether this mesh is the symbolically translated one.
+    moving: bool,
 }
 
 impl Side<'_> {
@@ -66,21 +69,44 @@ impl Side<'_> {
 
 /// Like [`intersect_meshes`], also returning the phase counts.
 pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, IntersectStats) {
+    let (pieces, stats) = intersection_pieces(a, b);
+    let segs = pieces.into_iter().map(|p| p.seg).collect();
+    // Crossings through a vertex or an edge/edge touch are found from several (edge, triangle)
+    // keys with the same exact point; they are one node of the curve.
+    (chain_segments(merge_keys_by_point(segs)), stats)
+}
+
+/// One intersecting triangle pair's segment, with where its ends lie on `a`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Piece {
+    pub ta: u32,
+    pub seg: Segment,
+    /// For each end: the edge of `a` (vertex indices) it lies on, or None inside triangle `ta`.
+    pub a_edge: [Option<(u32, u32)>; 2],
+}
+
+/// The segments of every truly intersecting triangle pair (before chaining).
+pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
+    // Which mesh the tie-break translates is chosen from the meshes' contents, not from the
+    // argument order, so swapping the arguments cannot change a degenerate decision.
+    let a_moves = moving_first(a, b);
     let sa = Side {
         mesh: a,
         id_base: 0,
         tag: 0,
+        moving: a_moves,
     };
     let sb = Side {
         mesh: b,
         id_base: B_FLAG,
         tag: 1,
+        moving: !a_moves,
     };
     #[derive(Default)]
     struct Acc {
-        segs: Vec<Segment>,
+        segs: Vec<Piece>,
         plane: usize,
         irregular: usize,
     }
@@ -114,14 +140,35 @@ pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, Inter
         intersecting_pairs: acc.segs.len(),
         irregular_pairs: acc.irregular,
     };
-    (chain_segments(acc.segs), stats)
+    let mut segs = acc.segs;
+    // Deterministic order whatever the thread scheduling.
+    segs.sort_unstable_by_key(|p| (p.ta, p.seg.keys));
+    (segs, stats)
 }
 
 enum PairResult {
     Rejected,
     Miss,
-    Segment(Segment),
+    Segment(Piece),
     Irregular,
+}
+
+/// Whether `a` (rather than `b`) is the mesh the tie-break translates: the one whose smallest
+/// vertex is larger (then more vertices, then more triangles).
+fn moving_first(a: &Mesh, b: &Mesh) -> bool {
+    let min = |m: &Mesh| {
+        m.vertices()
+            .iter()
+            .copied()
+            .min_by(|p, q| cmp_point(*p, *q))
+    };
+    let o = match (min(a), min(b)) {
+        (Some(x), Some(y)) => cmp_point(x, y),
+        _ => std::cmp::Ordering::Equal,
+    };
+    o.then(a.vertices().len().cmp(&b.vertices().len()))
+        .then(a.len().cmp(&b.len()))
+        .is_gt()
 }
 
 /// Node key: which mesh owns the edge, the edge (global ids, ordered), the other's triangle.
@@ -135,25 +182,36 @@ fn pair_segment(sa: &Side, ta: u32, sb: &Side, tb: u32) -> PairResult {
     let (pa, ia, va) = sa.tri(ta);
     let (pb, ib, vb) = sb.tri(tb);
     // Paper 002's pre-test, both ways, with exact signs.
+    let (ma, mb) = (sa.moving, sb.moving);
     let sign_b: [i8; 3] = std::array::from_fn(|j| {
-        side_perturbed([pa[0], pa[1], pa[2], pb[j]], [ia[0], ia[1], ia[2], ib[j]])
+        side_sos(
+            [pa[0], pa[1], pa[2], pb[j]],
+            [ma, ma, ma, mb],
+            [ia[0], ia[1], ia[2], ib[j]],
+        )
     });
     if sign_b[0] == sign_b[1] && sign_b[1] == sign_b[2] {
         return PairResult::Rejected;
     }
     let sign_a: [i8; 3] = std::array::from_fn(|i| {
-        side_perturbed([pb[0], pb[1], pb[2], pa[i]], [ib[0], ib[1], ib[2], ia[i]])
+        side_sos(
+            [pb[0], pb[1], pb[2], pa[i]],
+            [mb, mb, mb, ma],
+            [ib[0], ib[1], ib[2], ia[i]],
+        )
     });
     if sign_a[0] == sign_a[1] && sign_a[1] == sign_a[2] {
         return PairResult::Rejected;
     }
     let mut keys = [0u128; 2];
     let mut pts = [DVec3::ZERO; 2];
+    let mut a_edge = [None; 2];
     let mut k = 0usize;
-    let mut push = |key: u128, p: DVec3, k: &mut usize| {
+    let mut push = |key: u128, p: DVec3, e: Option<(u32, u32)>, k: &mut usize| {
         if *k < 2 {
             keys[*k] = key;
             pts[*k] = p;
+            a_edge[*k] = e;
         }
         *k += 1;
     };
@@ -166,34 +224,54 @@ fn pair_segment(sa: &Side, ta: u32, sb: &Side, tb: u32) -> PairResult {
             if se[i] == se[j] {
                 continue;
             }
-            // Put the edge in canonical (global id) order so the test is the same from both
-            // triangles that share it.
-            let (p, q, ip, iq) = if ie[i] < ie[j] {
+            // Put the edge in coordinate order so the point is the same from both triangles
+            // that share it, whatever the vertex numbering.
+            let (p, q, ip, iq) = if cmp_point(pe[i], pe[j]).then(ie[i].cmp(&ie[j])).is_lt() {
                 (pe[i], pe[j], ie[i], ie[j])
             } else {
                 (pe[j], pe[i], ie[j], ie[i])
             };
-            let s0 = side_perturbed([p, q, pt[0], pt[1]], [ip, iq, it[0], it[1]]);
-            let s1 = side_perturbed([p, q, pt[1], pt[2]], [ip, iq, it[1], it[2]]);
-            let s2 = side_perturbed([p, q, pt[2], pt[0]], [ip, iq, it[2], it[0]]);
+            let (me, mt) = (edge_side.moving, tri_side.moving);
+            let mv = [me, me, mt, mt];
+            let s0 = side_sos([p, q, pt[0], pt[1]], mv, [ip, iq, it[0], it[1]]);
+            let s1 = side_sos([p, q, pt[1], pt[2]], mv, [ip, iq, it[1], it[2]]);
+            let s2 = side_sos([p, q, pt[2], pt[0]], mv, [ip, iq, it[2], it[0]]);
             if s0 == s1 && s1 == s2 {
                 let key = node_key(edge_side.tag, ve[i], ve[j], tt);
-                let _ = tri_side;
-                push(key, edge_plane_point(p, q, pt), &mut k);
+                let e = (edge_side.tag == 0).then_some((ve[i], ve[j]));
+                push(key, edge_plane_point(p, q, pt), e, &mut k);
             }
         }
     }
     match k {
         0 => PairResult::Miss,
-        2 => PairResult::Segment(Segment { keys, points: pts }),
+        2 => PairResult::Segment(Piece {
+            ta,
+            seg: Segment { keys, points: pts },
+            a_edge,
+        }),
         _ => PairResult::Irregular,
     }
 }
 
-/// Where the edge `p q` (in canonical order) meets the plane of triangle `t`; computed from
+/// Where the edge `p q` (in coordinate order) meets the plane of triangle `t`; computed from
 /// these arguments only, so every pair that finds this crossing gets the same bits.
 #[inline]
 fn edge_plane_point(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> DVec3 {
+    // Start the triangle at its smallest corner (a rotation keeps the orientation) so the
+    // plane is computed the same whatever the stored corner order.
+    let k = if cmp_point(t[0], t[1]).is_le() {
+        if cmp_point(t[0], t[2]).is_le() {
+            0
+        } else {
+            2
+        }
+    } else if cmp_point(t[1], t[2]).is_le() {
+        1
+    } else {
+        2
+    };
+    let t = [t[k], t[(k + 1) % 3], t[(k + 2) % 3]];
     let n = (t[1] - t[0]).cross(t[2] - t[0]);
     let dp = n.dot(p - t[0]);
     let dq = n.dot(q - t[0]);
@@ -209,4 +287,37 @@ fn edge_plane_point(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> DVec3 {
     } else {
         (p + q) * 0.5
     }
+}
+
+/// Re-keys segment ends so that ends with bit-identical points share one key.
+pub(crate) fn merge_keys_by_point(mut segs: Vec<Segment>) -> Vec<Segment> {
+    let mut ends: Vec<(DVec3, u128)> = segs
+        .iter()
+        .flat_map(|s| [(s.points[0], s.keys[0]), (s.points[1], s.keys[1])])
+        .collect();
+    ends.sort_unstable_by(|a, b| cmp_point(a.0, b.0).then(a.1.cmp(&b.1)));
+    let mut canon: std::collections::HashMap<u128, u128> = std::collections::HashMap::new();
+    let mut i = 0;
+    while i < ends.len() {
+        let mut j = i + 1;
+        while j < ends.len() && cmp_point(ends[j].0, ends[i].0).is_eq() {
+            j += 1;
+        }
+        if ends[j - 1].1 != ends[i].1 {
+            for e in &ends[i..j] {
+                canon.insert(e.1, ends[i].1);
+            }
+        }
+        i = j;
+    }
+    if !canon.is_empty() {
+        for s in segs.iter_mut() {
+            for k in s.keys.iter_mut() {
+                if let Some(&c) = canon.get(k) {
+                    *k = c;
+                }
+            }
+        }
+    }
+    segs
 }

@@ -236,7 +236,11 @@ fn weld_exact(n: usize, corner: impl Fn(usize) -> DVec3) -> (Vec<DVec3>, Vec<u32
 
 /// Tolerance welding: each vertex, in order, joins the first earlier kept vertex within `tol`
 /// (searched in the 27 neighbouring cells of a grid of cell size `tol`).
-fn weld_tolerance_grid(vertices: Vec<DVec3>, idx: Vec<u32>, tol: f64) -> (Vec<DVec3>, Vec<u32>) {
+pub(crate) fn weld_tolerance_grid(
+    vertices: Vec<DVec3>,
+    idx: Vec<u32>,
+    tol: f64,
+) -> (Vec<DVec3>, Vec<u32>) {
     use std::collections::HashMap;
     let cell = |p: DVec3| -> [i64; 3] {
         let q = (p / tol).floor();

@@ -13,7 +13,7 @@ mod error;
 mod extend;
 mod intersect;
 mod io;
-mod predicates;
+pub mod predicates;
 mod primitives;
 mod section;
 mod trim;
@@ -22,15 +22,16 @@ pub use adjacency::{Adjacency, NO_NEIGHBOUR};
 pub use bvh::{Aabb, Bvh};
 pub use chain::{chain_segments, Polyline3};
 pub use error::MeshError;
-// pub use extend::{corners, extend};
+pub use extend::{corners, extend};
 pub use intersect::{intersect_meshes, intersect_meshes_with_stats, IntersectStats};
+pub(crate) use io::weld_tolerance_grid;
 pub use io::{
     read_mesh, read_obj, read_stl, write_mesh, write_obj, write_stl_ascii, write_stl_binary,
     StlRead,
 };
 pub use primitives::icosphere;
 pub use section::section;
-// pub use trim::trim;
+pub use trim::{trim, Trimmed};
 
 use glam::DVec3;
 use std::sync::OnceLock;

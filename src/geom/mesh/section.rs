@@ -7,10 +7,10 @@
 //! crossing that ends at an on-plane vertex is keyed as that vertex), a plane along an edge
 //! gives that edge once (only from the triangle on the negative side), a triangle lying in the
 //! plane gives nothing, and no piece is duplicated. Crossing points are computed from the edge's
-//! vertices in index order, so both triangles of an edge produce the same point bit for bit, and
+//! vertices in coordinate order, so both triangles of an edge produce the same point bit for bit, and
 //! chaining is by these keys (paper 001 step 5, the line through vertices or along edges).
 
-use super::chain::{chain_segments, Polyline3, Segment};
+use super::chain::{chain_segments, cmp_point, Polyline3, Segment};
 use super::{Mesh, MeshError};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -51,7 +51,12 @@ pub fn section(mesh: &Mesh, point: DVec3, normal: DVec3) -> Result<Vec<Polyline3
         for i in 0..3 {
             let j = (i + 1) % 3;
             if neg[i] != neg[j] {
-                let (a, b, da, db) = if tri[i] < tri[j] {
+                // Interpolate from the lexicographically smaller end so the point depends on
+                // the edge's coordinates only (not on vertex numbering or triangle order).
+                let first = cmp_point(verts[tri[i] as usize], verts[tri[j] as usize])
+                    .then(tri[i].cmp(&tri[j]))
+                    .is_lt();
+                let (a, b, da, db) = if first {
                     (tri[i], tri[j], d[i], d[j])
                 } else {
                     (tri[j], tri[i], d[j], d[i])

@@ -1,0 +1,61 @@
+//! Mesh operations on the benchmark pair of bench/surface: icospheres of 1,310,720 triangles,
+//! B = A rotated 0.3 rad about (1, 2, 3) and moved by (0.5, 0.3, 0.2).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use lispcad::geom::mesh::{icosphere, intersect_meshes, section, Bvh, Mesh};
+use lispcad::geom::{DMat4, DVec3};
+use std::hint::black_box;
+
+fn pair(level: u32) -> (Mesh, Mesh) {
+    let a = icosphere(DVec3::ZERO, 1.0, level);
+    let m = DMat4::from_translation(DVec3::new(0.5, 0.3, 0.2))
+        * DMat4::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.3);
+    let b = a.map_vertices(|p| m.transform_point3(p)).unwrap();
+    (a, b)
+}
+
+fn bench(c: &mut Criterion) {
+    let (a, b) = pair(8);
+    let mut g = c.benchmark_group("icosphere8");
+    g.sample_size(10);
+    g.bench_function("section_scan", |bch| {
+        bch.iter(|| {
+            section(
+                black_box(&a),
+                DVec3::new(0.0, 0.0, 0.1),
+                DVec3::new(0.1, 0.2, 1.0),
+            )
+            .unwrap()
+        })
+    });
+    g.bench_function("bvh_build", |bch| bch.iter(|| Bvh::build(black_box(&a))));
+    g.bench_function("intersect_with_bvh_build", |bch| {
+        bch.iter(|| {
+            // Fresh copies so the cached hierarchies are rebuilt every time.
+            let (a2, b2) = (
+                a.map_vertices(|p| p).unwrap(),
+                b.map_vertices(|p| p).unwrap(),
+            );
+            intersect_meshes(&a2, &b2)
+        })
+    });
+    a.bvh();
+    b.bvh();
+    g.bench_function("section_bvh", |bch| {
+        bch.iter(|| {
+            section(
+                black_box(&a),
+                DVec3::new(0.0, 0.0, 0.1),
+                DVec3::new(0.1, 0.2, 1.0),
+            )
+            .unwrap()
+        })
+    });
+    g.bench_function("intersect_cached_bvh", |bch| {
+        bch.iter(|| intersect_meshes(black_box(&a), black_box(&b)))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

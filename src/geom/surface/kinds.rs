@@ -1,0 +1,288 @@
+//! The surface kinds and their evaluation at (u, v) in [0, 1]².
+
+use super::error::{check_point, check_positive, check_unit, SurfaceError};
+use super::sweep::{rotation_minimizing_frames, Frame};
+use super::{CurveRef, ParamSurface};
+use crate::geom::frame::arbitrary_axis;
+use glam::{DQuat, DVec3};
+use std::f64::consts::TAU;
+
+/// Ruled surface (直纹面): `P(u, v) = (1 − v)·c1(u) + v·c2(u)`.
+#[derive(Clone)]
+pub struct Ruled {
+    pub c1: CurveRef,
+    pub c2: CurveRef,
+}
+
+/// Surface of revolution (旋转面): the profile at `u` turned by `v·angle` about the axis
+/// (right-hand rule about `axis_dir`).
+#[derive(Clone)]
+pub struct Revolve {
+    pub profile: CurveRef,
+    pub axis_point: DVec3,
+    pub axis_dir: DVec3,
+    pub angle: f64,
+}
+
+/// Swept surface (导动面): the profile carried along the guide by a rotation-minimising frame
+/// (double reflection, Wang et al. 2008). The profile is placed as drawn relative to the
+/// guide's start; `P(u, v) = g(v) + F(v)·F(0)⁻¹·(profile(u) − g(0))`.
+#[derive(Clone)]
+pub struct Sweep {
+    pub profile: CurveRef,
+    pub guide: CurveRef,
+    frames: Vec<Frame>,
+}
+
+/// Boundary surface (边界面): the bilinearly blended Coons patch of four curves that run head to
+/// tail around the patch (each is reversed if needed to meet the previous one's end).
+#[derive(Clone)]
+pub struct Coons {
+    pub curves: [CurveRef; 4],
+    reversed: [bool; 4],
+}
+
+/// A planar region bounded by a closed polygon.
+#[derive(Debug, Clone)]
+pub struct PlaneRegion {
+    /// Boundary points (no repeated closing point).
+    pub boundary: Vec<DVec3>,
+    /// Unit normal (Newell's method, so it follows the boundary's winding).
+    pub normal: DVec3,
+}
+
+/// Right circular cylinder: base centre, unit axis, radius, height (along the axis from the base).
+#[derive(Debug, Clone, Copy)]
+pub struct Cylinder {
+    pub base: DVec3,
+    pub axis: DVec3,
+    pub radius: f64,
+    pub height: f64,
+}
+
+/// Sphere: centre and radius.
+#[derive(Debug, Clone, Copy)]
+pub struct Sphere {
+    pub center: DVec3,
+    pub radius: f64,
+}
+
+/// Every surface kind.
+#[derive(Clone)]
+pub enum Surface {
+    Ruled(Ruled),
+    Revolve(Revolve),
+    Sweep(Sweep),
+    Coons(Coons),
+    Plane(PlaneRegion),
+    Cylinder(Cylinder),
+    Sphere(Sphere),
+}
+
+impl Surface {
+    /// A ruled surface between two curves.
+    pub fn ruled(c1: CurveRef, c2: CurveRef) -> Surface {
+        Surface::Ruled(Ruled { c1, c2 })
+    }
+
+    /// A surface of revolution; `angle` in (0, 2π].
+    pub fn revolve(
+        profile: CurveRef,
+        axis_point: DVec3,
+        axis_dir: DVec3,
+        angle: f64,
+    ) -> Result<Surface, SurfaceError> {
+        let axis_dir = check_unit("axis-dir", axis_dir)?;
+        let axis_point = check_point("axis-point", axis_point)?;
+        if !(angle > 0.0 && angle <= TAU + 1e-12) {
+            return Err(SurfaceError::BadParameter {
+                parameter: "angle",
+                limit: "in (0, 2π]",
+                value: angle,
+            });
+        }
+        Ok(Surface::Revolve(Revolve {
+            profile,
+            axis_point,
+            axis_dir,
+            angle: angle.min(TAU),
+        }))
+    }
+
+    /// A profile swept along a guide.
+    pub fn sweep(profile: CurveRef, guide: CurveRef) -> Result<Surface, SurfaceError> {
+        let frames = rotation_minimizing_frames(guide.as_ref(), 512)?;
+        Ok(Surface::Sweep(Sweep {
+            profile,
+            guide,
+            frames,
+        }))
+    }
+
+    /// A Coons patch from four boundary curves given in order around the patch.
+    pub fn boundary(curves: [CurveRef; 4]) -> Result<Surface, SurfaceError> {
+        let mut reversed = [false; 4];
+        let mut end = curves[0].end();
+        for i in 1..4 {
+            let (s, e) = (curves[i].start(), curves[i].end());
+            reversed[i] = e.distance(end) < s.distance(end);
+            end = if reversed[i] { s } else { e };
+        }
+        // The first curve may itself be backwards relative to the second.
+        let (s0, e0) = (curves[0].start(), curves[0].end());
+        let c1s = if reversed[1] {
+            curves[1].end()
+        } else {
+            curves[1].start()
+        };
+        if s0.distance(c1s) < e0.distance(c1s) {
+            reversed[0] = true;
+            let mut end = s0;
+            for i in 1..4 {
+                let (s, e) = (curves[i].start(), curves[i].end());
+                reversed[i] = e.distance(end) < s.distance(end);
+                end = if reversed[i] { s } else { e };
+            }
+        }
+        Ok(Surface::Coons(Coons { curves, reversed }))
+    }
+
+    /// A planar region bounded by the closed polygon `boundary` (closing point optional).
+    pub fn plane(boundary: Vec<DVec3>) -> Result<Surface, SurfaceError> {
+        let mut b = boundary;
+        if b.len() > 1 && b[0] == b[b.len() - 1] {
+            b.pop();
+        }
+        if b.len() < 3 {
+            return Err(SurfaceError::BadParameter {
+                parameter: "boundary point count",
+                limit: "at least 3",
+                value: b.len() as f64,
+            });
+        }
+        if b.iter().any(|p| !p.is_finite()) {
+            return Err(SurfaceError::Invalid(
+                "boundary points must be finite".into(),
+            ));
+        }
+        let normal = super::planar::newell_normal(&b);
+        let normal = check_unit("boundary's area (Newell normal)", normal)?;
+        Ok(Surface::Plane(PlaneRegion {
+            boundary: b,
+            normal,
+        }))
+    }
+
+    /// A cylinder.
+    pub fn cylinder(
+        base: DVec3,
+        axis: DVec3,
+        radius: f64,
+        height: f64,
+    ) -> Result<Surface, SurfaceError> {
+        Ok(Surface::Cylinder(Cylinder {
+            base: check_point("base-center", base)?,
+            axis: check_unit("axis-dir", axis)?,
+            radius: check_positive("radius", radius)?,
+            height: check_positive("height", height)?,
+        }))
+    }
+
+    /// A sphere.
+    pub fn sphere(center: DVec3, radius: f64) -> Result<Surface, SurfaceError> {
+        Ok(Surface::Sphere(Sphere {
+            center: check_point("center", center)?,
+            radius: check_positive("radius", radius)?,
+        }))
+    }
+
+    /// Whether the u direction closes on itself (u = 0 and u = 1 meet).
+    pub(crate) fn name(&self) -> &'static str {
+        match self {
+            Surface::Ruled(_) => "ruled",
+            Surface::Revolve(_) => "revolve",
+            Surface::Sweep(_) => "sweep",
+            Surface::Coons(_) => "boundary",
+            Surface::Plane(_) => "plane",
+            Surface::Cylinder(_) => "cylinder",
+            Surface::Sphere(_) => "sphere",
+        }
+    }
+}
+
+impl std::fmt::Debug for Surface {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Surface::{}", self.name())
+    }
+}
+
+impl Cylinder {
+    /// The OCS axes of the base circle (DXF arbitrary-axis frame of the axis).
+    pub fn frame(&self) -> (DVec3, DVec3) {
+        arbitrary_axis(self.axis)
+    }
+}
+
+impl ParamSurface for Surface {
+    fn eval(&self, u: f64, v: f64) -> DVec3 {
+        match self {
+            Surface::Ruled(r) => r.c1.eval(u).lerp(r.c2.eval(u), v),
+            Surface::Revolve(r) => {
+                let p = r.profile.eval(u) - r.axis_point;
+                r.axis_point + DQuat::from_axis_angle(r.axis_dir, v * r.angle) * p
+            }
+            Surface::Sweep(s) => {
+                let f0 = &s.frames[0];
+                let d = s.profile.eval(u) - s.guide.eval(0.0);
+                let local = DVec3::new(d.dot(f0.t), d.dot(f0.r), d.dot(f0.s));
+                let f = super::sweep::frame_at(&s.frames, v);
+                s.guide.eval(v) + f.t * local.x + f.r * local.y + f.s * local.z
+            }
+            Surface::Coons(c) => {
+                let e = |i: usize, t: f64| {
+                    let t = if c.reversed[i] { 1.0 - t } else { t };
+                    c.curves[i].eval(t)
+                };
+                // Bottom c0(u), right c1(v), top c2 runs backwards in u, left c3 backwards in v.
+                let bottom = e(0, u);
+                let right = e(1, v);
+                let top = e(2, 1.0 - u);
+                let left = e(3, 1.0 - v);
+                let p00 = e(0, 0.0);
+                let p10 = e(0, 1.0);
+                let p11 = e(2, 0.0);
+                let p01 = e(2, 1.0);
+                (1.0 - v) * bottom + v * top + (1.0 - u) * left + u * right
+                    - ((1.0 - u) * (1.0 - v) * p00
+                        + u * (1.0 - v) * p10
+                        + (1.0 - u) * v * p01
+                        + u * v * p11)
+            }
+            Surface::Plane(p) => {
+                // Not parametric over the unit square; map (u, v) into the boundary's box.
+                let (x, y) = arbitrary_axis(p.normal);
+                let o = p.boundary[0];
+                let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+                for q in &p.boundary {
+                    let d = *q - o;
+                    x0 = x0.min(d.dot(x));
+                    x1 = x1.max(d.dot(x));
+                    y0 = y0.min(d.dot(y));
+                    y1 = y1.max(d.dot(y));
+                }
+                o + x * (x0 + u * (x1 - x0)) + y * (y0 + v * (y1 - y0))
+            }
+            Surface::Cylinder(c) => {
+                let (x, y) = c.frame();
+                let a = TAU * u;
+                c.base + c.radius * (a.cos() * x + a.sin() * y) + c.axis * (v * c.height)
+            }
+            Surface::Sphere(s) => {
+                let lon = TAU * u;
+                let lat = std::f64::consts::PI * (v - 0.5);
+                s.center
+                    + s.radius * DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin())
+            }
+        }
+    }
+}

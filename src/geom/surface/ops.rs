@@ -1,0 +1,158 @@
+//! Operations on parametric surfaces: closed forms where paper 002 gives them, the discrete
+//! surface (tessellated within `chord_tol`) otherwise.
+
+use super::error::{check_positive, SurfaceError};
+use super::hits::{
+    circle_plane, curve_mesh_hits, cylinder_section, point_in_polygon, segment_cylinder, ArcData,
+    MeshHit,
+};
+use super::kinds::Surface;
+use super::tessellate::mesh_surface;
+use crate::geom::mesh::{intersect_meshes, section, Mesh, Polyline3};
+use crate::geom::ParamCurve;
+use glam::DVec3;
+
+/// Plane section of a surface. A cylinder is cut exactly ([`cylinder_section`]: circle,
+/// ellipse or rulings, sampled within `chord_tol`); other kinds through their mesh.
+pub fn surface_section(
+    s: &Surface,
+    plane_point: DVec3,
+    plane_normal: DVec3,
+    chord_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let tol = check_positive("chord-tol", chord_tol)?;
+    match s {
+        Surface::Cylinder(c) => {
+            if plane_normal.length() == 0.0 || !plane_normal.is_finite() || !plane_point.is_finite()
+            {
+                return Err(SurfaceError::Invalid(
+                    "plane point and normal must be finite, the normal non-zero".into(),
+                ));
+            }
+            Ok(cylinder_section(c, plane_point, plane_normal, tol))
+        }
+        _ => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
+    }
+}
+
+/// Intersection curves of two surfaces, through their meshes.
+pub fn surface_intersect(
+    a: &Surface,
+    b: &Surface,
+    chord_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let (ma, mb) = (mesh_surface(a, chord_tol)?, mesh_surface(b, chord_tol)?);
+    Ok(intersect_meshes(&ma, &mb))
+}
+
+/// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for
+/// cylinders (paper 002's line/cylinder), planar regions (line/plane + point in polygon) and
+/// spheres; through the mesh otherwise.
+pub fn segment_surface_hits(
+    p0: DVec3,
+    p1: DVec3,
+    s: &Surface,
+    tol: f64,
+) -> Result<Vec<(f64, DVec3)>, SurfaceError> {
+    let tol = check_positive("tolerance", tol)?;
+    Ok(match s {
+        Surface::Cylinder(c) => segment_cylinder(p0, p1, c, tol)
+            .into_iter()
+            .map(|h| (h.t, h.point))
+            .collect(),
+        Surface::Plane(p) => p.segment_hit(p0, p1, tol).into_iter().collect(),
+        Surface::Sphere(sp) => {
+            // |p0 + v t − c|² = r²: a t² + 2 b t + c = 0.
+            let v = p1 - p0;
+            let w = p0 - sp.center;
+            let a = v.dot(v);
+            if a == 0.0 {
+                return Ok(Vec::new());
+            }
+            let b = v.dot(w);
+            let c = w.dot(w) - sp.radius * sp.radius;
+            let disc = b * b - a * c;
+            // Tangent when the line's distance from the centre is within tol of r.
+            let d2 = (w.dot(w) - b * b / a).max(0.0);
+            let mut ts = if (d2.sqrt() - sp.radius).abs() <= tol {
+                vec![-b / a]
+            } else if disc < 0.0 {
+                vec![]
+            } else {
+                let q = -(b + b.signum() * disc.sqrt());
+                let (r1, r2) = if q != 0.0 { (q / a, c / q) } else { (0.0, 0.0) };
+                vec![r1.min(r2), r1.max(r2)]
+            };
+            ts.retain(|t| (0.0..=1.0).contains(t));
+            ts.into_iter().map(|t| (t, p0 + v * t)).collect()
+        }
+        _ => {
+            let m = mesh_surface(s, tol)?;
+            super::hits::polyline_mesh_hits(&[p0, p1], &m)
+                .into_iter()
+                .map(|h| (h.t, h.point))
+                .collect()
+        }
+    })
+}
+
+/// Where a circle or arc meets a surface: closed form for planar regions (paper 002's
+/// circle/plane, then point in polygon); otherwise the arc sampled within `tol` against the mesh.
+pub fn arc_surface_hits(arc: &ArcData, s: &Surface, tol: f64) -> Result<Vec<DVec3>, SurfaceError> {
+    let tol = check_positive("tolerance", tol)?;
+    match s {
+        Surface::Plane(p) => Ok(circle_plane(arc, p.boundary[0], p.normal, tol)
+            .into_iter()
+            .filter(|q| point_in_polygon(*q, &p.boundary, p.normal, tol).is_in())
+            .collect()),
+        _ => {
+            struct ArcCurve<'a>(&'a ArcData);
+            impl ParamCurve for ArcCurve<'_> {
+                fn eval(&self, t: f64) -> DVec3 {
+                    let a = self.0;
+                    let sweep = (a.end_angle - a.start_angle).clamp(0.0, std::f64::consts::TAU);
+                    a.point(a.start_angle + t * sweep)
+                }
+            }
+            let m = mesh_surface(s, tol)?;
+            Ok(curve_mesh_hits(&ArcCurve(arc), &m, tol)
+                .into_iter()
+                .map(|h| h.point)
+                .collect())
+        }
+    }
+}
+
+/// Any curve against a surface through its mesh (see [`curve_mesh_hits`]).
+pub fn curve_surface_hits(
+    curve: &dyn ParamCurve,
+    s: &Surface,
+    chord_tol: f64,
+) -> Result<Vec<MeshHit>, SurfaceError> {
+    let m: Mesh = mesh_surface(s, chord_tol)?;
+    Ok(curve_mesh_hits(curve, &m, chord_tol))
+}
+
+/// Area: exact for cylinders (2πrh), spheres (4πr²) and planar regions (Newell's area); the
+/// mesh's area otherwise (which approaches the surface's from below as `chord_tol` shrinks).
+pub fn surface_area(s: &Surface, chord_tol: f64) -> Result<f64, SurfaceError> {
+    use std::f64::consts::{PI, TAU};
+    Ok(match s {
+        Surface::Cylinder(c) => TAU * c.radius * c.height,
+        Surface::Sphere(sp) => 4.0 * PI * sp.radius * sp.radius,
+        Surface::Plane(p) => 0.5 * super::planar::newell_normal(&p.boundary).length(),
+        _ => mesh_surface(s, chord_tol)?.area(),
+    })
+}
+
+/// The boundary as closed polylines (of the mesh within `chord_tol`; a plane region's own
+/// polygon).
+pub fn surface_boundary(s: &Surface, chord_tol: f64) -> Result<Vec<Polyline3>, SurfaceError> {
+    Ok(match s {
+        Surface::Plane(p) => vec![Polyline3 {
+            points: p.boundary.clone(),
+            closed: true,
+        }],
+        _ => mesh_surface(s, chord_tol)?.boundary(),
+    })
+}

@@ -1,0 +1,112 @@
+//! Trimming: the parts add up to the whole, share the cut exactly, and the keep point picks
+//! the side.
+
+use lispcad::geom::mesh::{icosphere, trim, Mesh};
+use lispcad::geom::{DMat4, DVec3};
+
+fn grid(n: usize, size: f64, z: f64) -> Mesh {
+    let mut v = Vec::new();
+    for j in 0..=n {
+        for i in 0..=n {
+            v.push(DVec3::new(
+                -size + 2.0 * size * i as f64 / n as f64,
+                -size + 2.0 * size * j as f64 / n as f64,
+                z,
+            ));
+        }
+    }
+    let mut t = Vec::new();
+    let w = (n + 1) as u32;
+    for j in 0..n as u32 {
+        for i in 0..n as u32 {
+            let a = j * w + i;
+            t.push([a, a + 1, a + w + 1]);
+            t.push([a, a + w + 1, a + w]);
+        }
+    }
+    Mesh::new(v, t).unwrap()
+}
+
+fn sorted_points(m: &Mesh) -> Vec<[u64; 3]> {
+    let mut pts: Vec<[u64; 3]> = m
+        .boundary()
+        .iter()
+        .flat_map(|l| l.points.clone())
+        .map(|p| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+        .collect();
+    pts.sort_unstable();
+    pts
+}
+
+fn check_split(whole: &Mesh, cutter: &Mesh, keep: DVec3) -> (Mesh, Mesh) {
+    let r = trim(whole, cutter, keep).unwrap();
+    assert!(r.split_facets > 0);
+    let sum = r.kept.area() + r.removed.area();
+    assert!(
+        (sum - whole.area()).abs() <= 1e-12 * whole.area(),
+        "{sum} vs {}",
+        whole.area()
+    );
+    (r.kept, r.removed)
+}
+
+#[test]
+fn sphere_cut_by_a_plane_gives_cap_and_rest_sharing_the_cut() {
+    let s = icosphere(DVec3::ZERO, 1.0, 3);
+    let cutter = grid(3, 2.0, 0.3);
+    let (cap, rest) = check_split(&s, &cutter, DVec3::new(0.0, 0.0, 2.0));
+    // The cap is the smaller part, above the plane.
+    assert!(cap.area() < rest.area());
+    assert!(cap.vertices().iter().all(|p| p.z >= 0.3 - 1e-12));
+    assert!(rest.vertices().iter().all(|p| p.z <= 0.3 + 1e-12));
+    let (cb, rb) = (cap.boundary(), rest.boundary());
+    assert_eq!(cb.len(), 1);
+    assert_eq!(rb.len(), 1);
+    // The same cut vertices, bit for bit.
+    assert_eq!(sorted_points(&cap), sorted_points(&rest));
+    // The analytic cap area 2πrh with h = 0.7, within the tessellation error.
+    let exact = 2.0 * std::f64::consts::PI * 0.7;
+    assert!((cap.area() - exact).abs() < 0.02 * exact);
+    // Keeping the other side swaps the parts.
+    let r = trim(&s, &cutter, DVec3::new(0.0, 0.0, -2.0)).unwrap();
+    assert!((r.kept.area() - rest.area()).abs() < 1e-12);
+}
+
+#[test]
+fn plane_cut_by_a_sphere_gives_a_disc_with_a_hole_partner() {
+    let g = grid(10, 2.0, 0.1);
+    let m = DMat4::from_axis_angle(DVec3::new(0.3, 0.1, 1.0).normalize(), 0.2);
+    let s = icosphere(DVec3::ZERO, 1.0, 3)
+        .map_vertices(|p| m.transform_point3(p))
+        .unwrap();
+    let (disc, outer) = check_split(&g, &s, DVec3::new(0.0, 0.0, 0.1));
+    assert_eq!(disc.boundary().len(), 1);
+    assert_eq!(outer.boundary().len(), 2);
+    let r2 = 1.0 - 0.01;
+    assert!((disc.area() - std::f64::consts::PI * r2).abs() < 0.03);
+}
+
+#[test]
+fn cut_through_mesh_vertices_and_along_edges() {
+    // The plane z = 0 runs through icosphere vertices and along its edges.
+    let s = icosphere(DVec3::ZERO, 1.0, 2);
+    let cutter = grid(4, 2.0, 0.0);
+    let r = trim(&s, &cutter, DVec3::new(0.0, 0.0, 3.0)).unwrap();
+    let sum = r.kept.area() + r.removed.area();
+    assert!((sum - s.area()).abs() <= 1e-12 * s.area());
+    assert!(
+        (r.kept.area() - r.removed.area()).abs() < 1e-9,
+        "symmetric halves"
+    );
+    assert_eq!(r.kept.boundary().len(), 1);
+    assert_eq!(sorted_points(&r.kept), sorted_points(&r.removed));
+}
+
+#[test]
+fn a_cutter_that_misses_keeps_everything() {
+    let s = icosphere(DVec3::ZERO, 1.0, 1);
+    let r = trim(&s, &grid(2, 1.0, 5.0), DVec3::ZERO).unwrap();
+    assert_eq!(r.kept.len(), s.len());
+    assert!(r.removed.is_empty());
+    assert!(trim(&s, &grid(2, 1.0, 5.0), DVec3::NAN).is_err());
+}
