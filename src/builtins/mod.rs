@@ -4,8 +4,10 @@
 
 use crate::lang::{Builtin, Interp};
 
+pub mod command;
 pub mod control;
 pub mod drawing;
+pub mod entities;
 pub mod format;
 pub mod geometry;
 pub mod io;
@@ -35,6 +37,8 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Surfaces and meshes", surfaces::BUILTINS),
         ("Eyeglass temple", temple::BUILTINS),
         ("Drawing and output", drawing::BUILTINS),
+        ("Entities, selection sets and tables", entities::BUILTINS),
+        ("Commands", command::BUILTINS),
         ("System", system::BUILTINS),
     ]
 }

@@ -1,0 +1,3 @@
+//! placeholder
+use crate::lang::Builtin;
+pub static BUILTINS: &[Builtin] = &[];
