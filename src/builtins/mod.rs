@@ -46,6 +46,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
 /// Per-interpreter set-up a library area needs beyond its functions (system variables...).
 pub fn init(it: &mut Interp) {
     system::init(it);
+    command::init(it);
 }
 
 /// Finds a builtin's descriptor by name (case-insensitive).
