@@ -4,8 +4,10 @@
 
 use crate::lang::{Builtin, Interp};
 
+pub mod command;
 pub mod control;
 pub mod drawing;
+pub mod entities;
 pub mod format;
 pub mod geom2d;
 pub mod geometry;
@@ -37,6 +39,8 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Surfaces and meshes", surfaces::BUILTINS),
         ("Eyeglass temple", temple::BUILTINS),
         ("Drawing and output", drawing::BUILTINS),
+        ("Entities, selection sets and tables", entities::BUILTINS),
+        ("Commands", command::BUILTINS),
         ("System", system::BUILTINS),
     ]
 }
@@ -44,6 +48,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
 /// Per-interpreter set-up a library area needs beyond its functions (system variables...).
 pub fn init(it: &mut Interp) {
     system::init(it);
+    command::init(it);
 }
 
 /// Finds a builtin's descriptor by name (case-insensitive).

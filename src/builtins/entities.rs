@@ -1,0 +1,232 @@
+//! AutoLISP's entity interface on the drawing model: entity names (ENAME), selection sets
+//! (PICKSET), `entmake`/`entget`/`entmod`/`entdel`/`entlast`/`entnext`/`handent`, `ssget "X"`
+//! with filter lists, the `ss...` functions, and `tblsearch`/`tblnext`.
+//!
+//! An entity name is the entity's handle (`<Entity name: 1a2b>`), so names stay valid across
+//! deletion and undeletion as in AutoCAD. A POLYLINE is one entity of the drawing; its VERTEX and
+//! SEQEND sub-entities are named by the polyline's handle plus a sub-index, so the classic
+//! `entnext` walk over vertices works.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::fmt;
+
+use crate::builtin;
+use crate::lang::builtin::{bad_arg, Builtin};
+use crate::lang::error::{err, Exn, LResult};
+use crate::lang::value::Object;
+use crate::lang::{Interp, Value};
+use crate::output::{Drawing, EntityKind};
+
+#[path = "entities/dxf_list.rs"]
+pub mod dxf_list;
+#[path = "entities/make.rs"]
+pub mod make;
+#[path = "entities/select.rs"]
+pub mod select;
+#[path = "entities/tables.rs"]
+pub mod tables;
+
+pub static BUILTINS: &[Builtin] = &[
+    builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER table record) from a DXF association list; returns the list, or nil when a required group is missing or the data is invalid.", 0, 1, make::entmake),
+    builtin!("entget", "(entget ename [applist])", "The DXF association list of an entity (nil if deleted).", 1, 2, entget),
+    builtin!("entmod", "(entmod dxf-list)", "Modifies the entity named by the list's -1 group (groups absent from the list keep their values); returns the list or nil.", 1, 1, make::entmod),
+    builtin!("entupd", "(entupd ename)", "Accepted for compatibility (the drawing is always up to date); returns ename.", 1, 1, entupd),
+    builtin!("entdel", "(entdel ename)", "Deletes an entity, or restores it when it is deleted; returns ename.", 1, 1, entdel),
+    builtin!("entlast", "(entlast)", "The name of the last live entity, or nil.", 0, 0, entlast),
+    builtin!("entnext", "(entnext [ename])", "The first entity, or the one after ename (walking a POLYLINE's VERTEX and SEQEND sub-entities); nil at the end.", 0, 1, entnext),
+    builtin!("handent", "(handent handle)", "The entity name for a handle string, or nil.", 1, 1, handent),
+    builtin!("ssget", "(ssget [mode] [pt1 [pt2]] [filter])", "A selection set: mode \"X\" (all, with an optional filter list), \"A\", \"L\" (last), \"P\" (previous); nil when nothing matches. Interactive modes are an error in a headless run.", 0, 4, select::ssget),
+    builtin!("sslength", "(sslength ss)", "The number of entities in a selection set.", 1, 1, select::sslength),
+    builtin!("ssname", "(ssname ss index)", "The entity at index (from 0) in a selection set, or nil.", 2, 2, select::ssname),
+    builtin!("ssadd", "(ssadd [ename [ss]])", "A new empty set, a new set with ename, or ss with ename added (returns ss).", 0, 2, select::ssadd),
+    builtin!("ssdel", "(ssdel ename ss)", "Removes ename from ss; returns ss, or nil if it was not there.", 2, 2, select::ssdel),
+    builtin!("ssmemb", "(ssmemb ename ss)", "ename if it is in ss, else nil.", 2, 2, select::ssmemb),
+    builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a LAYER, LTYPE or STYLE table entry as a DXF list, or nil.", 2, 3, tables::tblsearch),
+    builtin!("tblnext", "(tblnext table [rewind])", "The next record of a table (the first with rewind), or nil at the end.", 1, 2, tables::tblnext),
+];
+
+/// An entity name: a handle, plus a sub-index for a POLYLINE's VERTEX (1..=n) and SEQEND
+/// (n + 1) sub-entities (0 = the entity itself).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Ename {
+    pub handle: u64,
+    pub sub: u32,
+}
+
+impl Object for Ename {
+    fn type_name(&self) -> &'static str {
+        "ENAME"
+    }
+    fn print(&self, f: &mut dyn fmt::Write) -> fmt::Result {
+        if self.sub == 0 {
+            write!(f, "<Entity name: {:x}>", self.handle)
+        } else {
+            write!(f, "<Entity name: {:x}.{}>", self.handle, self.sub)
+        }
+    }
+    fn equal(&self, other: &dyn Object) -> bool {
+        other.as_any().downcast_ref::<Ename>() == Some(self)
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+/// A selection set: entity handles in selection order. Shared and mutable, as AutoLISP's
+/// `ssadd`/`ssdel` change the set they are given.
+pub struct PickSet {
+    pub id: u32,
+    pub members: RefCell<Vec<u64>>,
+}
+
+impl Object for PickSet {
+    fn type_name(&self) -> &'static str {
+        "PICKSET"
+    }
+    fn print(&self, f: &mut dyn fmt::Write) -> fmt::Result {
+        write!(f, "<Selection set: {}>", self.id)
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
+
+/// Per-interpreter state of the entity interface.
+#[derive(Default)]
+pub struct EntityState {
+    /// Selection sets made so far (numbers them as AutoCAD does, from 1).
+    pub sets_made: u32,
+    /// The last set `ssget` returned (`ssget "P"`).
+    pub previous: Vec<u64>,
+    /// A POLYLINE being built by `entmake` until its SEQEND.
+    pub pending_polyline: Option<make::PendingPolyline>,
+    /// `tblnext` positions per table name.
+    pub table_cursor: Vec<(String, usize)>,
+}
+
+/// One value per entity name, so `eq` is true for two names of the same entity as in
+/// AutoLISP (`(eq e (entlast))`).
+#[derive(Default)]
+pub struct EnameCache(HashMap<Ename, Value>);
+
+/// The value naming an entity or sub-entity.
+pub fn name_value(it: &mut Interp, name: Ename) -> Value {
+    it.ext::<EnameCache>()
+        .0
+        .entry(name)
+        .or_insert_with(|| Value::obj(name))
+        .clone()
+}
+
+/// The value naming the entity with `handle`.
+pub fn ename_value(it: &mut Interp, handle: u64) -> Value {
+    name_value(it, Ename { handle, sub: 0 })
+}
+
+/// A new selection set value holding `members`.
+pub fn pickset_value(it: &mut Interp, members: Vec<u64>) -> Value {
+    let st = it.ext::<EntityState>();
+    st.sets_made += 1;
+    let id = st.sets_made;
+    Value::obj(PickSet {
+        id,
+        members: RefCell::new(members),
+    })
+}
+
+/// The entity-name argument, or AutoLISP's "bad argument type: lentityp ...".
+pub fn ename_arg(it: &Interp, v: &Value) -> Result<Ename, Exn> {
+    v.as_obj::<Ename>()
+        .copied()
+        .ok_or_else(|| bad_arg(it, "lentityp", v))
+}
+
+/// The selection-set argument, or "bad argument type: lselsetp ...".
+pub fn pickset_arg<'a>(it: &Interp, v: &'a Value) -> Result<&'a PickSet, Exn> {
+    v.as_obj::<PickSet>()
+        .ok_or_else(|| bad_arg(it, "lselsetp", v))
+}
+
+pub fn drawing(it: &mut Interp) -> &mut Drawing {
+    it.ext::<Drawing>()
+}
+
+/// The number of vertices of a POLYLINE entity (None for other kinds).
+fn vertex_count(d: &Drawing, handle: u64) -> Option<u32> {
+    match &d.get(handle)?.kind {
+        EntityKind::Polyline { points, .. } => Some(points.len() as u32),
+        _ => None,
+    }
+}
+
+fn entget(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = ename_arg(it, &a[0])?;
+    Ok(dxf_list::entity_list(it, e).unwrap_or(Value::Nil))
+}
+
+fn entupd(it: &mut Interp, a: &[Value]) -> LResult {
+    ename_arg(it, &a[0])?;
+    Ok(a[0].clone())
+}
+
+fn entdel(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = ename_arg(it, &a[0])?;
+    if e.sub != 0 {
+        // AutoCAD refuses to delete a sub-entity on its own.
+        return Ok(Value::Nil);
+    }
+    let d = drawing(it);
+    if d.delete(e.handle) || d.undelete(e.handle) {
+        Ok(a[0].clone())
+    } else {
+        Ok(Value::Nil)
+    }
+}
+
+fn entlast(it: &mut Interp, _: &[Value]) -> LResult {
+    let last = drawing(it).last();
+    Ok(last.map_or(Value::Nil, |h| ename_value(it, h)))
+}
+
+fn entnext(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(v) = a.first().filter(|v| v.truthy()) else {
+        let first = drawing(it).first();
+        return Ok(first.map_or(Value::Nil, |h| ename_value(it, h)));
+    };
+    let e = ename_arg(it, v)?;
+    let d = drawing(it);
+    // Into and through a POLYLINE's vertices, then its SEQEND.
+    if let Some(n) = vertex_count(d, e.handle) {
+        if e.sub <= n {
+            return Ok(name_value(
+                it,
+                Ename {
+                    handle: e.handle,
+                    sub: e.sub + 1,
+                },
+            ));
+        }
+    }
+    let next = d.next_after(e.handle);
+    Ok(next.map_or(Value::Nil, |h| ename_value(it, h)))
+}
+
+fn handent(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.string(&a[0])?;
+    let Ok(h) = u64::from_str_radix(s.trim(), 16) else {
+        return Ok(Value::Nil);
+    };
+    let d = drawing(it);
+    // A deleted entity keeps its name for the session, as in AutoCAD.
+    if d.get(h).is_some() || d.is_deleted(h) {
+        Ok(ename_value(it, h))
+    } else {
+        Ok(Value::Nil)
+    }
+}
+
+/// An error from the drawing as a Lisp error.
+pub fn draw_err(e: impl fmt::Display) -> Exn {
+    err(e.to_string())
+}

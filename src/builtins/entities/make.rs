@@ -1,0 +1,483 @@
+//! `entmake` and `entmod`: DXF association lists → entities, with AutoLISP's rules: the type
+//! group first (after an optional -1), defaults for optional groups (layer CLAYER, colour
+//! BYLAYER, extrusion (0 0 1), text height TEXTSIZE, style "Standard"), nil when a required
+//! group is missing or the geometry is invalid, and a POLYLINE collected over several calls
+//! until its SEQEND.
+
+use glam::{DVec2, DVec3};
+
+use super::dxf_list::{entity_list, to_wcs, Groups};
+use super::{drawing, ename_arg, EntityState};
+use crate::builtins::system::SysVars;
+use crate::geom::bspline::BSpline;
+use crate::geom::quadspline::QuadSpline;
+use crate::lang::error::{err, Exn, LResult};
+use crate::lang::{Interp, Value};
+use crate::output::{Entity, EntityKind};
+
+/// A POLYLINE whose VERTEX entities are still arriving.
+pub struct PendingPolyline {
+    layer: String,
+    color: Option<i16>,
+    closed: bool,
+    three_d: bool,
+    elevation: f64,
+    normal: DVec3,
+    points: Vec<DVec3>,
+    bulges: Vec<f64>,
+}
+
+/// AutoCAD entity types lispcad does not model: `entmake` says so instead of returning a
+/// silent nil (which AutoCAD gives for unknown types).
+const UNSUPPORTED: &[&str] = &[
+    "ELLIPSE",
+    "INSERT",
+    "MTEXT",
+    "HATCH",
+    "DIMENSION",
+    "SOLID",
+    "TRACE",
+    "RAY",
+    "XLINE",
+    "REGION",
+    "LEADER",
+    "MLEADER",
+    "BLOCK",
+    "ENDBLK",
+    "ATTDEF",
+    "ATTRIB",
+    "3DSOLID",
+    "MLINE",
+    "IMAGE",
+    "VIEWPORT",
+    "WIPEOUT",
+    "TOLERANCE",
+    "SHAPE",
+    "BODY",
+    "SURFACE",
+    "TABLE",
+    "MESH",
+    "STYLE",
+    "LTYPE",
+    "DIMSTYLE",
+    "UCS",
+    "VIEW",
+    "VPORT",
+    "APPID",
+    "BLOCK_RECORD",
+    "DICTIONARY",
+];
+
+/// The layer entmake uses when the list has no 8 group: CLAYER if that layer exists.
+fn current_layer(it: &mut Interp) -> String {
+    let clayer = it
+        .ext::<SysVars>()
+        .get("CLAYER")
+        .and_then(|v| v.as_str().map(str::to_string));
+    let d = drawing(it);
+    match clayer {
+        Some(c) if d.layer(&c).is_some() => c,
+        _ => d.current_layer().to_string(),
+    }
+}
+
+/// The entity type of a list: the first group, or the second after a -1.
+fn type_of(g: &Groups) -> Option<String> {
+    let first = match g.0.first() {
+        Some((-1, _)) => g.0.get(1),
+        other => other,
+    }?;
+    match first {
+        (0, Value::Str(s)) => Some(s.to_uppercase()),
+        _ => None,
+    }
+}
+
+/// Colour group 62: None = BYLAYER (absent or 256), Some(0) BYBLOCK, Some(1..=255);
+/// Err(()) for anything else (entmake then returns nil).
+fn color_of(it: &Interp, g: &Groups) -> Result<Result<Option<i16>, ()>, Exn> {
+    Ok(match g.int(it, 62)? {
+        None | Some(256) => Ok(None),
+        Some(c) if (0..=255).contains(&c) => Ok(Some(c as i16)),
+        Some(_) => Err(()),
+    })
+}
+
+fn normal_of(it: &Interp, g: &Groups) -> Result<Option<DVec3>, Exn> {
+    let n = g.point(it, 210)?.unwrap_or(DVec3::Z);
+    Ok((n.length() > 1e-12).then(|| n.normalize()))
+}
+
+/// The geometry of a graphical entity from its groups; Ok(None) when a required group is
+/// missing or a value is out of range.
+pub fn kind_of(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<EntityKind>, Exn> {
+    let Some(normal) = normal_of(it, g)? else {
+        return Ok(None);
+    };
+    let kind = match ty {
+        "LINE" => {
+            let (Some(p0), Some(p1)) = (g.point(it, 10)?, g.point(it, 11)?) else {
+                return Ok(None);
+            };
+            EntityKind::Line { p0, p1 }
+        }
+        "CIRCLE" => {
+            let (Some(c), Some(r)) = (g.point(it, 10)?, g.real(it, 40)?) else {
+                return Ok(None);
+            };
+            EntityKind::Circle {
+                center: to_wcs(c, normal),
+                radius: r,
+                normal,
+            }
+        }
+        "ARC" => {
+            let (Some(c), Some(r), Some(a0), Some(a1)) = (
+                g.point(it, 10)?,
+                g.real(it, 40)?,
+                g.real(it, 50)?,
+                g.real(it, 51)?,
+            ) else {
+                return Ok(None);
+            };
+            let tau = std::f64::consts::TAU;
+            EntityKind::Arc {
+                center: to_wcs(c, normal),
+                radius: r,
+                start: a0.rem_euclid(tau),
+                end: a1.rem_euclid(tau),
+                normal,
+            }
+        }
+        "POINT" => {
+            let Some(p) = g.point(it, 10)? else {
+                return Ok(None);
+            };
+            EntityKind::Point { p }
+        }
+        "LWPOLYLINE" => return lwpolyline(it, g, normal),
+        "SPLINE" => return spline(it, g),
+        "3DFACE" => {
+            let (Some(a), Some(b), Some(c)) =
+                (g.point(it, 10)?, g.point(it, 11)?, g.point(it, 12)?)
+            else {
+                return Ok(None);
+            };
+            let d = g.point(it, 13)?.unwrap_or(c);
+            EntityKind::Face3d {
+                corners: [a, b, c, d],
+            }
+        }
+        "TEXT" => {
+            let (Some(p), Some(s)) = (g.point(it, 10)?, g.string(it, 1)?) else {
+                return Ok(None);
+            };
+            let height = match g.real(it, 40)? {
+                Some(h) => h,
+                None => it.ext::<SysVars>().real("TEXTSIZE"),
+            };
+            // Justification (72/73, with the alignment point 11) is accepted; the text is
+            // placed at its insertion point.
+            g.int(it, 72)?;
+            g.int(it, 73)?;
+            EntityKind::Text {
+                insert: p,
+                height,
+                value: s,
+                rotation: g.real(it, 50)?.unwrap_or(0.0),
+                style: g.string(it, 7)?.unwrap_or_else(|| "Standard".to_string()),
+            }
+        }
+        _ => return Ok(None),
+    };
+    Ok(Some(kind))
+}
+
+/// LWPOLYLINE: vertices from the 10 groups in order, each followed by its optional 42 bulge;
+/// 90 (if given) the vertex count, 70 bit 1 closed, 38 elevation; points in the OCS.
+fn lwpolyline(it: &Interp, g: &Groups, normal: DVec3) -> Result<Option<EntityKind>, Exn> {
+    let mut points: Vec<DVec2> = Vec::new();
+    let mut bulges: Vec<f64> = Vec::new();
+    for (code, v) in &g.0 {
+        match code {
+            10 => {
+                let p = super::dxf_list::point_of(it, 10, v)?;
+                points.push(p.truncate());
+                bulges.push(0.0);
+            }
+            42 => {
+                let b = v.as_f64().filter(|b| b.is_finite()).ok_or_else(|| {
+                    super::dxf_list::bad_group(it, &Value::cons(Value::Int(42), v.clone()))
+                })?;
+                if let Some(last) = bulges.last_mut() {
+                    *last = b;
+                }
+            }
+            _ => {}
+        }
+    }
+    if let Some(n) = g.int(it, 90)? {
+        if n < 0 || n as usize > points.len() {
+            return Ok(None);
+        }
+        points.truncate(n as usize);
+        bulges.truncate(n as usize);
+    }
+    let flags = g.int(it, 70)?.unwrap_or(0);
+    Ok(Some(EntityKind::LwPolyline {
+        points,
+        bulges,
+        closed: flags & 1 != 0,
+        elevation: g.real(it, 38)?.unwrap_or(0.0),
+        normal,
+    }))
+}
+
+/// SPLINE: from control points (10, with knots 40 and weights 41 when given) or, without
+/// them, through the fit points (11) as lispcad's C1 quadratic interpolating spline.
+fn spline(it: &Interp, g: &Groups) -> Result<Option<EntityKind>, Exn> {
+    let flags = g.int(it, 70)?.unwrap_or(0);
+    let closed = flags & 3 != 0;
+    let degree = g.int(it, 71)?.unwrap_or(3);
+    let ctrl = g.all_points(it, 10)?;
+    let knots = g.all_reals(it, 40)?;
+    let weights = g.all_reals(it, 41)?;
+    let fit = g.all_points(it, 11)?;
+    if degree < 1 {
+        return Ok(None);
+    }
+    if !ctrl.is_empty() {
+        let weights = if weights.is_empty() {
+            None
+        } else {
+            Some(weights)
+        };
+        let knots = if knots.is_empty() { None } else { Some(knots) };
+        return Ok(BSpline::new(degree as usize, ctrl, knots, weights)
+            .ok()
+            .map(|curve| EntityKind::Spline {
+                curve,
+                fit_points: fit,
+                closed,
+            }));
+    }
+    Ok(QuadSpline::interpolate(&fit, closed)
+        .ok()
+        .map(|s| EntityKind::Spline {
+            curve: s.to_bspline(),
+            fit_points: fit,
+            closed,
+        }))
+}
+
+/// Adds an entity from a parsed list; Ok(None) when entmake must return nil.
+fn make_entity(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<u64>, Exn> {
+    let Ok(color) = color_of(it, g)? else {
+        return Ok(None);
+    };
+    let layer = match g.string(it, 8)? {
+        Some(l) => l,
+        None => current_layer(it),
+    };
+    let Some(kind) = kind_of(it, ty, g)? else {
+        return Ok(None);
+    };
+    let e = Entity {
+        handle: 0,
+        layer,
+        color,
+        kind,
+    };
+    Ok(drawing(it).add(e).ok())
+}
+
+pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
+    let Some(list) = a.first().filter(|v| v.truthy()) else {
+        // (entmake) cancels a POLYLINE in progress.
+        it.ext::<EntityState>().pending_polyline = None;
+        return Ok(Value::Nil);
+    };
+    let g = Groups::parse(it, list)?;
+    let Some(ty) = type_of(&g) else {
+        return Ok(Value::Nil);
+    };
+    let pending = it.ext::<EntityState>().pending_polyline.is_some();
+    let made = match ty.as_str() {
+        "VERTEX" if pending => vertex(it, &g)?,
+        "SEQEND" if pending => seqend(it)?,
+        "VERTEX" | "SEQEND" => false,
+        _ if pending => {
+            // Any other entity abandons the unfinished polyline, as AutoCAD does.
+            it.ext::<EntityState>().pending_polyline = None;
+            false
+        }
+        "POLYLINE" => polyline_header(it, &g)?,
+        "LAYER" => super::tables::make_layer(it, &g)?,
+        t if UNSUPPORTED.contains(&t) => {
+            return Err(err(format!(
+                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, 3DFACE, TEXT and LAYER are)"
+            )))
+        }
+        t => make_entity(it, t, &g)?.is_some(),
+    };
+    Ok(if made { list.clone() } else { Value::Nil })
+}
+
+fn polyline_header(it: &mut Interp, g: &Groups) -> Result<bool, Exn> {
+    let flags = g.int(it, 70)?.unwrap_or(0);
+    if flags & (16 | 64) != 0 {
+        return Err(err(
+            "entmake: polygon and polyface meshes (POLYLINE flags 16, 64) are not supported",
+        ));
+    }
+    let Ok(color) = color_of(it, g)? else {
+        return Ok(false);
+    };
+    let Some(normal) = normal_of(it, g)? else {
+        return Ok(false);
+    };
+    let layer = match g.string(it, 8)? {
+        Some(l) => l,
+        None => current_layer(it),
+    };
+    let elevation = g.point(it, 10)?.map_or(0.0, |p| p.z);
+    it.ext::<EntityState>().pending_polyline = Some(PendingPolyline {
+        layer,
+        color,
+        closed: flags & 1 != 0,
+        three_d: flags & 8 != 0,
+        elevation,
+        normal,
+        points: Vec::new(),
+        bulges: Vec::new(),
+    });
+    Ok(true)
+}
+
+fn vertex(it: &mut Interp, g: &Groups) -> Result<bool, Exn> {
+    let Some(p) = g.point(it, 10)? else {
+        return Ok(false);
+    };
+    let bulge = g.real(it, 42)?.unwrap_or(0.0);
+    let st = it.ext::<EntityState>();
+    let Some(pl) = st.pending_polyline.as_mut() else {
+        return Ok(false);
+    };
+    // 2D polyline vertices are OCS points at the header's elevation.
+    let p = if pl.three_d {
+        p
+    } else {
+        to_wcs(DVec3::new(p.x, p.y, pl.elevation), pl.normal)
+    };
+    pl.points.push(p);
+    pl.bulges.push(bulge);
+    Ok(true)
+}
+
+fn seqend(it: &mut Interp) -> Result<bool, Exn> {
+    let Some(pl) = it.ext::<EntityState>().pending_polyline.take() else {
+        return Ok(false);
+    };
+    let bulges = if pl.bulges.iter().all(|b| *b == 0.0) {
+        Vec::new()
+    } else {
+        pl.bulges
+    };
+    let e = Entity {
+        handle: 0,
+        layer: pl.layer,
+        color: pl.color,
+        kind: EntityKind::Polyline {
+            points: pl.points,
+            bulges,
+            closed: pl.closed,
+        },
+    };
+    Ok(drawing(it).add(e).is_ok())
+}
+
+/// `entmod`: the groups of the list override the entity's current ones; the type cannot change.
+pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
+    let new = Groups::parse(it, &a[0])?;
+    let Some(name) = new.get(-1).cloned() else {
+        return Ok(Value::Nil);
+    };
+    let name = ename_arg(it, &name)?;
+    let Some(old_list) = entity_list(it, name) else {
+        return Ok(Value::Nil);
+    };
+    let old = Groups::parse(it, &old_list)?;
+    let ty = type_of(&old).unwrap_or_default();
+    if let Some(t) = type_of(&new) {
+        if t != ty {
+            return Ok(Value::Nil);
+        }
+    }
+    if name.sub != 0 {
+        return Ok(if modify_vertex(it, name, &new)? {
+            a[0].clone()
+        } else {
+            Value::Nil
+        });
+    }
+    let mut merged: Vec<(i32, Value)> = new.0.clone();
+    merged.extend(old.0.into_iter().filter(|(c, _)| !new.has(*c)));
+    let g = Groups(merged);
+    let Ok(color) = color_of(it, &g)? else {
+        return Ok(Value::Nil);
+    };
+    let layer = g.string(it, 8)?.unwrap_or_default();
+    let kind = if ty == "POLYLINE" {
+        // The header carries no geometry; flags 70 bit 1 may open or close it.
+        let Some(e) = drawing(it).get(name.handle) else {
+            return Ok(Value::Nil);
+        };
+        let mut kind = e.kind.clone();
+        if let EntityKind::Polyline { closed, .. } = &mut kind {
+            *closed = g.int(it, 70)?.unwrap_or(0) & 1 != 0;
+        }
+        kind
+    } else {
+        match kind_of(it, &ty, &g)? {
+            Some(k) => k,
+            None => return Ok(Value::Nil),
+        }
+    };
+    let e = Entity {
+        handle: name.handle,
+        layer,
+        color,
+        kind,
+    };
+    Ok(match drawing(it).replace(name.handle, e) {
+        Ok(()) => a[0].clone(),
+        Err(_) => Value::Nil,
+    })
+}
+
+/// `entmod` of a VERTEX: its location (10) and bulge (42).
+fn modify_vertex(it: &mut Interp, name: super::Ename, g: &Groups) -> Result<bool, Exn> {
+    let p = g.point(it, 10)?;
+    let b = g.real(it, 42)?;
+    let Some(e) = drawing(it).get(name.handle).cloned() else {
+        return Ok(false);
+    };
+    let mut e = e;
+    let EntityKind::Polyline { points, bulges, .. } = &mut e.kind else {
+        return Ok(false);
+    };
+    let i = (name.sub - 1) as usize;
+    if i >= points.len() {
+        return Ok(false);
+    }
+    if let Some(p) = p {
+        points[i] = p;
+    }
+    if let Some(b) = b {
+        if bulges.is_empty() {
+            bulges.resize(points.len(), 0.0);
+        }
+        bulges[i] = b;
+    }
+    Ok(drawing(it).replace(name.handle, e).is_ok())
+}

@@ -1,0 +1,313 @@
+//! Selection sets: `ssget` with the non-interactive modes and AutoCAD's filter lists, and the
+//! `ss...` functions.
+//!
+//! A filter is tested against each entity's `entget` list: strings match as `wcmatch`
+//! patterns (case-insensitive, as AutoCAD compares names), numbers by value (with a preceding
+//! `(-4 . "<")`-style relational operator when given), points coordinate-wise
+//! (`(-4 . "<,>,*")`), and `(-4 . "<AND")` ... `(-4 . "AND>")`, `<OR`, `<XOR`, `<NOT` group
+//! the tests. A colour filter (62 . 256) matches BYLAYER entities, which have no 62 group.
+
+use super::dxf_list::{entity_list, point_of, Groups};
+use super::{drawing, ename_arg, ename_value, pickset_arg, pickset_value, Ename, EntityState};
+use crate::builtins::text::wcmatch::WcPattern;
+use crate::lang::error::{err, Exn, LResult};
+use crate::lang::{Interp, Value};
+
+/// One parsed filter node.
+enum Filter {
+    /// A group test, with the relational operator that preceded it (`=` when none).
+    Test {
+        code: i32,
+        op: String,
+        value: Value,
+    },
+    And(Vec<Filter>),
+    Or(Vec<Filter>),
+    Xor(Vec<Filter>),
+    Not(Box<Filter>),
+}
+
+fn filter_err(msg: &str) -> Exn {
+    err(format!("ssget: bad filter list: {msg}"))
+}
+
+/// Parses a filter list into an implicit AND of its nodes.
+fn parse_filter(it: &Interp, list: &Value) -> Result<Filter, Exn> {
+    let g = Groups::parse(it, list)?;
+    let mut pos = 0;
+    let nodes = parse_seq(&g.0, &mut pos, None)?;
+    Ok(Filter::And(nodes))
+}
+
+/// Nodes until the closing `(-4 . "NAME>")` (or the end of the list at top level).
+fn parse_seq(g: &[(i32, Value)], pos: &mut usize, close: Option<&str>) -> Result<Vec<Filter>, Exn> {
+    let mut out = Vec::new();
+    let mut op = "=".to_string();
+    while *pos < g.len() {
+        let (code, v) = &g[*pos];
+        *pos += 1;
+        if *code == -4 {
+            let s = v
+                .as_str()
+                .ok_or_else(|| filter_err("a -4 group needs a string operator"))?
+                .to_uppercase();
+            match s.as_str() {
+                "<AND" | "<OR" | "<XOR" | "<NOT" => {
+                    let name = &s[1..];
+                    let inner = parse_seq(g, pos, Some(name))?;
+                    out.push(match name {
+                        "AND" => Filter::And(inner),
+                        "OR" => Filter::Or(inner),
+                        "XOR" => {
+                            if inner.len() != 2 {
+                                return Err(filter_err("<XOR needs exactly two operands"));
+                            }
+                            Filter::Xor(inner)
+                        }
+                        _ => {
+                            let mut inner = inner;
+                            if inner.len() != 1 {
+                                return Err(filter_err("<NOT needs exactly one operand"));
+                            }
+                            Filter::Not(Box::new(inner.remove(0)))
+                        }
+                    });
+                }
+                "AND>" | "OR>" | "XOR>" | "NOT>" => {
+                    return if close == Some(&s[..s.len() - 1]) {
+                        Ok(out)
+                    } else {
+                        Err(filter_err(&format!("unexpected {s}")))
+                    };
+                }
+                _ => op = s,
+            }
+            continue;
+        }
+        out.push(Filter::Test {
+            code: *code,
+            op: std::mem::replace(&mut op, "=".to_string()),
+            value: v.clone(),
+        });
+    }
+    match close {
+        Some(c) => Err(filter_err(&format!("<{c} is not closed by {c}>"))),
+        None => Ok(out),
+    }
+}
+
+fn compare(op: &str, a: f64, b: f64) -> bool {
+    match op {
+        "*" => true,
+        "=" => a == b,
+        "!=" | "/=" | "<>" => a != b,
+        "<" => a < b,
+        "<=" => a <= b,
+        ">" => a > b,
+        ">=" => a >= b,
+        _ => false,
+    }
+}
+
+/// One group of the entity against one test value.
+fn test_value(it: &Interp, code: i32, op: &str, want: &Value, got: &Value) -> bool {
+    match (want, got) {
+        (Value::Str(w), Value::Str(g)) => {
+            // Names compare case-insensitively: match upper against upper.
+            WcPattern::new(&w.to_uppercase()).matches(&g.to_uppercase())
+        }
+        (Value::Cons(_), Value::Cons(_)) => {
+            let (Ok(w), Ok(g)) = (point_of(it, code, want), point_of(it, code, got)) else {
+                return false;
+            };
+            let ops: Vec<&str> = if op.contains(',') {
+                op.split(',').map(str::trim).collect()
+            } else {
+                vec![op; 3]
+            };
+            (0..3).all(|i| compare(ops.get(i).copied().unwrap_or("*"), g[i], w[i]))
+        }
+        (Value::Obj(_), Value::Obj(_)) => want.equal(got, 0.0),
+        _ => match (want.as_f64(), got.as_f64()) {
+            (Some(w), Some(g)) => compare(op, g, w),
+            _ => false,
+        },
+    }
+}
+
+fn eval(it: &Interp, f: &Filter, groups: &Groups) -> bool {
+    match f {
+        Filter::Test { code, op, value } => {
+            let mut any = false;
+            for v in groups.all(*code) {
+                any = true;
+                if test_value(it, *code, op, value, v) {
+                    return true;
+                }
+            }
+            // BYLAYER entities have no 62 group; (62 . 256) selects them.
+            !any && *code == 62 && test_value(it, 62, op, value, &Value::Int(256))
+        }
+        Filter::And(v) => v.iter().all(|f| eval(it, f, groups)),
+        Filter::Or(v) => v.iter().any(|f| eval(it, f, groups)),
+        Filter::Xor(v) => eval(it, &v[0], groups) != eval(it, &v[1], groups),
+        Filter::Not(f) => !eval(it, f, groups),
+    }
+}
+
+/// The live entities matching `filter` (all of them without one), in drawing order.
+fn select(it: &mut Interp, filter: Option<&Filter>) -> Result<Vec<u64>, Exn> {
+    let handles: Vec<u64> = drawing(it).entities().map(|e| e.handle).collect();
+    let Some(f) = filter else {
+        return Ok(handles);
+    };
+    let mut out = Vec::new();
+    for h in handles {
+        let list = entity_list(it, Ename { handle: h, sub: 0 }).unwrap_or(Value::Nil);
+        let g = Groups::parse(it, &list)?;
+        if eval(it, f, &g) {
+            out.push(h);
+        }
+    }
+    Ok(out)
+}
+
+pub fn ssget(it: &mut Interp, a: &[Value]) -> LResult {
+    let mode = match a.first() {
+        Some(Value::Str(s)) => Some(s.trim_start_matches(['_', '+', '.']).to_uppercase()),
+        _ => None,
+    };
+    let Some(mode) = mode else {
+        return Err(err(
+            "ssget: interactive selection needs a user; in a headless run use (ssget \"X\" [filter]), \"A\", \"L\" or \"P\"",
+        ));
+    };
+    // The filter list is the last argument when it is a list of pairs.
+    let filter = match a.last() {
+        Some(v @ Value::Cons(c)) if a.len() >= 2 && matches!(c.car, Value::Cons(_)) => {
+            Some(parse_filter(it, v)?)
+        }
+        _ => None,
+    };
+    let mut found = match mode.as_str() {
+        "X" | "A" => select(it, filter.as_ref())?,
+        "L" => {
+            let last = drawing(it).last();
+            let mut v: Vec<u64> = last.into_iter().collect();
+            if let Some(f) = &filter {
+                let all = select(it, Some(f))?;
+                v.retain(|h| all.contains(h));
+            }
+            v
+        }
+        "P" => {
+            let prev = it.ext::<EntityState>().previous.clone();
+            let d = drawing(it);
+            let mut v: Vec<u64> = prev.into_iter().filter(|h| d.get(*h).is_some()).collect();
+            if let Some(f) = &filter {
+                let all = select(it, Some(f))?;
+                v.retain(|h| all.contains(h));
+            }
+            v
+        }
+        m => {
+            return Err(err(format!(
+                "ssget: selection mode \"{m}\" needs a user; in a headless run use \"X\" [filter], \"A\", \"L\" or \"P\""
+            )))
+        }
+    };
+    found.dedup();
+    if found.is_empty() {
+        return Ok(Value::Nil);
+    }
+    it.ext::<EntityState>().previous = found.clone();
+    Ok(pickset_value(it, found))
+}
+
+pub fn sslength(it: &mut Interp, a: &[Value]) -> LResult {
+    let ss = pickset_arg(it, &a[0])?;
+    Ok(Value::Int(ss.members.borrow().len() as i32))
+}
+
+pub fn ssname(it: &mut Interp, a: &[Value]) -> LResult {
+    let ss = pickset_arg(it, &a[0])?;
+    let i = match &a[1] {
+        Value::Int(i) => *i as f64,
+        Value::Real(r) => r.trunc(),
+        v => return Err(crate::lang::builtin::bad_arg(it, "fixnump", v)),
+    };
+    let h = {
+        let m = ss.members.borrow();
+        if i < 0.0 || i >= m.len() as f64 {
+            return Ok(Value::Nil);
+        }
+        m[i as usize]
+    };
+    Ok(ename_value(it, h))
+}
+
+pub fn ssadd(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = match a.first() {
+        Some(v) if v.truthy() => Some(ename_arg(it, v)?),
+        _ => None,
+    };
+    if let Some(e) = e {
+        if drawing(it).get(e.handle).is_none() || e.sub != 0 {
+            return Ok(Value::Nil);
+        }
+    }
+    match a.get(1).filter(|v| v.truthy()) {
+        Some(v) => {
+            let ss = pickset_arg(it, v)?;
+            if let Some(e) = e {
+                let mut m = ss.members.borrow_mut();
+                if !m.contains(&e.handle) {
+                    m.push(e.handle);
+                }
+            }
+            Ok(v.clone())
+        }
+        None => {
+            let members = e.map(|e| vec![e.handle]).unwrap_or_default();
+            Ok(pickset_value(it, members))
+        }
+    }
+}
+
+pub fn ssdel(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = ename_arg(it, &a[0])?;
+    let ss = pickset_arg(it, &a[1])?;
+    let mut m = ss.members.borrow_mut();
+    match m.iter().position(|h| *h == e.handle) {
+        Some(i) => {
+            m.remove(i);
+            Ok(a[1].clone())
+        }
+        None => Ok(Value::Nil),
+    }
+}
+
+pub fn ssmemb(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = ename_arg(it, &a[0])?;
+    let ss = pickset_arg(it, &a[1])?;
+    let found = ss.members.borrow().contains(&e.handle);
+    Ok(if found { a[0].clone() } else { Value::Nil })
+}
+
+/// The live handles a selection value names: a PICKSET, an ENAME, or an `entsel`-style list
+/// `(ename point)`. For commands such as ERASE.
+pub fn selected_handles(v: &Value) -> Option<Vec<u64>> {
+    if let Some(ss) = v.as_obj::<super::PickSet>() {
+        let m = ss.members.borrow().clone();
+        return Some(m);
+    }
+    if let Some(e) = v.as_obj::<Ename>() {
+        return Some(vec![e.handle]);
+    }
+    if let Value::Cons(c) = v {
+        if let Some(e) = c.car.as_obj::<Ename>() {
+            return Some(vec![e.handle]);
+        }
+    }
+    None
+}
