@@ -5,14 +5,21 @@
 use crate::lang::{Builtin, Interp};
 
 pub mod control;
+pub mod drawing;
+pub mod format;
 pub mod geom2d;
+pub mod geometry;
+pub mod input;
 pub mod io;
 pub mod lists;
 pub mod numbers;
 pub mod predicates;
 pub mod special;
 pub mod strings;
+pub mod surfaces;
 pub mod system;
+pub mod temple;
+pub mod text;
 
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
@@ -25,7 +32,13 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Points and coordinates", geom2d::BUILTINS),
         ("Predicates", predicates::BUILTINS),
         ("Strings", strings::BUILTINS),
+        ("Strings: formatting and matching", format::BUILTINS),
         ("Printing and files", io::BUILTINS),
+        ("Interactive input", input::BUILTINS),
+        ("Curves", geometry::BUILTINS),
+        ("Surfaces and meshes", surfaces::BUILTINS),
+        ("Eyeglass temple", temple::BUILTINS),
+        ("Drawing and output", drawing::BUILTINS),
         ("System", system::BUILTINS),
     ]
 }
@@ -43,14 +56,4 @@ pub fn find(name: &str) -> Option<&'static Builtin> {
         .find(|b| b.name.eq_ignore_ascii_case(name))
 }
 
-/// Writes the interpreter's drawing to each output path (format from the extension).
-pub fn write_outputs(
-    _it: &mut Interp,
-    outputs: &[std::path::PathBuf],
-    _common: &crate::cli::Common,
-) -> Result<(), String> {
-    if outputs.is_empty() {
-        return Ok(());
-    }
-    Err("drawing output is not available yet in this build".into())
-}
+pub use drawing::write_outputs;

@@ -99,7 +99,13 @@ fn completion_names(it: &Interp) -> Vec<String> {
 }
 
 pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
-    let mut it = super::run::configured_interp(common);
+    let mut it = match super::run::configured_interp(common) {
+        Ok(it) => it,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return super::EXIT_USAGE;
+        }
+    };
     for f in files {
         if let Err(e) = it.load_file(&f.display().to_string()) {
             diag::print_error(&it, &e);
@@ -109,6 +115,7 @@ pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
     // Ctrl-C while evaluating interrupts the evaluation; while editing, rustyline sees it.
     let _ = ctrlc::set_handler(move || flag.store(true, std::sync::atomic::Ordering::Relaxed));
     if std::io::stdin().is_terminal() {
+        it.ext::<crate::builtins::input::InputState>().terminal = true;
         interactive(&mut it)
     } else {
         piped(&mut it)

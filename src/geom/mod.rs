@@ -3,10 +3,30 @@
 //! Pure Rust over glam's f64 types. Nothing here knows about the language (`Value`):
 //! the bindings in `src/builtins` convert.
 
+pub mod arc;
+pub mod bernstein;
+pub mod bezier;
 pub mod bspline;
+pub mod circle;
+pub mod curve;
+pub mod error;
 pub mod frame;
+pub mod intersect;
+pub mod line;
+pub mod mesh;
+pub mod offset;
+pub mod piece;
+pub mod polyline;
 pub mod quadspline;
+pub mod quadspline_fit;
+pub mod quadspline_query;
+pub mod surface;
+pub mod temple;
+pub mod temple_refine;
 pub mod traits;
 
+pub use curve::Curve;
+pub use error::GeomError;
 pub use glam::{DMat4, DVec2, DVec3};
+pub use intersect::{intersect, intersect_near, Hit, HitKind};
 pub use traits::ParamCurve;

@@ -20,3 +20,37 @@ pub trait ParamCurve {
         self.eval(1.0)
     }
 }
+
+/// The first derivative with respect to the public parameter t.
+pub trait ParamCurveDeriv: ParamCurve {
+    /// dP/dt at `t` in [0, 1].
+    fn deriv(&self, t: f64) -> DVec3;
+
+    /// The unit tangent at `t` (zero only where the curve is degenerate).
+    fn unit_tangent(&self, t: f64) -> DVec3 {
+        self.deriv(t).normalize_or_zero()
+    }
+}
+
+/// Arc length, to a stated absolute accuracy (exact for lines and arcs).
+pub trait ParamCurveArclen: ParamCurve {
+    fn arclen(&self, accuracy: f64) -> f64;
+}
+
+/// The nearest point of the curve to a given point.
+pub trait ParamCurveNearest: ParamCurve {
+    /// `(t, point)` of the curve point closest to `p`, found to `accuracy` (distance units).
+    fn nearest(&self, p: DVec3, accuracy: f64) -> (f64, DVec3);
+}
+
+/// An axis-aligned bounding box that is tight (touches the curve), not a hull bound.
+pub trait ParamCurveBbox {
+    /// `(min, max)` corners.
+    fn bbox(&self) -> (DVec3, DVec3);
+}
+
+/// The piece of a curve between two parameters, as a curve of the same kind.
+pub trait ParamCurveSubdivide: Sized {
+    /// The part between `t0 < t1`, reparameterized over [0, 1].
+    fn subsegment(&self, t0: f64, t1: f64) -> Self;
+}

@@ -268,7 +268,12 @@ impl Builder<'_> {
             }
             Rule::string => {
                 let raw = p.into_inner().next().map_or("", |c| c.as_str());
-                Ok(Value::str(&unescape(raw)))
+                let text = crate::builtins::text::unescape(raw).map_err(|e| ReadError {
+                    message: e.to_string(),
+                    start: span.start as usize,
+                    end: span.end as usize,
+                })?;
+                Ok(Value::str(&text))
             }
             Rule::token => {
                 let t = p.as_str();
@@ -331,41 +336,6 @@ pub fn parse_number(t: &str) -> Option<Value> {
     t.parse::<f64>().ok().map(Value::Real)
 }
 
-/// AutoLISP string escapes: `\\ \" \n \r \t \e` and `\nnn` (octal); any other escaped
-/// character stands for itself.
-pub fn unescape(raw: &str) -> String {
-    let mut out = String::with_capacity(raw.len());
-    let mut chars = raw.chars().peekable();
-    while let Some(c) = chars.next() {
-        if c != '\\' {
-            out.push(c);
-            continue;
-        }
-        match chars.next() {
-            Some('n') => out.push('\n'),
-            Some('r') => out.push('\r'),
-            Some('t') => out.push('\t'),
-            Some('e') => out.push('\x1b'),
-            Some(d @ '0'..='7') => {
-                let mut code = d.to_digit(8).unwrap_or(0);
-                for _ in 0..2 {
-                    match chars.peek().and_then(|c| c.to_digit(8)) {
-                        Some(v) => {
-                            code = code * 8 + v;
-                            chars.next();
-                        }
-                        None => break,
-                    }
-                }
-                out.push(char::from_u32(code).unwrap_or('\u{FFFD}'));
-            }
-            Some(other) => out.push(other),
-            None => out.push('\\'),
-        }
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -397,10 +367,5 @@ mod tests {
     #[test]
     fn strings_and_comments_do_not_count_brackets() {
         assert_eq!(scan("(princ \")(\") ; )\n;| ( |;"), Scan::Complete);
-    }
-
-    #[test]
-    fn escapes() {
-        assert_eq!(unescape(r#"a\\b\"c\nd\101\e"#), "a\\b\"c\nd\u{41}\x1b");
     }
 }

@@ -1,0 +1,359 @@
+//! Closed forms for lines, circles and arcs in 3D (ZMOLD paper, SEEDS.md 000, made stable).
+//!
+//! No quadratic is solved by the textbook formula: a line meets a circle at the foot F of the
+//! perpendicular from the centre ± the half chord √((r − h)(r + h)), and two circles meet at
+//! a ± h with h² from the factored (Heron) form
+//! (r1+r2−d)(d−r1+r2)(d+r1−r2)(r1+r2+d)/(4d²) — both free of cancellation at tangency.
+//! Non-coplanar circles: the first circle is cut with the second circle's plane (the line
+//! plane1 ∩ plane2), each candidate then tested against the second circle.
+
+use std::f64::consts::TAU;
+
+use glam::DVec3;
+
+use super::{LHit, LHits, LKind, TANGENT_SIN};
+use crate::geom::arc::{norm_angle, Arc};
+use crate::geom::line::Line;
+use crate::geom::piece::Piece;
+use crate::geom::traits::ParamCurve;
+
+#[inline]
+fn kind_by_tangents(t1: DVec3, t2: DVec3) -> LKind {
+    let (a, b) = (t1.length(), t2.length());
+    if t1.cross(t2).length() <= TANGENT_SIN * a * b {
+        LKind::Tangent
+    } else {
+        LKind::Cross
+    }
+}
+
+/// The parameter of `p` on a segment of length `len` if within `tol` of its range.
+#[inline]
+fn seg_param(s: f64, len: f64, tol: f64) -> Option<f64> {
+    let slack = tol / len;
+    if (-slack..=1.0 + slack).contains(&s) {
+        Some(s.clamp(0.0, 1.0))
+    } else {
+        None
+    }
+}
+
+/// Segment / segment: the closest points of the two carriers; collinear pieces give an
+/// overlap segment (or a touch point when they only share an end).
+pub fn line_line(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
+    let (da, db) = (a.dir(), b.dir());
+    let (la, lb) = (da.length(), db.length());
+    let w = b.p0 - a.p0;
+    let cross = da.cross(db);
+    let cl = cross.length();
+    // Collinear: both ends of b within tol of a's carrier and vice versa.
+    let dist_to_a = |p: DVec3| (p - a.p0).cross(da).length() / la;
+    if dist_to_a(b.p0) <= tol && dist_to_a(b.p1) <= tol && cl <= 1e-9 * la * lb {
+        collinear(a, b, tol, out);
+        return;
+    }
+    if cl == 0.0 {
+        return;
+    }
+    let cc = cl * cl;
+    let s = w.cross(db).dot(cross) / cc;
+    let u = w.cross(da).dot(cross) / cc;
+    let (Some(s), Some(u)) = (seg_param(s, la, tol), seg_param(u, lb, tol)) else {
+        return;
+    };
+    let (pa, pb) = (a.eval(s), b.eval(u));
+    if (pa - pb).length_squared() <= tol * tol {
+        out.push(LHit::new(s, u, (pa + pb) * 0.5, kind_by_tangents(da, db)));
+    }
+}
+
+fn collinear(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
+    let la = a.dir().length();
+    let (s0, s1) = (a.project(b.p0), a.project(b.p1));
+    let lo = s0.min(s1).max(0.0);
+    let hi = s0.max(s1).min(1.0);
+    if (hi - lo) * la > tol {
+        let piece = Line {
+            p0: a.eval(lo),
+            p1: a.eval(hi),
+        };
+        let (u0, u1) = (b.project(piece.p0), b.project(piece.p1));
+        out.push(LHit::new(
+            lo,
+            u0.clamp(0.0, 1.0),
+            piece.p0,
+            LKind::Overlap(Piece::Line(piece), hi, u1.clamp(0.0, 1.0)),
+        ));
+    } else if (lo - hi) * la <= tol {
+        let s = (0.5 * (lo + hi)).clamp(0.0, 1.0);
+        let p = a.eval(s);
+        out.push(LHit::new(
+            s,
+            b.project(p).clamp(0.0, 1.0),
+            p,
+            LKind::Tangent,
+        ));
+    }
+}
+
+/// Segment / arc (or full circle).
+pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
+    let d = l.dir();
+    let len = d.length();
+    let n = a.normal;
+    let c = a.center;
+    let r = a.radius;
+    let h0 = (l.p0 - c).dot(n);
+    let dn = d.dot(n);
+    let h1 = h0 + dn;
+    let slack = tol / r;
+    let push = |s: f64, p: DVec3, tangent: bool, out: &mut LHits| {
+        let Some(s) = seg_param(s, len, tol) else {
+            return;
+        };
+        let Some(u) = a.param_of_angle(a.angle_of(p), slack) else {
+            return;
+        };
+        let kind = if tangent {
+            LKind::Tangent
+        } else {
+            kind_by_tangents(d, a.tangent_at_angle(a.angle_of(p)))
+        };
+        out.push(LHit::new(s, u, p, kind));
+    };
+    if h0.abs() <= tol && h1.abs() <= tol {
+        // In the circle's plane: project the segment into it.
+        let q0 = l.p0 - n * h0;
+        let dq = d - n * dn;
+        let dq2 = dq.length_squared();
+        let sf = -(q0 - c).dot(dq) / dq2;
+        let foot = q0 + dq * sf;
+        let h = (foot - c).length();
+        if h > r + tol {
+            return;
+        }
+        let half = ((r - h) * (r + h)).max(0.0).sqrt();
+        if 2.0 * half <= tol {
+            let p = if h > 0.0 {
+                c + (foot - c) * (r / h)
+            } else {
+                foot
+            };
+            push(sf, p, true, out);
+        } else {
+            let ds = half / dq2.sqrt();
+            let (s1, s2) = (sf - ds, sf + ds);
+            push(s1, q0 + dq * s1, false, out);
+            push(s2, q0 + dq * s2, false, out);
+        }
+    } else {
+        if dn == 0.0 {
+            return;
+        }
+        // Pierces the plane once: on the circle there or nowhere.
+        let s = -h0 / dn;
+        let p = l.p0 + d * s;
+        let rho = (p - c).length();
+        if (rho - r).abs() <= tol {
+            push(s, p, false, out);
+        }
+    }
+}
+
+/// Arc / arc (either may be a full circle), coplanar or not.
+pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
+    let (n1, n2) = (a.normal, b.normal);
+    let (c1, c2) = (a.center, b.center);
+    let (r1, r2) = (a.radius, b.radius);
+    let v = c2 - c1;
+    let cross = n1.cross(n2);
+    let sin = cross.length();
+    let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
+    let (sl1, sl2) = (tol / r1, tol / r2);
+    let push = |p: DVec3, tangent: bool, out: &mut LHits| {
+        let (ta, tb) = (a.angle_of(p), b.angle_of(p));
+        let (Some(s), Some(u)) = (a.param_of_angle(ta, sl1), b.param_of_angle(tb, sl2)) else {
+            return;
+        };
+        let kind = if tangent {
+            LKind::Tangent
+        } else {
+            kind_by_tangents(a.tangent_at_angle(ta), b.tangent_at_angle(tb))
+        };
+        out.push(LHit::new(s, u, p, kind));
+    };
+    if off_plane <= tol {
+        let vp = v - n1 * v.dot(n1);
+        let d = vp.length();
+        if d <= tol {
+            if (r1 - r2).abs() <= tol {
+                cocircular(a, b, tol, out);
+            }
+            return;
+        }
+        if d > r1 + r2 + tol || d < (r1 - r2).abs() - tol {
+            return;
+        }
+        let h2 = (r1 + r2 - d).max(0.0)
+            * (d - r1 + r2).max(0.0)
+            * (d + r1 - r2).max(0.0)
+            * (r1 + r2 + d)
+            / (4.0 * d * d);
+        let h = h2.sqrt();
+        let ex = vp / d;
+        let ey = n1.cross(ex);
+        let x = (d * d + (r1 - r2) * (r1 + r2)) / (2.0 * d);
+        let base = c1 + ex * x;
+        if 2.0 * h <= tol {
+            push(base, true, out);
+        } else {
+            push(base - ey * h, false, out);
+            push(base + ey * h, false, out);
+        }
+        return;
+    }
+    if sin <= 1e-15 {
+        return; // parallel planes apart
+    }
+    // The line plane1 ∩ plane2 through x0 (the foot of c1 on it), direction n1 × n2.
+    let k = n1.dot(n2);
+    let d2 = n2.dot(v);
+    let x0 = c1 + (n2 - n1 * k) * (d2 / (sin * sin));
+    let dir = cross / sin;
+    let hvec = x0 - c1;
+    let h = hvec.length();
+    if h > r1 + tol {
+        return;
+    }
+    let half = ((r1 - h) * (r1 + h)).max(0.0).sqrt();
+    let on_b = |p: DVec3| {
+        let w = p - c2;
+        let z = w.dot(n2);
+        let rho = (w - n2 * z).length();
+        (z * z + (rho - r2) * (rho - r2)) <= tol * tol
+    };
+    let on_a_circle = |p: DVec3| {
+        // Project to circle 1 exactly (keeps the point on the first curve).
+        let w = p - c1;
+        let wp = w - n1 * w.dot(n1);
+        let l = wp.length();
+        if l > 0.0 {
+            c1 + wp * (r1 / l)
+        } else {
+            p
+        }
+    };
+    if 2.0 * half <= tol {
+        let p = on_a_circle(x0);
+        if on_b(p) {
+            push(p, false, out);
+        }
+    } else {
+        for sgn in [-1.0, 1.0] {
+            let p = on_a_circle(x0 + dir * (sgn * half));
+            if on_b(p) {
+                push(p, false, out);
+            }
+        }
+    }
+    out.sort_by(|x, y| x.s.total_cmp(&y.s));
+}
+
+/// Two arcs on the same circle: the shared angular ranges as overlap arcs, or touch points.
+fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
+    let slack = tol / a.radius;
+    let same_dir = a.normal.dot(b.normal) > 0.0;
+    let b_piece = |lo: f64, hi: f64| -> (f64, f64) {
+        // b's parameters at a's relative angles lo and hi (a-frame, relative to a.start).
+        let pl = a.point_at_angle(a.start + lo);
+        let ph = a.point_at_angle(a.start + hi);
+        let ul = b.param_of_angle(b.angle_of(pl), slack).unwrap_or(0.0);
+        let uh = b.param_of_angle(b.angle_of(ph), slack).unwrap_or(1.0);
+        (ul, uh)
+    };
+    let emit = |lo: f64, hi: f64, out: &mut LHits| {
+        let (ul, uh) = b_piece(lo, hi);
+        if (hi - lo) * a.radius > tol {
+            let piece = if hi - lo >= TAU - 1e-15 {
+                Arc {
+                    start: 0.0,
+                    sweep: TAU,
+                    ..*a
+                }
+            } else {
+                Arc {
+                    start: norm_angle(a.start + lo),
+                    sweep: hi - lo,
+                    ..*a
+                }
+            };
+            let s0 = lo / a.sweep;
+            out.push(LHit::new(
+                s0,
+                ul,
+                a.point_at_angle(a.start + lo),
+                LKind::Overlap(Piece::Arc(piece), (hi / a.sweep).min(1.0), uh),
+            ));
+        } else {
+            let m = 0.5 * (lo + hi);
+            let p = a.point_at_angle(a.start + m);
+            out.push(LHit::new(
+                (m / a.sweep).clamp(0.0, 1.0),
+                ul,
+                p,
+                LKind::Tangent,
+            ));
+        }
+    };
+    if a.is_full() && b.is_full() {
+        emit(0.0, TAU, out);
+        return;
+    }
+    // b's range in a's frame, relative to a.start, CCW about a's normal.
+    let b_first = if same_dir { b.eval(0.0) } else { b.eval(1.0) };
+    let alpha = norm_angle(a.angle_of(b_first) - a.start);
+    let (sw1, sw2) = (a.sweep, b.sweep);
+    if b.is_full() {
+        emit(0.0, sw1, out);
+        return;
+    }
+    let mut ranges: smallvec::SmallVec<[(f64, f64); 3]> = smallvec::SmallVec::new();
+    for shift in [-TAU, 0.0, TAU] {
+        let (lo, hi) = ((alpha + shift).max(0.0), (alpha + shift + sw2).min(sw1));
+        if hi >= lo - slack {
+            ranges.push((lo.min(hi), hi.max(lo)));
+        }
+    }
+    ranges.sort_by(|x, y| x.0.total_cmp(&y.0));
+    // Merge touching ranges (a full circle a covering b across its seam).
+    let mut merged: smallvec::SmallVec<[(f64, f64); 3]> = smallvec::SmallVec::new();
+    for r in ranges {
+        if let Some(last) = merged.last_mut() {
+            if r.0 <= last.1 + slack {
+                last.1 = last.1.max(r.1);
+                continue;
+            }
+        }
+        merged.push(r);
+    }
+    if a.is_full() && merged.len() == 2 && merged[0].0 <= slack && merged[1].1 >= sw1 - slack {
+        // b crosses a's seam: report it as one piece starting at b's start.
+        let (lo, hi) = (merged[1].0, merged[0].1 + TAU);
+        let (ul, uh) = b_piece(lo, hi);
+        let piece = Arc {
+            start: norm_angle(a.start + lo),
+            sweep: hi - lo,
+            ..*a
+        };
+        out.push(LHit::new(
+            lo / sw1,
+            ul,
+            a.point_at_angle(a.start + lo),
+            LKind::Overlap(Piece::Arc(piece), (hi - TAU) / sw1, uh),
+        ));
+        return;
+    }
+    for (lo, hi) in merged {
+        emit(lo, hi, out);
+    }
+}

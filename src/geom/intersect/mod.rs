@@ -1,0 +1,446 @@
+//! Intersection of any two curves in 3D: every root found, each classified CROSS, TANGENT or
+//! OVERLAP (ZMOLD paper, SEEDS.md 000, with root isolation before any Newton step).
+//!
+//! Curves are cut into pieces (`piece.rs`): lines, arcs and rational Bézier spans.
+//! Line/arc pairs use closed forms (`analytic`); a Bézier against a line or an arc becomes a
+//! scalar polynomial in Bernstein form whose roots are isolated by subdivision (`implicit`);
+//! Bézier against Bézier is box subdivision down to flat pieces, then Gauss–Newton
+//! (`subdivide`). Results from all piece pairs are merged (points closer than `tol` are one
+//! point), points inside an overlap are dropped, and the list is sorted by t1.
+//!
+//! Argument-order independence is by construction: the pair is always computed in one
+//! canonical order (by kind, then by data) and the parameters swapped back.
+
+mod analytic;
+mod implicit;
+mod subdivide;
+
+use std::cmp::Ordering;
+
+use glam::DVec3;
+use smallvec::SmallVec;
+
+use super::arc::Arc;
+use super::bezier::Bez;
+use super::bspline::BSpline;
+use super::circle::Circle;
+use super::curve::Curve;
+use super::line::Line;
+use super::piece::Piece;
+use super::traits::ParamCurve;
+
+/// The default tolerance, SPEC's GEOMTOL.
+pub const GEOMTOL: f64 = 1e-9;
+
+/// |sin| of the angle between the two tangents below which a hit is TANGENT.
+pub(crate) const TANGENT_SIN: f64 = 1e-8;
+
+/// How two curves meet at a hit.
+#[derive(Clone, Debug, PartialEq)]
+pub enum HitKind {
+    /// The curves cross (tangents not parallel).
+    Cross,
+    /// The curves touch (tangents parallel, or a double root within tolerance).
+    Tangent,
+    /// The curves share a piece; it is given, running the direction of the first curve.
+    /// The hit's `point`, `t1`, `t2` are at the start of that piece.
+    Overlap(Curve),
+}
+
+/// One intersection: the point, the public parameters on both curves and the kind.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Hit {
+    pub point: DVec3,
+    pub t1: f64,
+    pub t2: f64,
+    pub kind: HitKind,
+}
+
+impl Hit {
+    /// `CROSS`, `TANGENT` or `OVERLAP`.
+    pub fn kind_name(&self) -> &'static str {
+        match self.kind {
+            HitKind::Cross => "CROSS",
+            HitKind::Tangent => "TANGENT",
+            HitKind::Overlap(_) => "OVERLAP",
+        }
+    }
+}
+
+/// A hit between two pieces in piece parameters (s on the first, u on the second).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct LHit {
+    pub s: f64,
+    pub u: f64,
+    pub p: DVec3,
+    pub kind: LKind,
+    /// Set on the two simple roots flanking one extremum: merged, they are one tangency.
+    pub twin: Option<u32>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum LKind {
+    Cross,
+    Tangent,
+    /// The shared piece and the parameters (on the first, second piece) at its end.
+    Overlap(Piece, f64, f64),
+}
+
+impl LHit {
+    #[inline]
+    pub fn new(s: f64, u: f64, p: DVec3, kind: LKind) -> LHit {
+        LHit {
+            s,
+            u,
+            p,
+            kind,
+            twin: None,
+        }
+    }
+}
+
+pub(crate) type LHits = SmallVec<[LHit; 4]>;
+
+fn piece_to_curve(p: Piece) -> Curve {
+    match p {
+        Piece::Line(l) => Curve::Line(l),
+        Piece::Arc(a) if a.is_full() => Curve::Circle(Circle { arc: a }),
+        Piece::Arc(a) => Curve::Arc(a),
+        Piece::Bez(b) => {
+            let n = b.h.len();
+            let deg = n - 1;
+            let mut knots = vec![0.0; n];
+            knots.extend(std::iter::repeat_n(1.0, n));
+            Curve::BSpline(BSpline {
+                degree: deg,
+                ctrl: b.points().collect(),
+                knots,
+                weights: if b.rational {
+                    Some(b.h.iter().map(|h| h.w).collect())
+                } else {
+                    None
+                },
+            })
+        }
+    }
+}
+
+/// Intersect two pieces, appending hits in piece parameters.
+pub(crate) fn piece_pair(a: &Piece, b: &Piece, tol: f64, out: &mut LHits) {
+    let start = out.len();
+    match (a, b) {
+        (Piece::Line(x), Piece::Line(y)) => analytic::line_line(x, y, tol, out),
+        (Piece::Line(x), Piece::Arc(y)) => analytic::line_arc(x, y, tol, out),
+        (Piece::Arc(x), Piece::Line(y)) => {
+            analytic::line_arc(y, x, tol, out);
+            swap_from(out, start);
+        }
+        (Piece::Arc(x), Piece::Arc(y)) => analytic::arc_arc(x, y, tol, out),
+        (Piece::Bez(x), Piece::Line(y)) => implicit::bez_line(x, y, tol, out),
+        (Piece::Bez(x), Piece::Arc(y)) => implicit::bez_arc(x, y, tol, out),
+        (Piece::Line(_) | Piece::Arc(_), Piece::Bez(_)) => {
+            piece_pair(b, a, tol, out);
+            swap_from(out, start);
+        }
+        (Piece::Bez(x), Piece::Bez(y)) => subdivide::bez_bez(x, y, tol, out),
+    }
+}
+
+/// Swap the roles of the two pieces for the hits from `start` on.
+fn swap_from(out: &mut LHits, start: usize) {
+    for h in &mut out[start..] {
+        std::mem::swap(&mut h.s, &mut h.u);
+        if let LKind::Overlap(piece, se, ue) = &mut h.kind {
+            std::mem::swap(se, ue);
+            // The shared piece runs along the first curve: reverse it if it ran along b.
+            if *se < h.s {
+                *piece = reverse_piece(piece);
+                // Its start is now at the other end.
+                let (s0, u0) = (h.s, h.u);
+                h.s = *se;
+                h.u = *ue;
+                *se = s0;
+                *ue = u0;
+                h.p = piece.eval(0.0);
+            }
+        }
+    }
+}
+
+fn reverse_piece(p: &Piece) -> Piece {
+    match p {
+        Piece::Line(l) => Piece::Line(Line { p0: l.p1, p1: l.p0 }),
+        Piece::Arc(a) => {
+            let end = a.eval(1.0);
+            let mut r = Arc::from_parts(a.center, a.radius, -a.normal, 0.0, a.sweep);
+            r.start = r.angle_of(end);
+            Piece::Arc(r)
+        }
+        Piece::Bez(b) => {
+            let mut h = b.h.clone();
+            h.reverse();
+            Piece::Bez(Bez {
+                h,
+                rational: b.rational,
+            })
+        }
+    }
+}
+
+fn rank(c: &Curve) -> u8 {
+    match c {
+        Curve::Line(_) => 0,
+        Curve::Circle(_) => 1,
+        Curve::Arc(_) => 2,
+        Curve::Polyline(_) => 3,
+        Curve::Spline(_) => 4,
+        Curve::BSpline(_) => 5,
+    }
+}
+
+/// A total order on curves: by kind, then by their defining numbers.
+fn canonical_cmp(a: &Curve, b: &Curve) -> Ordering {
+    rank(a).cmp(&rank(b)).then_with(|| {
+        let mut fa: SmallVec<[f64; 16]> = SmallVec::new();
+        let mut fb: SmallVec<[f64; 16]> = SmallVec::new();
+        fingerprint(a, &mut fa);
+        fingerprint(b, &mut fb);
+        for (x, y) in fa.iter().zip(fb.iter()) {
+            match x.total_cmp(y) {
+                Ordering::Equal => continue,
+                o => return o,
+            }
+        }
+        fa.len().cmp(&fb.len())
+    })
+}
+
+fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
+    fn pt3(out: &mut SmallVec<[f64; 16]>, p: DVec3) {
+        out.extend([p.x, p.y, p.z]);
+    }
+    match c {
+        Curve::Line(l) => {
+            pt3(out, l.p0);
+            pt3(out, l.p1);
+        }
+        Curve::Circle(ci) => {
+            pt3(out, ci.arc.center);
+            pt3(out, ci.arc.normal);
+            out.push(ci.arc.radius);
+        }
+        Curve::Arc(a) => {
+            pt3(out, a.center);
+            pt3(out, a.normal);
+            out.extend([a.radius, a.start, a.sweep]);
+        }
+        Curve::Polyline(p) => {
+            for v in &p.vertices {
+                pt3(out, *v);
+            }
+            out.extend(p.bulges.iter().copied());
+            out.push(p.closed as u8 as f64);
+        }
+        Curve::Spline(q) => {
+            for s in &q.segments {
+                pt3(out, s[0]);
+                pt3(out, s[1]);
+            }
+            out.push(q.closed as u8 as f64);
+        }
+        Curve::BSpline(b) => {
+            out.push(b.degree as f64);
+            for v in &b.ctrl {
+                pt3(out, *v);
+            }
+            out.extend(b.knots.iter().copied());
+            if let Some(w) = &b.weights {
+                out.extend(w.iter().copied());
+            }
+        }
+    }
+}
+
+fn simple_piece(c: &Curve) -> Option<Piece> {
+    match c {
+        Curve::Line(l) => Some(Piece::Line(*l)),
+        Curve::Circle(ci) => Some(Piece::Arc(ci.arc)),
+        Curve::Arc(a) => Some(Piece::Arc(*a)),
+        _ => None,
+    }
+}
+
+/// `(intersect a b)` / `(intersect-info a b)`: every hit of `a` and `b`, sorted by t1.
+/// `tol` (GEOMTOL, default 1e-9): points closer than it are one point, curves farther apart
+/// than it do not meet.
+pub fn intersect(a: &Curve, b: &Curve, tol: f64) -> Vec<Hit> {
+    let mut out = Vec::new();
+    intersect_into(a, b, tol, &mut out);
+    out
+}
+
+/// As `intersect`, writing into `out` (cleared first) so a caller can reuse its allocation.
+pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
+    out.clear();
+    let tol = if tol.is_finite() && tol > 0.0 {
+        tol
+    } else {
+        GEOMTOL
+    };
+    if canonical_cmp(a, b) == Ordering::Greater {
+        compute(b, a, tol, out);
+        for h in out.iter_mut() {
+            std::mem::swap(&mut h.t1, &mut h.t2);
+            if let HitKind::Overlap(c) = &mut h.kind {
+                // Give the shared piece the direction of the (new) first curve.
+                if let Some(rev) = reversed_if_against(c, a) {
+                    *c = rev;
+                    h.point = c.eval(0.0);
+                    h.t1 = a.closest_point(h.point).0;
+                    h.t2 = b.closest_point(h.point).0;
+                }
+            }
+        }
+        out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+    } else {
+        compute(a, b, tol, out);
+    }
+}
+
+/// The overlap piece `c` reversed when it runs against curve `a`.
+fn reversed_if_against(c: &Curve, a: &Curve) -> Option<Curve> {
+    let piece = match c {
+        Curve::Line(l) => Piece::Line(*l),
+        Curve::Arc(x) => Piece::Arc(*x),
+        Curve::BSpline(bs) => {
+            let s = &bs.ctrl;
+            Piece::Bez(Bez::from_weighted(
+                s,
+                bs.weights.as_deref().unwrap_or(&vec![1.0; s.len()]),
+            ))
+        }
+        _ => return None,
+    };
+    // Compare a's direction with the piece's at its middle.
+    let (t, _) = a.closest_point(piece.eval(0.5));
+    if a.deriv(t).dot(piece.deriv(0.5)) >= 0.0 {
+        return None;
+    }
+    Some(piece_to_curve(reverse_piece(&piece)))
+}
+
+/// A hit with the key of the root pair it belongs to (two simple roots around one extremum).
+type Keyed = (Hit, Option<u64>);
+
+fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
+    if let (Some(pa), Some(pb)) = (simple_piece(a), simple_piece(b)) {
+        let mut hits = LHits::new();
+        piece_pair(&pa, &pb, tol, &mut hits);
+        for h in hits {
+            out.push(to_hit(h, 0.0, 1.0, 0.0, 1.0));
+        }
+        if out.len() > 1 {
+            out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+            let mut keyed: Vec<Keyed> = out.drain(..).map(|h| (h, None)).collect();
+            finish(&mut keyed, tol, out);
+        }
+        return;
+    }
+    let sa = a.spans();
+    let sb = b.spans();
+    let boxes_b: Vec<(DVec3, DVec3)> = sb.iter().map(|s| s.piece.hull_bbox()).collect();
+    let mut keyed: Vec<Keyed> = Vec::new();
+    let mut hits = LHits::new();
+    let (a_closed, b_closed) = (a.is_closed(), b.is_closed());
+    for (i, x) in sa.iter().enumerate() {
+        let (alo, ahi) = x.piece.hull_bbox();
+        for (j, (y, (blo, bhi))) in sb.iter().zip(&boxes_b).enumerate() {
+            if (alo - tol).cmpgt(*bhi + tol).any() || (blo - tol).cmpgt(ahi + tol).any() {
+                continue;
+            }
+            hits.clear();
+            piece_pair(&x.piece, &y.piece, tol, &mut hits);
+            let pair = ((i as u64) << 42) | ((j as u64) << 20);
+            for h in hits.drain(..) {
+                let twin = h.twin.map(|k| pair | k as u64);
+                let mut hit = to_hit(h, x.t0, x.t1, y.t0, y.t1);
+                // Hits at a closed curve's seam: t = 0 rather than 1.
+                if hit.t1 >= 1.0 && a_closed {
+                    hit.t1 = 0.0;
+                }
+                if hit.t2 >= 1.0 && b_closed {
+                    hit.t2 = 0.0;
+                }
+                keyed.push((hit, twin));
+            }
+        }
+    }
+    keyed.sort_by(|x, y| x.0.t1.total_cmp(&y.0.t1));
+    finish(&mut keyed, tol, out);
+}
+
+fn to_hit(h: LHit, a0: f64, a1: f64, b0: f64, b1: f64) -> Hit {
+    let map = |t: f64, lo: f64, hi: f64| if t >= 1.0 { hi } else { lo + (hi - lo) * t };
+    Hit {
+        point: h.p,
+        t1: map(h.s, a0, a1),
+        t2: map(h.u, b0, b1),
+        kind: match h.kind {
+            LKind::Cross => HitKind::Cross,
+            LKind::Tangent => HitKind::Tangent,
+            LKind::Overlap(p, _, _) => HitKind::Overlap(piece_to_curve(p)),
+        },
+    }
+}
+
+/// Merge hits closer than `tol` (a merged pair of roots around one extremum is a tangency),
+/// drop point hits lying on an overlap piece; `hits` is sorted by t1 and so is `out`.
+fn finish(hits: &mut Vec<Keyed>, tol: f64, out: &mut Vec<Hit>) {
+    let overlaps: Vec<Curve> = hits
+        .iter()
+        .filter_map(|(h, _)| match &h.kind {
+            HitKind::Overlap(c) => Some(c.clone()),
+            _ => None,
+        })
+        .collect();
+    let mut kept: Vec<Keyed> = Vec::with_capacity(hits.len());
+    for (h, key) in hits.drain(..) {
+        let is_point = !matches!(h.kind, HitKind::Overlap(_));
+        if is_point
+            && overlaps
+                .iter()
+                .any(|c| (c.closest_point(h.point).1 - h.point).length() <= tol)
+        {
+            continue;
+        }
+        if is_point {
+            if let Some(k) = kept.iter_mut().find(|(k, _)| {
+                !matches!(k.kind, HitKind::Overlap(_)) && (k.point - h.point).length() <= tol
+            }) {
+                let same_pair = key.is_some() && k.1 == key;
+                if same_pair || h.kind == HitKind::Tangent {
+                    k.0.kind = HitKind::Tangent;
+                }
+                continue;
+            }
+        }
+        kept.push((h, key));
+    }
+    out.clear();
+    out.extend(kept.into_iter().map(|(h, _)| h));
+}
+
+/// `(intersect a b near)`: the hit point closest to `near` (for an overlap, its closest
+/// point to `near`), or `None` when there are no hits.
+pub fn intersect_near(hits: &[Hit], near: DVec3) -> Option<DVec3> {
+    hits.iter()
+        .map(|h| match &h.kind {
+            HitKind::Overlap(c) => c.closest_point(near).1,
+            _ => h.point,
+        })
+        .min_by(|p, q| {
+            (*p - near)
+                .length_squared()
+                .total_cmp(&(*q - near).length_squared())
+        })
+}

@@ -1,0 +1,191 @@
+//! Chaining segments into polylines (paper 001 step 4: "sort the segments found in each facet
+//! and chain them into the intersection line").
+//!
+//! Segments carry symbolic end keys (a mesh vertex, or an edge/facet pair) so chaining is
+//! topological and exact: two segments join exactly when they share a key, never by a distance
+//! tolerance. The output is put in a canonical form (start point and direction chosen from the
+//! coordinates) so it does not depend on the order of the input triangles.
+
+use glam::DVec3;
+use std::cmp::Ordering;
+use std::collections::HashMap;
+
+/// A polyline in space. A closed polyline does not repeat its first point at the end.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Polyline3 {
+    pub points: Vec<DVec3>,
+    pub closed: bool,
+}
+
+impl Polyline3 {
+    /// Total length (including the closing segment of a closed polyline).
+    pub fn length(&self) -> f64 {
+        let mut l: f64 = self.points.windows(2).map(|w| w[0].distance(w[1])).sum();
+        if self.closed && self.points.len() > 1 {
+            l += self.points[self.points.len() - 1].distance(self.points[0]);
+        }
+        l
+    }
+}
+
+/// One segment with the symbolic keys of its two ends.
+#[derive(Debug, Clone, Copy)]
+pub struct Segment {
+    pub keys: [u128; 2],
+    pub points: [DVec3; 2],
+}
+
+pub(crate) fn cmp_point(a: DVec3, b: DVec3) -> Ordering {
+    a.x.total_cmp(&b.x)
+        .then(a.y.total_cmp(&b.y))
+        .then(a.z.total_cmp(&b.z))
+}
+
+/// Chains segments that share end keys into polylines.
+///
+/// Duplicate segments (same two keys) count once and zero-length ones (equal keys) are
+/// dropped. Walks start at the keys whose degree is not two (open ends, branch points), then
+/// the remaining segments form closed loops. Each loop starts at its lexicographically smallest
+/// point and runs toward the smaller of its two neighbours; each open polyline starts at its
+/// smaller end; the list is sorted by first point.
+pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
+    segments.retain(|s| s.keys[0] != s.keys[1]);
+    for s in segments.iter_mut() {
+        if s.keys[0] > s.keys[1] {
+            s.keys.swap(0, 1);
+            s.points.swap(0, 1);
+        }
+    }
+    segments.sort_unstable_by_key(|s| s.keys);
+    segments.dedup_by_key(|s| s.keys);
+
+    let mut incident: HashMap<u128, Vec<u32>> = HashMap::with_capacity(segments.len() * 2);
+    for (i, s) in segments.iter().enumerate() {
+        for k in s.keys {
+            incident.entry(k).or_default().push(i as u32);
+        }
+    }
+    let mut used = vec![false; segments.len()];
+    let mut out = Vec::new();
+
+    let walk = |start_seg: usize, start_key: u128, used: &mut Vec<bool>| -> (Vec<DVec3>, u128) {
+        let mut pts = Vec::new();
+        let mut seg = start_seg;
+        let mut key = start_key;
+        loop {
+            used[seg] = true;
+            let s = &segments[seg];
+            let (from, to, pto) = if s.keys[0] == key {
+                (0, s.keys[1], s.points[1])
+            } else {
+                (1, s.keys[0], s.points[0])
+            };
+            if pts.is_empty() {
+                pts.push(s.points[from]);
+            }
+            pts.push(pto);
+            key = to;
+            let inc = &incident[&key];
+            if inc.len() != 2 {
+                break;
+            }
+            match inc.iter().find(|&&j| !used[j as usize]) {
+                Some(&j) => seg = j as usize,
+                None => break,
+            }
+        }
+        (pts, key)
+    };
+
+    // Open chains first, from every key whose degree is not two, in key order for determinism.
+    let mut ends: Vec<u128> = incident
+        .iter()
+        .filter(|(_, v)| v.len() != 2)
+        .map(|(&k, _)| k)
+        .collect();
+    ends.sort_unstable();
+    for k in ends {
+        let inc = incident[&k].clone();
+        for j in inc {
+            if !used[j as usize] {
+                let (pts, _) = walk(j as usize, k, &mut used);
+                out.push(canonical(pts, false));
+            }
+        }
+    }
+    for i in 0..segments.len() {
+        if !used[i] {
+            let k = segments[i].keys[0];
+            let (mut pts, end) = walk(i, k, &mut used);
+            let closed = end == k;
+            if closed {
+                pts.pop();
+            }
+            out.push(canonical(pts, closed));
+        }
+    }
+    out.sort_by(|a, b| {
+        cmp_point(a.points[0], b.points[0]).then(a.points.len().cmp(&b.points.len()))
+    });
+    out
+}
+
+fn canonical(mut pts: Vec<DVec3>, closed: bool) -> Polyline3 {
+    if closed {
+        if pts.len() >= 2 {
+            let m = (0..pts.len())
+                .min_by(|&a, &b| cmp_point(pts[a], pts[b]))
+                .unwrap_or(0);
+            pts.rotate_left(m);
+            let n = pts.len();
+            if n > 2 && cmp_point(pts[n - 1], pts[1]) == Ordering::Less {
+                pts[1..].reverse();
+            }
+        }
+    } else if pts.len() >= 2 && cmp_point(pts[pts.len() - 1], pts[0]) == Ordering::Less {
+        pts.reverse();
+    }
+    Polyline3 {
+        points: pts,
+        closed,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn seg(a: u128, b: u128) -> Segment {
+        Segment {
+            keys: [a, b],
+            points: [
+                DVec3::new(a as f64, 0.0, 0.0),
+                DVec3::new(b as f64, 1.0, 0.0),
+            ],
+        }
+    }
+
+    #[test]
+    fn square_loop_closes() {
+        let mut pts = Vec::new();
+        for i in 0..4u128 {
+            let p = |k: u128| DVec3::new((k % 4) as f64, ((k % 4) / 2) as f64, 0.0);
+            pts.push(Segment {
+                keys: [i, (i + 1) % 4],
+                points: [p(i), p((i + 1) % 4)],
+            });
+        }
+        let r = chain_segments(pts);
+        assert_eq!(r.len(), 1);
+        assert!(r[0].closed);
+        assert_eq!(r[0].points.len(), 4);
+    }
+
+    #[test]
+    fn open_chain_and_duplicates() {
+        let r = chain_segments(vec![seg(1, 2), seg(2, 3), seg(3, 2), seg(5, 5)]);
+        assert_eq!(r.len(), 1);
+        assert!(!r[0].closed);
+        assert_eq!(r[0].points.len(), 3);
+    }
+}

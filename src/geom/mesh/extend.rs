@@ -1,0 +1,1 @@
+//! Corners and extension (paper 003).

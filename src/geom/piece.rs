@@ -1,0 +1,305 @@
+//! The pieces every curve decomposes into — line segments, circular arcs and rational Bézier
+//! spans — each with its range of the owning curve's public parameter. Algorithms that work on
+//! any curve (length, nearest point, bounding box, flattening, area, intersection) are written
+//! once against pieces.
+
+use std::sync::OnceLock;
+
+use glam::DVec3;
+
+use super::arc::Arc;
+use super::bezier::Bez;
+use super::line::Line;
+use super::traits::*;
+
+/// One analytic or polynomial piece of a curve, over its own parameter s in [0, 1].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Piece {
+    Line(Line),
+    Arc(Arc),
+    Bez(Bez),
+}
+
+/// A piece and the public parameter range [t0, t1] of the curve it belongs to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Span {
+    pub piece: Piece,
+    pub t0: f64,
+    pub t1: f64,
+}
+
+impl Span {
+    /// The curve's public parameter at piece parameter `s`.
+    #[inline]
+    pub fn t_of(&self, s: f64) -> f64 {
+        if s >= 1.0 {
+            self.t1
+        } else {
+            self.t0 + (self.t1 - self.t0) * s
+        }
+    }
+}
+
+/// Gauss–Legendre nodes and weights on [0, 1] (16 points, computed once by Newton on P16).
+pub(crate) fn gauss16() -> &'static [(f64, f64); 16] {
+    static G: OnceLock<[(f64, f64); 16]> = OnceLock::new();
+    G.get_or_init(|| {
+        let n = 16;
+        let mut out = [(0.0, 0.0); 16];
+        for (i, slot) in out.iter_mut().enumerate() {
+            let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+            let mut dp = 0.0;
+            for _ in 0..100 {
+                let (mut p0, mut p1) = (1.0, x);
+                for k in 2..=n {
+                    let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+                let dx = p1 / dp;
+                x -= dx;
+                if dx.abs() < 1e-16 {
+                    break;
+                }
+            }
+            let w = 2.0 / ((1.0 - x * x) * dp * dp);
+            *slot = (0.5 * (1.0 + x), 0.5 * w);
+        }
+        out
+    })
+}
+
+fn gauss_speed(b: &Bez, a: f64, c: f64) -> f64 {
+    let h = c - a;
+    gauss16()
+        .iter()
+        .map(|(x, w)| w * b.deriv(a + h * x).length())
+        .sum::<f64>()
+        * h
+}
+
+/// Arc length of a Bézier piece between parameters a and c, adaptive Gauss–Legendre.
+pub(crate) fn bez_length(b: &Bez, a: f64, c: f64, accuracy: f64) -> f64 {
+    fn rec(b: &Bez, a: f64, c: f64, whole: f64, acc: f64, depth: u32) -> f64 {
+        let m = 0.5 * (a + c);
+        let l = gauss_speed(b, a, m);
+        let r = gauss_speed(b, m, c);
+        if depth > 20 || (l + r - whole).abs() <= acc {
+            l + r
+        } else {
+            rec(b, a, m, l, acc * 0.5, depth + 1) + rec(b, m, c, r, acc * 0.5, depth + 1)
+        }
+    }
+    if c <= a {
+        return 0.0;
+    }
+    let whole = gauss_speed(b, a, c);
+    rec(b, a, c, whole, accuracy.max(1e-15), 0)
+}
+
+impl Piece {
+    #[inline]
+    pub fn eval(&self, s: f64) -> DVec3 {
+        match self {
+            Piece::Line(l) => l.eval(s),
+            Piece::Arc(a) => a.eval(s),
+            Piece::Bez(b) => b.eval(s),
+        }
+    }
+
+    /// dP/ds.
+    #[inline]
+    pub fn deriv(&self, s: f64) -> DVec3 {
+        match self {
+            Piece::Line(l) => l.dir(),
+            Piece::Arc(a) => a.deriv(s),
+            Piece::Bez(b) => b.deriv(s),
+        }
+    }
+
+    pub fn length(&self, accuracy: f64) -> f64 {
+        match self {
+            Piece::Line(l) => l.arclen(accuracy),
+            Piece::Arc(a) => a.arclen(accuracy),
+            Piece::Bez(b) => bez_length(b, 0.0, 1.0, accuracy),
+        }
+    }
+
+    /// The piece parameter at arc length `len` from its start (clamped).
+    pub fn param_at_length(&self, len: f64, accuracy: f64) -> f64 {
+        match self {
+            Piece::Line(l) => (len / l.dir().length()).clamp(0.0, 1.0),
+            Piece::Arc(a) => (len / (a.radius * a.sweep)).clamp(0.0, 1.0),
+            Piece::Bez(b) => {
+                // Newton on L(s) − len with a bisection bracket.
+                let (mut lo, mut hi) = (0.0, 1.0);
+                let total = bez_length(b, 0.0, 1.0, accuracy);
+                let mut s = (len / total).clamp(0.0, 1.0);
+                for _ in 0..60 {
+                    let f = bez_length(b, 0.0, s, accuracy) - len;
+                    if f.abs() <= accuracy {
+                        break;
+                    }
+                    if f > 0.0 {
+                        hi = s;
+                    } else {
+                        lo = s;
+                    }
+                    let sp = b.deriv(s).length();
+                    let next = s - f / sp;
+                    s = if sp > 0.0 && next > lo && next < hi {
+                        next
+                    } else {
+                        0.5 * (lo + hi)
+                    };
+                }
+                s
+            }
+        }
+    }
+
+    /// (s, point) nearest to `p`.
+    pub fn nearest(&self, p: DVec3) -> (f64, DVec3) {
+        match self {
+            Piece::Line(l) => l.nearest(p, 0.0),
+            Piece::Arc(a) => a.nearest(p, 0.0),
+            Piece::Bez(b) => bez_nearest(b, p),
+        }
+    }
+
+    /// A tight axis-aligned box.
+    pub fn bbox(&self) -> (DVec3, DVec3) {
+        match self {
+            Piece::Line(l) => l.bbox(),
+            Piece::Arc(a) => a.bbox(),
+            Piece::Bez(b) => {
+                let (p, q) = (b.eval(0.0), b.eval(1.0));
+                let (mut lo, mut hi) = (p.min(q), p.max(q));
+                let mut ts = Vec::new();
+                for axis in 0..3 {
+                    ts.clear();
+                    b.critical_params(axis, &mut ts);
+                    for &t in &ts {
+                        let v = b.eval(t)[axis];
+                        lo[axis] = lo[axis].min(v);
+                        hi[axis] = hi[axis].max(v);
+                    }
+                }
+                (lo, hi)
+            }
+        }
+    }
+
+    /// A cheap box that contains the piece (hull box for Béziers).
+    pub fn hull_bbox(&self) -> (DVec3, DVec3) {
+        match self {
+            Piece::Bez(b) => b.hull_bbox(),
+            _ => self.bbox(),
+        }
+    }
+
+    /// Append the points of a polyline within `tol` of the piece, excluding its start point.
+    pub fn flatten(&self, tol: f64, out: &mut Vec<DVec3>) {
+        match self {
+            Piece::Line(l) => out.push(l.p1),
+            Piece::Arc(a) => {
+                let ratio = (1.0 - tol / a.radius).max(-1.0);
+                let step = 2.0 * ratio.acos();
+                let n = ((a.sweep / step).ceil() as usize).clamp(1, 1 << 20);
+                for i in 1..=n {
+                    out.push(a.eval(i as f64 / n as f64));
+                }
+            }
+            Piece::Bez(b) => flatten_bez(b, tol, 0, out),
+        }
+    }
+
+    /// ½∫ P × dP over the piece: summed over a closed planar curve it is area × unit normal
+    /// (the vector form of Green's theorem).
+    pub fn vector_area(&self) -> DVec3 {
+        match self {
+            Piece::Line(l) => 0.5 * l.p0.cross(l.p1),
+            Piece::Arc(a) => {
+                let (x, y) = (a.x_axis, a.y_axis);
+                let e = |t: f64| x * t.cos() + y * t.sin();
+                let (t0, t1) = (a.start, a.start + a.sweep);
+                0.5 * (a.center.cross(e(t1) - e(t0)) * a.radius
+                    + a.normal * (a.radius * a.radius * a.sweep))
+            }
+            Piece::Bez(b) => {
+                // P × P' is a polynomial of degree 2n − 1: 16 Gauss points are exact up to
+                // n = 16; rational pieces are split to keep the quadrature error negligible.
+                let parts = if b.rational { 8 } else { 1 };
+                let mut acc = DVec3::ZERO;
+                for k in 0..parts {
+                    let (a0, a1) = (k as f64 / parts as f64, (k + 1) as f64 / parts as f64);
+                    for (x, w) in gauss16() {
+                        let s = a0 + (a1 - a0) * x;
+                        let (p, d) = b.eval_deriv(s);
+                        acc += p.cross(d) * (w * (a1 - a0));
+                    }
+                }
+                0.5 * acc
+            }
+        }
+    }
+}
+
+fn flatten_bez(b: &Bez, tol: f64, depth: u32, out: &mut Vec<DVec3>) {
+    if depth >= 24 || b.flatness() <= tol {
+        out.push(b.eval(1.0));
+        return;
+    }
+    let (l, r) = b.split(0.5);
+    flatten_bez(&l, tol, depth + 1, out);
+    flatten_bez(&r, tol, depth + 1, out);
+}
+
+/// Nearest point on a Bézier: dense sampling, then golden-section search on the squared
+/// distance around the best samples (the distance is unimodal between adjacent samples once
+/// the sampling resolves the curve's turning).
+fn bez_nearest(b: &Bez, p: DVec3) -> (f64, DVec3) {
+    let n = 8 * (b.degree() + 1);
+    let d2 = |t: f64| (b.eval(t) - p).length_squared();
+    let mut samples: Vec<(f64, f64)> = (0..=n)
+        .map(|i| {
+            let t = i as f64 / n as f64;
+            (d2(t), t)
+        })
+        .collect();
+    samples.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut best = samples[0];
+    let h = 1.0 / n as f64;
+    for &(_, t0) in samples.iter().take(3) {
+        let (mut a, mut c) = ((t0 - h).max(0.0), (t0 + h).min(1.0));
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let mut x1 = c - g * (c - a);
+        let mut x2 = a + g * (c - a);
+        let (mut f1, mut f2) = (d2(x1), d2(x2));
+        for _ in 0..80 {
+            if f1 < f2 {
+                c = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = c - g * (c - a);
+                f1 = d2(x1);
+            } else {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + g * (c - a);
+                f2 = d2(x2);
+            }
+            if c - a < 1e-15 {
+                break;
+            }
+        }
+        let t = 0.5 * (a + c);
+        let f = d2(t);
+        if f < best.0 {
+            best = (f, t);
+        }
+    }
+    (best.1, b.eval(best.1))
+}

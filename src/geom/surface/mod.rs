@@ -1,0 +1,1 @@
+//! Parametric surfaces (paper 002) and their tessellation into meshes.

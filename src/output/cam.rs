@@ -1,0 +1,743 @@
+//! The CAM profile: AutoCAD R12 (AC1009) for laser and CNC software, which reads only LINE,
+//! ARC, CIRCLE and POLYLINE (with bulges) reliably.
+//!
+//! Everything is flattened to the XY plane. Splines and tilted arcs become arcs by biarc
+//! fitting (`biarc`), within `cam_tol`. A closed outline (closed spline or closed polyline)
+//! becomes one closed POLYLINE, so the machine cuts it as one contour. Duplicate and
+//! overlapping edges are removed (a cutter would otherwise burn the same edge twice): later
+//! open edges lose the parts another edge already covers; closed outlines and circles are kept
+//! whole and identical copies of them dropped. Points, text, faces and meshes are not cutting
+//! geometry and are left out.
+
+use glam::{DVec2, DVec3};
+
+use super::biarc::{fit_bspline, fit_span, BulgeChain, Projected};
+use super::drawing::{bulge_arc, ccw_sweep, Drawing, Entity, EntityKind};
+use super::dxf::{degrees, DxfWriter};
+use crate::geom::frame::arbitrary_axis;
+
+/// Edges closer than this (drawing units) count as coincident.
+const EPS: f64 = 1e-6;
+
+/// An R12-safe layer name: upper case, letters, digits, `$`, `-`, `_`; at most 31 characters.
+pub fn r12_layer_name(name: &str) -> String {
+    let s: String = name
+        .chars()
+        .map(|c| {
+            let c = c.to_ascii_uppercase();
+            if c.is_ascii_alphanumeric() || "$-_".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .take(31)
+        .collect();
+    if s.is_empty() {
+        "0".to_string()
+    } else {
+        s
+    }
+}
+
+/// What one drawing entity contributes to the cut.
+enum Prim {
+    Circle(DVec2, f64),
+    Closed(BulgeChain),
+    /// Open chains: single surviving pieces are written as LINE/ARC, longer runs as POLYLINE.
+    Open(BulgeChain),
+}
+
+fn parallel_to_z(n: DVec3) -> Option<f64> {
+    let n = n.normalize();
+    (n.x.abs() < 1e-12 && n.y.abs() < 1e-12).then_some(n.z.signum())
+}
+
+fn chain_of(points: Vec<DVec2>, bulges: Vec<f64>) -> BulgeChain {
+    BulgeChain { points, bulges }
+}
+
+/// A chain that ends where it starts, as a closed polyline (the repeated end dropped).
+fn close_chain(mut c: BulgeChain) -> Option<BulgeChain> {
+    if c.points.len() >= 3 && (c.points[c.points.len() - 1] - c.points[0]).length() <= EPS {
+        c.points.pop();
+        Some(c)
+    } else {
+        None
+    }
+}
+
+/// Arcs of the 3D circle (centre, radius, OCS of normal) between angles t0..t1, fitted in XY.
+fn fit_tilted_arc(
+    center: DVec3,
+    radius: f64,
+    normal: DVec3,
+    t0: f64,
+    t1: f64,
+    tol: f64,
+    out: &mut BulgeChain,
+) {
+    let (ax, ay) = arbitrary_axis(normal);
+    let f = Projected(move |t: f64| center + (ax * t.cos() + ay * t.sin()) * radius);
+    fit_span(&f, t0, t1, tol, out);
+}
+
+/// Append the OCS polyline (points, bulges) in the plane of `normal` at `elevation`, projected
+/// to XY: bulges stay bulges when the plane is parallel to XY, tilted arcs are fitted.
+fn ocs_polyline(
+    points: &[DVec2],
+    bulges: &[f64],
+    closed: bool,
+    elevation: f64,
+    normal: DVec3,
+    tol: f64,
+) -> BulgeChain {
+    let (ax, ay) = arbitrary_axis(normal);
+    let n = normal.normalize();
+    let to_xy = |p: DVec2| (ax * p.x + ay * p.y + n * elevation).truncate();
+    let mut out = BulgeChain::default();
+    let flip = parallel_to_z(normal);
+    let segs = super::drawing::bulge_segments(points, bulges, closed);
+    out.points.push(to_xy(points[0]));
+    for (a, b, bulge) in segs {
+        match (flip, bulge_arc(a, b, bulge)) {
+            (Some(sign), _) => {
+                out.bulges.push(bulge * sign);
+                out.points.push(to_xy(b));
+            }
+            (None, None) => {
+                out.bulges.push(0.0);
+                out.points.push(to_xy(b));
+            }
+            (None, Some((c, r, a0, a1))) => {
+                let c3 = ax * c.x + ay * c.y + n * elevation;
+                let mut piece = BulgeChain::default();
+                fit_tilted_arc(c3, r, n, a0, a1, tol, &mut piece);
+                out.bulges.extend(piece.bulges);
+                out.points.extend(piece.points.into_iter().skip(1));
+            }
+        }
+    }
+    out
+}
+
+fn to_prims(e: &Entity, tol: f64) -> Vec<Prim> {
+    match &e.kind {
+        EntityKind::Line { p0, p1 } => {
+            let (a, b) = (p0.truncate(), p1.truncate());
+            if (b - a).length() <= EPS {
+                return vec![];
+            }
+            vec![Prim::Open(chain_of(vec![a, b], vec![0.0]))]
+        }
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } => match parallel_to_z(*normal) {
+            Some(_) => vec![Prim::Circle(center.truncate(), *radius)],
+            None => {
+                let mut c = BulgeChain::default();
+                let tau = std::f64::consts::TAU;
+                // Two halves so each fitted span starts with a well-defined chord.
+                fit_tilted_arc(*center, *radius, *normal, 0.0, tau / 2.0, tol, &mut c);
+                fit_tilted_arc(*center, *radius, *normal, tau / 2.0, tau, tol, &mut c);
+                close_chain(c).map(Prim::Closed).into_iter().collect()
+            }
+        },
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } => {
+            let sweep = ccw_sweep(*start, *end);
+            match parallel_to_z(*normal) {
+                Some(sign) => {
+                    let (ax, ay) = arbitrary_axis(*normal);
+                    let at =
+                        |t: f64| (*center + (ax * t.cos() + ay * t.sin()) * *radius).truncate();
+                    if sweep >= std::f64::consts::TAU - 1e-15 {
+                        return vec![Prim::Circle(center.truncate(), *radius)];
+                    }
+                    let bulge = sign * (sweep / 4.0).tan();
+                    vec![Prim::Open(chain_of(
+                        vec![at(*start), at(*start + sweep)],
+                        vec![bulge],
+                    ))]
+                }
+                None => {
+                    let mut c = BulgeChain::default();
+                    fit_tilted_arc(
+                        *center,
+                        *radius,
+                        *normal,
+                        *start,
+                        *start + sweep,
+                        tol,
+                        &mut c,
+                    );
+                    vec![Prim::Open(c)]
+                }
+            }
+        }
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } => {
+            let c = ocs_polyline(points, bulges, *closed, *elevation, *normal, tol);
+            if *closed {
+                // The chain repeats the first vertex at its end.
+                close_chain(c).map(Prim::Closed).into_iter().collect()
+            } else {
+                vec![Prim::Open(c)]
+            }
+        }
+        EntityKind::Polyline {
+            points,
+            bulges,
+            closed,
+        } => {
+            let z = points[0].z;
+            let flat = points.iter().all(|p| p.z == z);
+            let pts: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
+            let bul = if flat { bulges.clone() } else { vec![] };
+            let c = ocs_polyline(&pts, &bul, *closed, 0.0, DVec3::Z, tol);
+            if *closed {
+                close_chain(c).map(Prim::Closed).into_iter().collect()
+            } else {
+                vec![Prim::Open(c)]
+            }
+        }
+        EntityKind::Spline { curve, closed, .. } => {
+            let c = fit_bspline(curve, tol);
+            let ends_meet = (curve.eval(0.0) - curve.eval(1.0)).truncate().length() <= EPS;
+            if *closed || ends_meet {
+                if let Some(cl) = close_chain(c.clone()) {
+                    return vec![Prim::Closed(cl)];
+                }
+            }
+            vec![Prim::Open(c)]
+        }
+        EntityKind::Point { .. }
+        | EntityKind::Text { .. }
+        | EntityKind::Face3d { .. }
+        | EntityKind::Mesh { .. } => vec![],
+    }
+}
+
+use crate::geom::ParamCurve as _;
+
+// ---------------------------------------------------------------- overlap removal
+
+/// A line or circular arc, parameterized by s in [0, 1] from its start to its end.
+#[derive(Clone, Copy, Debug)]
+enum Seg {
+    Line {
+        a: DVec2,
+        b: DVec2,
+    },
+    /// Angle a0 + s·sweep (sweep signed: negative = clockwise).
+    Arc {
+        c: DVec2,
+        r: f64,
+        a0: f64,
+        sweep: f64,
+    },
+}
+
+impl Seg {
+    fn from_bulge(a: DVec2, b: DVec2, bulge: f64) -> Seg {
+        match bulge_arc(a, b, bulge) {
+            Some((c, r, a0, a1)) => Seg::Arc {
+                c,
+                r,
+                a0,
+                sweep: a1 - a0,
+            },
+            None => Seg::Line { a, b },
+        }
+    }
+
+    fn circle(c: DVec2, r: f64) -> Seg {
+        Seg::Arc {
+            c,
+            r,
+            a0: 0.0,
+            sweep: std::f64::consts::TAU,
+        }
+    }
+
+    fn at(&self, s: f64) -> DVec2 {
+        match *self {
+            Seg::Line { a, b } => a.lerp(b, s),
+            Seg::Arc { c, r, a0, sweep } => {
+                let t = a0 + sweep * s;
+                c + DVec2::new(t.cos(), t.sin()) * r
+            }
+        }
+    }
+
+    fn length(&self) -> f64 {
+        match *self {
+            Seg::Line { a, b } => (b - a).length(),
+            Seg::Arc { r, sweep, .. } => r * sweep.abs(),
+        }
+    }
+
+    fn bbox(&self) -> (DVec2, DVec2) {
+        match *self {
+            Seg::Line { a, b } => (a.min(b), a.max(b)),
+            // The whole circle's box: loose but safe for candidate search.
+            Seg::Arc { c, r, .. } => (c - DVec2::splat(r), c + DVec2::splat(r)),
+        }
+    }
+
+    /// The bulge segment of the part s0..s1.
+    fn piece(&self, s0: f64, s1: f64) -> (DVec2, DVec2, f64) {
+        let (a, b) = (self.at(s0), self.at(s1));
+        match *self {
+            Seg::Line { .. } => (a, b, 0.0),
+            Seg::Arc { sweep, .. } => (a, b, (sweep * (s1 - s0) / 4.0).tan()),
+        }
+    }
+
+    /// The parameter intervals of `self` that `other` covers (within EPS).
+    fn covered_by(&self, other: &Seg) -> Vec<(f64, f64)> {
+        match (*self, *other) {
+            (Seg::Line { a, b }, Seg::Line { a: oa, b: ob }) => {
+                let d = b - a;
+                let len = d.length();
+                if len == 0.0 {
+                    return vec![];
+                }
+                let u = d / len;
+                let off = |p: DVec2| (p - a).perp_dot(u).abs();
+                if off(oa) > EPS || off(ob) > EPS {
+                    return vec![];
+                }
+                let ta = (oa - a).dot(u) / len;
+                let tb = (ob - a).dot(u) / len;
+                // Exact ends (no widening): the uncovered rest must start where the cover ends.
+                vec![(ta.min(tb), ta.max(tb))]
+            }
+            (
+                Seg::Arc { c, r, a0, sweep },
+                Seg::Arc {
+                    c: oc,
+                    r: or,
+                    a0: oa0,
+                    sweep: osweep,
+                },
+            ) => {
+                if (c - oc).length() > EPS || (r - or).abs() > EPS {
+                    return vec![];
+                }
+                let tau = std::f64::consts::TAU;
+                let span = sweep.abs();
+                // Both as CCW angular intervals [lo, lo + span].
+                let lo = if sweep > 0.0 { a0 } else { a0 + sweep };
+                let olo = if osweep > 0.0 { oa0 } else { oa0 + osweep };
+                let ospan = osweep.abs();
+                let start = (olo - lo).rem_euclid(tau);
+                let mut out = Vec::new();
+                for shift in [-tau, 0.0, tau] {
+                    let (u0, u1) = (start + shift, start + shift + ospan);
+                    if u1 >= 0.0 && u0 <= span {
+                        let (s0, s1) = (u0 / span, u1 / span);
+                        out.push(if sweep > 0.0 {
+                            (s0, s1)
+                        } else {
+                            (1.0 - s1, 1.0 - s0)
+                        });
+                    }
+                }
+                out
+            }
+            _ => vec![],
+        }
+    }
+}
+
+/// Remove (lo, hi) from a sorted list of disjoint kept intervals.
+fn subtract(keep: &mut Vec<(f64, f64)>, lo: f64, hi: f64) {
+    let mut out = Vec::with_capacity(keep.len() + 1);
+    for &(a, b) in keep.iter() {
+        if hi <= a || lo >= b {
+            out.push((a, b));
+            continue;
+        }
+        if lo > a {
+            out.push((a, lo));
+        }
+        if hi < b {
+            out.push((hi, b));
+        }
+    }
+    *keep = out;
+}
+
+/// An edge taking part in overlap removal.
+struct Edge {
+    seg: Seg,
+    /// Open edges can be trimmed; fixed ones (closed outlines, circles) cannot.
+    open: bool,
+    /// Position in drawing order: an open edge yields to every fixed edge and to earlier
+    /// open edges.
+    order: usize,
+    keep: Vec<(f64, f64)>,
+}
+
+/// Sweep over x to find overlapping boxes, trimming open edges by what covers them.
+fn remove_overlaps(edges: &mut [Edge]) {
+    let boxes: Vec<(DVec2, DVec2)> = edges.iter().map(|e| e.seg.bbox()).collect();
+    let mut idx: Vec<usize> = (0..edges.len()).collect();
+    idx.sort_by(|&i, &j| boxes[i].0.x.total_cmp(&boxes[j].0.x).then(i.cmp(&j)));
+    let mut active: Vec<usize> = Vec::new();
+    let mut cuts: Vec<(usize, f64, f64)> = Vec::new();
+    for &i in &idx {
+        let (lo, hi) = boxes[i];
+        active.retain(|&j| boxes[j].1.x >= lo.x - EPS);
+        for &j in &active {
+            let (jlo, jhi) = boxes[j];
+            if jlo.y > hi.y + EPS || jhi.y < lo.y - EPS {
+                continue;
+            }
+            for (victim, cover) in [(i, j), (j, i)] {
+                let (v, c) = (&edges[victim], &edges[cover]);
+                let yields = v.open && (!c.open || c.order < v.order);
+                if yields {
+                    for (s0, s1) in v.seg.covered_by(&c.seg) {
+                        cuts.push((victim, s0, s1));
+                    }
+                }
+            }
+        }
+        active.push(i);
+    }
+    for (v, s0, s1) in cuts {
+        subtract(&mut edges[v].keep, s0, s1);
+    }
+    for e in edges.iter_mut() {
+        let len = e.seg.length();
+        e.keep.retain(|(a, b)| (b - a) * len > EPS);
+    }
+}
+
+fn same_closed(a: &BulgeChain, b: &BulgeChain) -> bool {
+    let n = a.points.len();
+    if n != b.points.len() {
+        return false;
+    }
+    let close = |p: DVec2, q: DVec2| (p - q).length() <= EPS;
+    let bul = |i: usize, v: &BulgeChain| v.bulges.get(i).copied().unwrap_or(0.0);
+    (0..n).any(|k| {
+        let fwd = (0..n).all(|i| {
+            close(a.points[i], b.points[(i + k) % n])
+                && (bul(i, a) - bul((i + k) % n, b)).abs() <= 1e-9
+        });
+        // Reversed traversal: vertex i of a is vertex (k - i) of b, and segment i of a is
+        // segment (k - i - 1) of b with the opposite bulge.
+        let rev = (0..n).all(|i| {
+            let j = (k + n - i) % n;
+            let sj = (k + 2 * n - i - 1) % n;
+            close(a.points[i], b.points[j]) && (bul(i, a) + bul(sj, b)).abs() <= 1e-9
+        });
+        fwd || rev
+    })
+}
+
+// ---------------------------------------------------------------- writing
+
+struct Item<'a> {
+    entity: &'a Entity,
+    prim: Prim,
+    /// Edge index range of this item in the edge list (open chains and fixed outlines).
+    edges: std::ops::Range<usize>,
+    dropped: bool,
+}
+
+/// Write the drawing as the CAM profile (R12) with splines fitted within `tol`.
+pub fn write_cam(d: &Drawing, tol: f64) -> String {
+    let mut items: Vec<Item> = Vec::new();
+    for e in d.entities() {
+        for prim in to_prims(e, tol) {
+            items.push(Item {
+                entity: e,
+                prim,
+                edges: 0..0,
+                dropped: false,
+            });
+        }
+    }
+    // Identical closed outlines and circles: keep the first.
+    for i in 0..items.len() {
+        for j in 0..i {
+            if items[j].dropped {
+                continue;
+            }
+            let dup = match (&items[i].prim, &items[j].prim) {
+                (Prim::Circle(c1, r1), Prim::Circle(c2, r2)) => {
+                    (*c1 - *c2).length() <= EPS && (r1 - r2).abs() <= EPS
+                }
+                (Prim::Closed(a), Prim::Closed(b)) => same_closed(a, b),
+                _ => false,
+            };
+            if dup {
+                items[i].dropped = true;
+                break;
+            }
+        }
+    }
+    let mut edges: Vec<Edge> = Vec::new();
+    for (order, it) in items.iter_mut().enumerate() {
+        if it.dropped {
+            continue;
+        }
+        let start = edges.len();
+        let mut push = |seg: Seg, open: bool| {
+            edges.push(Edge {
+                seg,
+                open,
+                order,
+                keep: vec![(0.0, 1.0)],
+            })
+        };
+        match &it.prim {
+            Prim::Circle(c, r) => push(Seg::circle(*c, *r), false),
+            Prim::Closed(ch) => {
+                let n = ch.points.len();
+                for i in 0..n {
+                    push(
+                        Seg::from_bulge(ch.points[i], ch.points[(i + 1) % n], ch.bulges[i]),
+                        false,
+                    );
+                }
+            }
+            Prim::Open(ch) => {
+                for (w, b) in ch.points.windows(2).zip(&ch.bulges) {
+                    push(Seg::from_bulge(w[0], w[1], *b), true);
+                }
+            }
+        }
+        it.edges = start..edges.len();
+    }
+    remove_overlaps(&mut edges);
+
+    let mut w = DxfWriter::new();
+    write_r12_head(&mut w, d);
+    w.str(0, "SECTION");
+    w.str(2, "ENTITIES");
+    for it in items.iter().filter(|it| !it.dropped) {
+        let layer = r12_layer_name(&it.entity.layer);
+        let color = it.entity.color;
+        match &it.prim {
+            Prim::Circle(c, r) => {
+                head(&mut w, "CIRCLE", &layer, color);
+                w.point(10, c.extend(0.0));
+                w.float(40, *r);
+            }
+            Prim::Closed(ch) => write_polyline(&mut w, &layer, color, ch, true),
+            Prim::Open(_) => {
+                // Consecutive surviving pieces that still join form one run.
+                let mut run = BulgeChain::default();
+                let mut last_end: Option<DVec2> = None;
+                for e in &edges[it.edges.clone()] {
+                    for &(s0, s1) in &e.keep {
+                        let (a, b, bu) = e.seg.piece(s0.max(0.0), s1.min(1.0));
+                        let joins = last_end.is_some_and(|p| (p - a).length() <= EPS) && s0 <= 0.0;
+                        if !joins && !run.points.is_empty() {
+                            write_run(&mut w, &layer, color, &run);
+                            run = BulgeChain::default();
+                        }
+                        if run.points.is_empty() {
+                            run.points.push(a);
+                        }
+                        run.points.push(b);
+                        run.bulges.push(bu);
+                        last_end = (s1 >= 1.0).then_some(b);
+                    }
+                }
+                if !run.points.is_empty() {
+                    write_run(&mut w, &layer, color, &run);
+                }
+            }
+        }
+    }
+    w.str(0, "ENDSEC");
+    w.str(0, "EOF");
+    w.out
+}
+
+fn head(w: &mut DxfWriter, kind: &str, layer: &str, color: Option<i16>) {
+    w.str(0, kind);
+    w.str(8, layer);
+    if let Some(c) = color {
+        w.int(62, c as i64);
+    }
+}
+
+/// A single piece as LINE or ARC, longer runs as an open POLYLINE.
+fn write_run(w: &mut DxfWriter, layer: &str, color: Option<i16>, run: &BulgeChain) {
+    if run.bulges.len() == 1 {
+        let (a, b, bu) = (run.points[0], run.points[1], run.bulges[0]);
+        match bulge_arc(a, b, bu) {
+            None => {
+                head(w, "LINE", layer, color);
+                w.point(10, a.extend(0.0));
+                w.point(11, b.extend(0.0));
+            }
+            Some((c, r, a0, a1)) => {
+                // ARC runs counter-clockwise from 50 to 51.
+                let (s, e) = if a1 > a0 { (a0, a1) } else { (a1, a0) };
+                head(w, "ARC", layer, color);
+                w.point(10, c.extend(0.0));
+                w.float(40, r);
+                w.float(50, degrees(s));
+                w.float(51, degrees(e));
+            }
+        }
+    } else {
+        write_polyline(w, layer, color, run, false);
+    }
+}
+
+fn write_polyline(
+    w: &mut DxfWriter,
+    layer: &str,
+    color: Option<i16>,
+    ch: &BulgeChain,
+    closed: bool,
+) {
+    head(w, "POLYLINE", layer, color);
+    w.int(66, 1);
+    w.point(10, DVec3::ZERO);
+    w.int(70, closed as i64);
+    for (i, p) in ch.points.iter().enumerate() {
+        w.str(0, "VERTEX");
+        w.str(8, layer);
+        w.point(10, p.extend(0.0));
+        let b = ch.bulges.get(i).copied().unwrap_or(0.0);
+        if b != 0.0 {
+            w.float(42, b);
+        }
+        w.int(70, 0);
+    }
+    w.str(0, "SEQEND");
+    w.str(8, layer);
+}
+
+fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
+    w.str(0, "SECTION");
+    w.str(2, "HEADER");
+    w.str(9, "$ACADVER");
+    w.str(1, "AC1009");
+    w.str(9, "$INSBASE");
+    w.point(10, DVec3::ZERO);
+    let (lo, hi) = d
+        .extents()
+        .map(|(lo, hi)| {
+            (
+                lo * DVec3::new(1.0, 1.0, 0.0),
+                hi * DVec3::new(1.0, 1.0, 0.0),
+            )
+        })
+        .unwrap_or((DVec3::ZERO, DVec3::ZERO));
+    w.str(9, "$EXTMIN");
+    w.point(10, lo);
+    w.str(9, "$EXTMAX");
+    w.point(10, hi);
+    w.str(9, "$LUNITS");
+    w.int(70, 2);
+    w.str(0, "ENDSEC");
+
+    w.str(0, "SECTION");
+    w.str(2, "TABLES");
+    w.str(0, "TABLE");
+    w.str(2, "LTYPE");
+    w.int(70, 1);
+    w.str(0, "LTYPE");
+    w.str(2, "CONTINUOUS");
+    w.int(70, 0);
+    w.str(3, "Solid line");
+    w.int(72, 65);
+    w.int(73, 0);
+    w.float(40, 0.0);
+    w.str(0, "ENDTAB");
+
+    let mut names: Vec<(String, i16)> = Vec::new();
+    for l in d.layers() {
+        let n = r12_layer_name(&l.name);
+        if !names.iter().any(|(m, _)| *m == n) {
+            names.push((n, l.color));
+        }
+    }
+    w.str(0, "TABLE");
+    w.str(2, "LAYER");
+    w.int(70, names.len() as i64);
+    for (n, c) in &names {
+        w.str(0, "LAYER");
+        w.str(2, n);
+        w.int(70, 0);
+        w.int(62, *c as i64);
+        w.str(6, "CONTINUOUS");
+    }
+    w.str(0, "ENDTAB");
+
+    w.str(0, "TABLE");
+    w.str(2, "STYLE");
+    w.int(70, 1);
+    w.str(0, "STYLE");
+    w.str(2, "STANDARD");
+    w.int(70, 0);
+    w.float(40, 0.0);
+    w.float(41, 1.0);
+    w.float(50, 0.0);
+    w.int(71, 0);
+    w.float(42, 2.5);
+    w.str(3, "txt");
+    w.str(4, "");
+    w.str(0, "ENDTAB");
+    w.str(0, "ENDSEC");
+
+    w.str(0, "SECTION");
+    w.str(2, "BLOCKS");
+    w.str(0, "ENDSEC");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(a: (f64, f64), b: (f64, f64)) -> EntityKind {
+        EntityKind::Line {
+            p0: DVec3::new(a.0, a.1, 0.0),
+            p1: DVec3::new(b.0, b.1, 0.0),
+        }
+    }
+
+    #[test]
+    fn duplicate_and_covered_lines_are_removed() {
+        let mut d = Drawing::new();
+        d.add_kind(line((0.0, 0.0), (10.0, 0.0))).unwrap();
+        d.add_kind(line((10.0, 0.0), (0.0, 0.0))).unwrap(); // reversed duplicate
+        d.add_kind(line((2.0, 0.0), (5.0, 0.0))).unwrap(); // covered
+        d.add_kind(line((5.0, 0.0), (15.0, 0.0))).unwrap(); // half covered
+        let s = write_cam(&d, 0.01);
+        assert_eq!(s.matches("\nLINE\n").count(), 2, "{s}");
+        assert!(
+            s.contains(" 10\n10.0\n 20\n0.0\n 30\n0.0\n 11\n15.0\n"),
+            "{s}"
+        );
+    }
+
+    #[test]
+    fn layer_names_are_r12_safe() {
+        assert_eq!(r12_layer_name("Cut line/2"), "CUT_LINE_2");
+        assert_eq!(r12_layer_name(""), "0");
+    }
+}

@@ -1,0 +1,935 @@
+//! The project's own DXF writer. `DxfWriter` emits group-code/value pairs; `write_cad` writes
+//! the CAD profile: AutoCAD R2000 (AC1015) with every section a strict reader expects (header,
+//! classes, tables, blocks, entities, objects), unique handles, owner handles (330) and
+//! subclass markers (100), after the DXF reference and what ezdxf's auditor checks.
+//!
+//! Structural objects (tables, block records, dictionaries, layouts) have fixed handles below
+//! `FIRST_HANDLE`; entities keep their drawing handles; records the drawing does not number
+//! (layers, vertices, extra mesh faces) get handles above the drawing's last one.
+
+use std::fmt::Write as _;
+
+use glam::{DVec2, DVec3};
+
+use super::drawing::{Drawing, Entity, EntityKind};
+use crate::geom::frame::arbitrary_axis;
+
+/// Group-code/value pair emitter into one string buffer.
+pub struct DxfWriter {
+    pub out: String,
+}
+
+impl Default for DxfWriter {
+    fn default() -> Self {
+        DxfWriter::new()
+    }
+}
+
+impl DxfWriter {
+    pub fn new() -> DxfWriter {
+        DxfWriter {
+            out: String::with_capacity(1 << 16),
+        }
+    }
+
+    fn code(&mut self, code: u16) {
+        // Right-justified in three columns, as AutoCAD writes them.
+        let _ = writeln!(self.out, "{code:>3}");
+    }
+
+    pub fn str(&mut self, code: u16, value: &str) {
+        self.code(code);
+        push_dxf_string(&mut self.out, value);
+        self.out.push('\n');
+    }
+
+    pub fn int(&mut self, code: u16, value: i64) {
+        self.code(code);
+        let _ = writeln!(self.out, "{value}");
+    }
+
+    pub fn handle(&mut self, code: u16, h: u64) {
+        self.code(code);
+        let _ = writeln!(self.out, "{h:X}");
+    }
+
+    pub fn float(&mut self, code: u16, value: f64) {
+        self.code(code);
+        push_float(&mut self.out, value);
+        self.out.push('\n');
+    }
+
+    /// A point as codes `code`, `code + 10`, `code + 20`.
+    pub fn point(&mut self, code: u16, p: DVec3) {
+        self.float(code, p.x);
+        self.float(code + 10, p.y);
+        self.float(code + 20, p.z);
+    }
+
+    pub fn point2(&mut self, code: u16, p: DVec2) {
+        self.float(code, p.x);
+        self.float(code + 10, p.y);
+    }
+}
+
+/// The shortest decimal that reads back as the same f64 (Rust's `Display` is round-trip
+/// exact), with a decimal point always present and -0 written as 0.
+pub fn push_float(out: &mut String, x: f64) {
+    let x = if x == 0.0 { 0.0 } else { x };
+    let start = out.len();
+    let _ = write!(out, "{x}");
+    if !out[start..].contains(['.', 'e', 'E', 'N', 'i']) {
+        out.push_str(".0");
+    }
+}
+
+/// DXF strings are one line of the drawing's code page ($DWGCODEPAGE = ANSI_1252): control
+/// characters become spaces, characters outside Windows-1252 AutoCAD's `\U+XXXX` escapes.
+/// (The file is encoded to Windows-1252 bytes at the end, by `encode_cp1252`.)
+fn push_dxf_string(out: &mut String, s: &str) {
+    for c in s.chars() {
+        if c.is_ascii_control() {
+            out.push(' ');
+        } else if c.is_ascii() || cp1252_byte(c).is_some() {
+            out.push(c);
+        } else {
+            let cp = c as u32;
+            if cp <= 0xFFFF {
+                let _ = write!(out, "\\U+{cp:04X}");
+            } else {
+                // Outside the BMP: AutoCAD has no escape for it; a mark keeps the file valid.
+                out.push('?');
+            }
+        }
+    }
+}
+
+/// The Windows-1252 byte of a non-ASCII character, if it has one.
+fn cp1252_byte(c: char) -> Option<u8> {
+    const HIGH: [char; 32] = [
+        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8D}', 'Ž',
+        '\u{8F}', '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9D}',
+        'ž', 'Ÿ',
+    ];
+    let cp = c as u32;
+    if (0xA0..=0xFF).contains(&cp) {
+        return Some(cp as u8);
+    }
+    // The five undefined positions (0x81, 0x8D, 0x8F, 0x90, 0x9D) are C1 controls, never
+    // produced: `push_dxf_string` turns control characters into spaces first.
+    HIGH.iter()
+        .position(|h| *h == c && !c.is_control())
+        .map(|i| 0x80 + i as u8)
+}
+
+/// The file text as Windows-1252 bytes (every character was made representable when written).
+pub fn encode_cp1252(s: String) -> Vec<u8> {
+    if s.is_ascii() {
+        return s.into_bytes();
+    }
+    s.chars()
+        .map(|c| {
+            if c.is_ascii() {
+                c as u8
+            } else {
+                cp1252_byte(c).unwrap_or(b'?')
+            }
+        })
+        .collect()
+}
+
+// Fixed structural handles.
+const H_LAYER_TABLE: u64 = 0x1;
+const H_LTYPE_TABLE: u64 = 0x2;
+const H_APPID_TABLE: u64 = 0x3;
+const H_DIMSTYLE_TABLE: u64 = 0x4;
+const H_STYLE_TABLE: u64 = 0x5;
+const H_UCS_TABLE: u64 = 0x6;
+const H_VIEW_TABLE: u64 = 0x7;
+const H_VPORT_TABLE: u64 = 0x8;
+const H_BLOCK_RECORD_TABLE: u64 = 0x9;
+const H_ROOT_DICT: u64 = 0xA;
+const H_GROUP_DICT: u64 = 0xB;
+const H_LAYOUT_DICT: u64 = 0xC;
+const H_PLOTSTYLE_DICT: u64 = 0xD;
+const H_PLOTSTYLE_NORMAL: u64 = 0xE;
+const H_MODEL_RECORD: u64 = 0xF;
+const H_PAPER_RECORD: u64 = 0x10;
+const H_MODEL_BLOCK: u64 = 0x11;
+const H_MODEL_ENDBLK: u64 = 0x12;
+const H_PAPER_BLOCK: u64 = 0x13;
+const H_PAPER_ENDBLK: u64 = 0x14;
+const H_MODEL_LAYOUT: u64 = 0x15;
+const H_PAPER_LAYOUT: u64 = 0x16;
+const H_VPORT_ACTIVE: u64 = 0x17;
+const H_LTYPE_BYBLOCK: u64 = 0x18;
+const H_LTYPE_BYLAYER: u64 = 0x19;
+const H_LTYPE_CONTINUOUS: u64 = 0x1A;
+const H_APPID_ACAD: u64 = 0x1B;
+const H_DIMSTYLE_STANDARD: u64 = 0x1C;
+const H_STYLE_STANDARD: u64 = 0x1D;
+const H_MLINESTYLE_DICT: u64 = 0x1E;
+const H_MLINESTYLE_STANDARD: u64 = 0x1F;
+
+/// Write the drawing as AutoCAD R2000 DXF (the CAD profile).
+pub fn write_cad(d: &Drawing) -> String {
+    let mut w = DxfWriter::new();
+    let mut next = d.next_handle();
+    let mut alloc = || {
+        let h = next;
+        next += 1;
+        h
+    };
+
+    // Names the tables must define: line types and text styles used by layers and entities.
+    let mut linetypes: Vec<String> = Vec::new();
+    for l in d.layers() {
+        let lt = &l.linetype;
+        let builtin = ["BYBLOCK", "BYLAYER", "CONTINUOUS"]
+            .iter()
+            .any(|b| lt.eq_ignore_ascii_case(b));
+        if !builtin && !linetypes.iter().any(|x| x.eq_ignore_ascii_case(lt)) {
+            linetypes.push(lt.clone());
+        }
+    }
+    let mut styles: Vec<String> = Vec::new();
+    for e in d.entities() {
+        if let EntityKind::Text { style, .. } = &e.kind {
+            if !style.eq_ignore_ascii_case("STANDARD")
+                && !style.is_empty()
+                && !styles.iter().any(|x| x.eq_ignore_ascii_case(style))
+            {
+                styles.push(style.clone());
+            }
+        }
+    }
+    let layer_handles: Vec<u64> = d.layers().iter().map(|_| alloc()).collect();
+    let ltype_handles: Vec<u64> = linetypes.iter().map(|_| alloc()).collect();
+    let style_handles: Vec<u64> = styles.iter().map(|_| alloc()).collect();
+
+    // Entities first into their own buffer: they allocate handles the header's $HANDSEED
+    // must exceed.
+    let mut ents = DxfWriter::new();
+    for e in d.entities() {
+        write_entity(&mut ents, e, &mut alloc);
+    }
+    let handseed = alloc();
+
+    // ---- HEADER ----
+    w.str(0, "SECTION");
+    w.str(2, "HEADER");
+    let var = |w: &mut DxfWriter, name: &str| w.str(9, name);
+    var(&mut w, "$ACADVER");
+    w.str(1, "AC1015");
+    var(&mut w, "$ACADMAINTVER");
+    w.int(70, 6);
+    var(&mut w, "$DWGCODEPAGE");
+    w.str(3, "ANSI_1252");
+    var(&mut w, "$INSBASE");
+    w.point(10, DVec3::ZERO);
+    let (lo, hi) = d
+        .extents()
+        .unwrap_or((DVec3::splat(1e20), DVec3::splat(-1e20)));
+    var(&mut w, "$EXTMIN");
+    w.point(10, lo);
+    var(&mut w, "$EXTMAX");
+    w.point(10, hi);
+    var(&mut w, "$LIMMIN");
+    w.point2(10, DVec2::ZERO);
+    var(&mut w, "$LIMMAX");
+    w.point2(10, DVec2::new(420.0, 297.0));
+    var(&mut w, "$LTSCALE");
+    w.float(40, 1.0);
+    var(&mut w, "$TEXTSTYLE");
+    w.str(7, "Standard");
+    var(&mut w, "$CLAYER");
+    w.str(8, d.current_layer());
+    var(&mut w, "$CELTYPE");
+    w.str(6, "ByLayer");
+    var(&mut w, "$CECOLOR");
+    w.int(62, 256);
+    var(&mut w, "$DIMSTYLE");
+    w.str(2, "Standard");
+    var(&mut w, "$LUNITS");
+    w.int(70, 2);
+    var(&mut w, "$AUNITS");
+    w.int(70, 0);
+    var(&mut w, "$HANDSEED");
+    w.handle(5, handseed);
+    var(&mut w, "$MEASUREMENT");
+    w.int(70, 1);
+    var(&mut w, "$INSUNITS");
+    w.int(70, 4);
+    w.str(0, "ENDSEC");
+
+    // ---- CLASSES: the class-defined objects used in OBJECTS ----
+    w.str(0, "SECTION");
+    w.str(2, "CLASSES");
+    for (dxf_name, cpp_name) in [
+        ("ACDBDICTIONARYWDFLT", "AcDbDictionaryWithDefault"),
+        ("ACDBPLACEHOLDER", "AcDbPlaceHolder"),
+        ("LAYOUT", "AcDbLayout"),
+    ] {
+        w.str(0, "CLASS");
+        w.str(1, dxf_name);
+        w.str(2, cpp_name);
+        w.str(3, "ObjectDBX Classes");
+        w.int(90, 0);
+        w.int(280, 0);
+        w.int(281, 0);
+    }
+    w.str(0, "ENDSEC");
+
+    // ---- TABLES ----
+    w.str(0, "SECTION");
+    w.str(2, "TABLES");
+    let table = |w: &mut DxfWriter, name: &str, h: u64, count: usize| {
+        w.str(0, "TABLE");
+        w.str(2, name);
+        w.handle(5, h);
+        w.handle(330, 0);
+        w.str(100, "AcDbSymbolTable");
+        w.int(70, count as i64);
+    };
+    let record = |w: &mut DxfWriter, kind: &str, h: u64, owner: u64, subclass: &str| {
+        w.str(0, kind);
+        w.handle(5, h);
+        w.handle(330, owner);
+        w.str(100, "AcDbSymbolTableRecord");
+        w.str(100, subclass);
+    };
+
+    table(&mut w, "VPORT", H_VPORT_TABLE, 1);
+    record(
+        &mut w,
+        "VPORT",
+        H_VPORT_ACTIVE,
+        H_VPORT_TABLE,
+        "AcDbViewportTableRecord",
+    );
+    w.str(2, "*Active");
+    w.int(70, 0);
+    w.point2(10, DVec2::ZERO);
+    w.point2(11, DVec2::ONE);
+    let (center, height) = match d.extents() {
+        Some((lo, hi)) => (
+            ((lo + hi) / 2.0).truncate(),
+            ((hi - lo).y.max((hi - lo).x / 1.5)).max(1.0) * 1.1,
+        ),
+        None => (DVec2::new(210.0, 148.5), 297.0),
+    };
+    w.point2(12, center);
+    w.point2(13, DVec2::ZERO);
+    w.point2(14, DVec2::splat(10.0));
+    w.point2(15, DVec2::splat(10.0));
+    w.point(16, DVec3::Z);
+    w.point(17, DVec3::ZERO);
+    w.float(40, height);
+    w.float(41, 1.5);
+    w.float(42, 50.0);
+    w.float(43, 0.0);
+    w.float(44, 0.0);
+    w.float(50, 0.0);
+    w.float(51, 0.0);
+    w.int(71, 0);
+    w.int(72, 1000);
+    w.int(73, 1);
+    w.int(74, 3);
+    w.int(75, 0);
+    w.int(76, 0);
+    w.int(77, 0);
+    w.int(78, 0);
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "LTYPE", H_LTYPE_TABLE, 3 + linetypes.len());
+    let continuous_like = |w: &mut DxfWriter, h: u64, name: &str, desc: &str| {
+        record(w, "LTYPE", h, H_LTYPE_TABLE, "AcDbLinetypeTableRecord");
+        w.str(2, name);
+        w.int(70, 0);
+        w.str(3, desc);
+        w.int(72, 65);
+        w.int(73, 0);
+        w.float(40, 0.0);
+    };
+    continuous_like(&mut w, H_LTYPE_BYBLOCK, "ByBlock", "");
+    continuous_like(&mut w, H_LTYPE_BYLAYER, "ByLayer", "");
+    continuous_like(&mut w, H_LTYPE_CONTINUOUS, "Continuous", "Solid line");
+    // Line types the drawing names but does not define are written solid, so a reader never
+    // meets an undefined name.
+    for (lt, h) in linetypes.iter().zip(&ltype_handles) {
+        continuous_like(&mut w, *h, lt, "");
+    }
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "LAYER", H_LAYER_TABLE, d.layers().len());
+    for (l, h) in d.layers().iter().zip(&layer_handles) {
+        record(&mut w, "LAYER", *h, H_LAYER_TABLE, "AcDbLayerTableRecord");
+        w.str(2, &l.name);
+        w.int(70, (l.frozen as i64) | ((l.locked as i64) << 2));
+        w.int(62, l.color as i64);
+        w.str(6, &l.linetype);
+        w.int(370, -3);
+        w.handle(390, H_PLOTSTYLE_NORMAL);
+    }
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "STYLE", H_STYLE_TABLE, 1 + styles.len());
+    for (name, h) in std::iter::once(("Standard", H_STYLE_STANDARD)).chain(
+        styles
+            .iter()
+            .map(|s| s.as_str())
+            .zip(style_handles.iter().copied()),
+    ) {
+        record(
+            &mut w,
+            "STYLE",
+            h,
+            H_STYLE_TABLE,
+            "AcDbTextStyleTableRecord",
+        );
+        w.str(2, name);
+        w.int(70, 0);
+        w.float(40, 0.0);
+        w.float(41, 1.0);
+        w.float(50, 0.0);
+        w.int(71, 0);
+        w.float(42, 2.5);
+        w.str(3, "txt");
+        w.str(4, "");
+    }
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "VIEW", H_VIEW_TABLE, 0);
+    w.str(0, "ENDTAB");
+    table(&mut w, "UCS", H_UCS_TABLE, 0);
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "APPID", H_APPID_TABLE, 1);
+    record(
+        &mut w,
+        "APPID",
+        H_APPID_ACAD,
+        H_APPID_TABLE,
+        "AcDbRegAppTableRecord",
+    );
+    w.str(2, "ACAD");
+    w.int(70, 0);
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
+    w.str(100, "AcDbDimStyleTable");
+    w.str(0, "DIMSTYLE");
+    w.handle(105, H_DIMSTYLE_STANDARD);
+    w.handle(330, H_DIMSTYLE_TABLE);
+    w.str(100, "AcDbSymbolTableRecord");
+    w.str(100, "AcDbDimStyleTableRecord");
+    w.str(2, "Standard");
+    w.int(70, 0);
+    w.float(40, 1.0);
+    w.float(41, 2.5);
+    w.float(42, 0.625);
+    w.float(43, 3.75);
+    w.float(44, 1.25);
+    w.float(140, 2.5);
+    w.float(141, 2.5);
+    w.float(147, 0.625);
+    w.int(77, 1);
+    w.int(78, 8);
+    w.int(271, 2);
+    w.int(272, 2);
+    w.handle(340, H_STYLE_STANDARD);
+    w.str(0, "ENDTAB");
+
+    table(&mut w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
+    for (h, name, layout) in [
+        (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
+        (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
+    ] {
+        record(
+            &mut w,
+            "BLOCK_RECORD",
+            h,
+            H_BLOCK_RECORD_TABLE,
+            "AcDbBlockTableRecord",
+        );
+        w.str(2, name);
+        w.handle(340, layout);
+    }
+    w.str(0, "ENDTAB");
+    w.str(0, "ENDSEC");
+
+    // ---- BLOCKS ----
+    w.str(0, "SECTION");
+    w.str(2, "BLOCKS");
+    for (rec, blk, end, name) in [
+        (
+            H_MODEL_RECORD,
+            H_MODEL_BLOCK,
+            H_MODEL_ENDBLK,
+            "*Model_Space",
+        ),
+        (
+            H_PAPER_RECORD,
+            H_PAPER_BLOCK,
+            H_PAPER_ENDBLK,
+            "*Paper_Space",
+        ),
+    ] {
+        w.str(0, "BLOCK");
+        w.handle(5, blk);
+        w.handle(330, rec);
+        w.str(100, "AcDbEntity");
+        if rec == H_PAPER_RECORD {
+            w.int(67, 1);
+        }
+        w.str(8, "0");
+        w.str(100, "AcDbBlockBegin");
+        w.str(2, name);
+        w.int(70, 0);
+        w.point(10, DVec3::ZERO);
+        w.str(3, name);
+        w.str(1, "");
+        w.str(0, "ENDBLK");
+        w.handle(5, end);
+        w.handle(330, rec);
+        w.str(100, "AcDbEntity");
+        if rec == H_PAPER_RECORD {
+            w.int(67, 1);
+        }
+        w.str(8, "0");
+        w.str(100, "AcDbBlockEnd");
+    }
+    w.str(0, "ENDSEC");
+
+    // ---- ENTITIES ----
+    w.str(0, "SECTION");
+    w.str(2, "ENTITIES");
+    w.out.push_str(&ents.out);
+    w.str(0, "ENDSEC");
+
+    // ---- OBJECTS ----
+    w.str(0, "SECTION");
+    w.str(2, "OBJECTS");
+    let dict = |w: &mut DxfWriter, h: u64, owner: u64, entries: &[(&str, u64)]| {
+        w.str(0, "DICTIONARY");
+        w.handle(5, h);
+        w.handle(330, owner);
+        w.str(100, "AcDbDictionary");
+        w.int(281, 1);
+        for (k, v) in entries {
+            w.str(3, k);
+            w.handle(350, *v);
+        }
+    };
+    dict(
+        &mut w,
+        H_ROOT_DICT,
+        0,
+        &[
+            ("ACAD_GROUP", H_GROUP_DICT),
+            ("ACAD_LAYOUT", H_LAYOUT_DICT),
+            ("ACAD_MLINESTYLE", H_MLINESTYLE_DICT),
+            ("ACAD_PLOTSTYLENAME", H_PLOTSTYLE_DICT),
+        ],
+    );
+    dict(&mut w, H_GROUP_DICT, H_ROOT_DICT, &[]);
+    dict(
+        &mut w,
+        H_LAYOUT_DICT,
+        H_ROOT_DICT,
+        &[("Layout1", H_PAPER_LAYOUT), ("Model", H_MODEL_LAYOUT)],
+    );
+    dict(
+        &mut w,
+        H_MLINESTYLE_DICT,
+        H_ROOT_DICT,
+        &[("Standard", H_MLINESTYLE_STANDARD)],
+    );
+    w.str(0, "ACDBDICTIONARYWDFLT");
+    w.handle(5, H_PLOTSTYLE_DICT);
+    w.handle(330, H_ROOT_DICT);
+    w.str(100, "AcDbDictionary");
+    w.int(281, 1);
+    w.str(3, "Normal");
+    w.handle(350, H_PLOTSTYLE_NORMAL);
+    w.str(100, "AcDbDictionaryWithDefault");
+    w.handle(340, H_PLOTSTYLE_NORMAL);
+    w.str(0, "ACDBPLACEHOLDER");
+    w.handle(5, H_PLOTSTYLE_NORMAL);
+    w.handle(330, H_PLOTSTYLE_DICT);
+    w.str(0, "MLINESTYLE");
+    w.handle(5, H_MLINESTYLE_STANDARD);
+    w.handle(330, H_MLINESTYLE_DICT);
+    w.str(100, "AcDbMlineStyle");
+    w.str(2, "Standard");
+    w.int(70, 0);
+    w.str(3, "");
+    w.int(62, 256);
+    w.float(51, 90.0);
+    w.float(52, 90.0);
+    w.int(71, 2);
+    w.float(49, 0.5);
+    w.int(62, 256);
+    w.str(6, "BYLAYER");
+    w.float(49, -0.5);
+    w.int(62, 256);
+    w.str(6, "BYLAYER");
+    for (h, name, flag, order, rec) in [
+        (H_MODEL_LAYOUT, "Model", 1024, 0, H_MODEL_RECORD),
+        (H_PAPER_LAYOUT, "Layout1", 0, 1, H_PAPER_RECORD),
+    ] {
+        write_layout(&mut w, h, name, flag, order, rec);
+    }
+    w.str(0, "ENDSEC");
+    w.str(0, "EOF");
+    w.out
+}
+
+fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i64, rec: u64) {
+    w.str(0, "LAYOUT");
+    w.handle(5, h);
+    w.handle(330, H_LAYOUT_DICT);
+    w.str(100, "AcDbPlotSettings");
+    w.str(1, "");
+    w.str(4, "A3");
+    w.str(6, "");
+    for (c, v) in [
+        (40, 7.5),
+        (41, 20.0),
+        (42, 7.5),
+        (43, 20.0),
+        (44, 420.0),
+        (45, 297.0),
+        (46, 0.0),
+        (47, 0.0),
+        (48, 0.0),
+        (49, 0.0),
+        (140, 0.0),
+        (141, 0.0),
+        (142, 1.0),
+        (143, 1.0),
+    ] {
+        w.float(c, v);
+    }
+    w.int(70, plot_flags);
+    w.int(72, 1);
+    w.int(73, 0);
+    w.int(74, 5);
+    w.str(7, "");
+    w.int(75, 16);
+    w.float(147, 1.0);
+    w.float(148, 0.0);
+    w.float(149, 0.0);
+    w.str(100, "AcDbLayout");
+    w.str(1, name);
+    w.int(70, 1);
+    w.int(71, order);
+    w.point2(10, DVec2::ZERO);
+    w.point2(11, DVec2::new(420.0, 297.0));
+    w.point(12, DVec3::ZERO);
+    w.point(14, DVec3::splat(1e20));
+    w.point(15, DVec3::splat(-1e20));
+    w.float(146, 0.0);
+    w.point(13, DVec3::ZERO);
+    w.point(16, DVec3::X);
+    w.point(17, DVec3::Y);
+    w.int(76, 1);
+    w.handle(330, rec);
+}
+
+fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, e: &Entity) {
+    w.str(0, kind);
+    w.handle(5, handle);
+    w.handle(330, H_MODEL_RECORD);
+    w.str(100, "AcDbEntity");
+    w.str(8, &e.layer);
+    if let Some(c) = e.color {
+        w.int(62, c as i64);
+    }
+}
+
+/// The unit normal, and whether it differs from +Z (then 210 is written and points are OCS).
+fn unit_normal(n: DVec3) -> (DVec3, bool) {
+    let n = n.normalize();
+    (n, n != DVec3::Z)
+}
+
+/// WCS point to the OCS of normal `n`.
+pub fn to_ocs(p: DVec3, n: DVec3) -> DVec3 {
+    let (ax, ay) = arbitrary_axis(n);
+    DVec3::new(p.dot(ax), p.dot(ay), p.dot(n.normalize()))
+}
+
+/// Angle in degrees in [0, 360).
+pub fn degrees(a: f64) -> f64 {
+    let d = a.to_degrees().rem_euclid(360.0);
+    if d >= 360.0 {
+        0.0
+    } else {
+        d
+    }
+}
+
+fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) {
+    match &e.kind {
+        EntityKind::Line { p0, p1 } => {
+            entity_head(w, "LINE", e.handle, e);
+            w.str(100, "AcDbLine");
+            w.point(10, *p0);
+            w.point(11, *p1);
+        }
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } => {
+            let (n, ocs) = unit_normal(*normal);
+            entity_head(w, "CIRCLE", e.handle, e);
+            w.str(100, "AcDbCircle");
+            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
+            w.float(40, *radius);
+            if ocs {
+                w.point(210, n);
+            }
+        }
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } => {
+            let (n, ocs) = unit_normal(*normal);
+            entity_head(w, "ARC", e.handle, e);
+            w.str(100, "AcDbCircle");
+            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
+            w.float(40, *radius);
+            if ocs {
+                w.point(210, n);
+            }
+            w.str(100, "AcDbArc");
+            w.float(50, degrees(*start));
+            w.float(51, degrees(*end));
+        }
+        EntityKind::Point { p } => {
+            entity_head(w, "POINT", e.handle, e);
+            w.str(100, "AcDbPoint");
+            w.point(10, *p);
+        }
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } => {
+            let (n, ocs) = unit_normal(*normal);
+            entity_head(w, "LWPOLYLINE", e.handle, e);
+            w.str(100, "AcDbPolyline");
+            w.int(90, points.len() as i64);
+            w.int(70, *closed as i64);
+            w.float(43, 0.0);
+            if *elevation != 0.0 {
+                w.float(38, *elevation);
+            }
+            for (i, p) in points.iter().enumerate() {
+                w.point2(10, *p);
+                let b = bulges.get(i).copied().unwrap_or(0.0);
+                if b != 0.0 {
+                    w.float(42, b);
+                }
+            }
+            if ocs {
+                w.point(210, n);
+            }
+        }
+        EntityKind::Polyline {
+            points,
+            bulges,
+            closed,
+        } => {
+            let z = points[0].z;
+            let flat = points.iter().all(|p| p.z == z);
+            entity_head(w, "POLYLINE", e.handle, e);
+            let owner = e.handle;
+            if flat {
+                w.str(100, "AcDb2dPolyline");
+                w.int(66, 1);
+                w.point(10, DVec3::new(0.0, 0.0, z));
+                w.int(70, *closed as i64);
+            } else {
+                w.str(100, "AcDb3dPolyline");
+                w.int(66, 1);
+                w.point(10, DVec3::ZERO);
+                w.int(70, 8 | *closed as i64);
+            }
+            for (i, p) in points.iter().enumerate() {
+                w.str(0, "VERTEX");
+                w.handle(5, alloc());
+                w.handle(330, owner);
+                w.str(100, "AcDbEntity");
+                w.str(8, &e.layer);
+                w.str(100, "AcDbVertex");
+                if flat {
+                    w.str(100, "AcDb2dVertex");
+                    w.point(10, *p);
+                    let b = bulges.get(i).copied().unwrap_or(0.0);
+                    if b != 0.0 {
+                        w.float(42, b);
+                    }
+                    w.int(70, 0);
+                } else {
+                    w.str(100, "AcDb3dPolylineVertex");
+                    w.point(10, *p);
+                    w.int(70, 32);
+                }
+            }
+            w.str(0, "SEQEND");
+            w.handle(5, alloc());
+            w.handle(330, owner);
+            w.str(100, "AcDbEntity");
+            w.str(8, &e.layer);
+        }
+        EntityKind::Spline {
+            curve, fit_points, ..
+        } => {
+            entity_head(w, "SPLINE", e.handle, e);
+            w.str(100, "AcDbSpline");
+            let plane = plane_normal(&curve.ctrl);
+            if let Some(n) = plane {
+                w.point(210, n);
+            }
+            let mut flags = 0;
+            if plane.is_some() {
+                flags |= 8;
+            }
+            if curve.weights.is_some() {
+                flags |= 4;
+            }
+            w.int(70, flags);
+            w.int(71, curve.degree as i64);
+            w.int(72, curve.knots.len() as i64);
+            w.int(73, curve.ctrl.len() as i64);
+            w.int(74, fit_points.len() as i64);
+            w.float(42, 1e-10);
+            w.float(43, 1e-10);
+            if !fit_points.is_empty() {
+                w.float(44, 1e-10);
+            }
+            for k in &curve.knots {
+                w.float(40, *k);
+            }
+            if let Some(ws) = &curve.weights {
+                for x in ws {
+                    w.float(41, *x);
+                }
+            }
+            for p in &curve.ctrl {
+                w.point(10, *p);
+            }
+            for p in fit_points {
+                w.point(11, *p);
+            }
+        }
+        EntityKind::Face3d { corners } => {
+            write_face(w, e.handle, e, corners);
+        }
+        EntityKind::Text {
+            insert,
+            height,
+            value,
+            rotation,
+            style,
+        } => {
+            entity_head(w, "TEXT", e.handle, e);
+            w.str(100, "AcDbText");
+            w.point(10, *insert);
+            w.float(40, *height);
+            w.str(1, value);
+            if *rotation != 0.0 {
+                w.float(50, degrees(*rotation));
+            }
+            w.str(7, if style.is_empty() { "Standard" } else { style });
+            w.str(100, "AcDbText");
+        }
+        EntityKind::Mesh {
+            vertices,
+            triangles,
+        } => {
+            for (i, t) in triangles.iter().enumerate() {
+                let h = if i == 0 { e.handle } else { alloc() };
+                let c = [
+                    vertices[t[0]],
+                    vertices[t[1]],
+                    vertices[t[2]],
+                    vertices[t[2]],
+                ];
+                write_face(w, h, e, &c);
+            }
+        }
+    }
+}
+
+fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
+    entity_head(w, "3DFACE", h, e);
+    w.str(100, "AcDbFace");
+    w.point(10, c[0]);
+    w.point(11, c[1]);
+    w.point(12, c[2]);
+    w.point(13, c[3]);
+    w.int(70, 0);
+}
+
+/// The unit normal of the plane holding every point (Newell's method over the control
+/// polygon, then a flatness check), or `None` when they are not coplanar or are collinear.
+pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
+    if pts.iter().all(|p| p.z == pts[0].z) {
+        return Some(DVec3::Z);
+    }
+    let o = pts[0];
+    // The largest cross product of spans from the first point gives a robust normal.
+    let mut best = DVec3::ZERO;
+    for i in 1..pts.len() {
+        for j in i + 1..pts.len() {
+            let c = (pts[i] - o).cross(pts[j] - o);
+            if c.length_squared() > best.length_squared() {
+                best = c;
+            }
+        }
+    }
+    let len = best.length();
+    let scale = pts
+        .iter()
+        .map(|p| (*p - o).length())
+        .fold(0.0_f64, f64::max);
+    if len <= 1e-12 * scale * scale || scale == 0.0 {
+        return None;
+    }
+    let n = best / len;
+    let flat = pts.iter().all(|p| (*p - o).dot(n).abs() <= 1e-9 * scale);
+    flat.then_some(n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn floats_round_trip_and_have_a_point() {
+        let mut s = String::new();
+        for x in [0.1, 1.0 / 3.0, 1e-300, 12345678.9, -0.0, 2.0, 1e21] {
+            s.clear();
+            push_float(&mut s, x);
+            assert!(s.contains('.') || s.contains('e'), "{s}");
+            assert_eq!(s.parse::<f64>().unwrap(), if x == 0.0 { 0.0 } else { x });
+        }
+    }
+
+    #[test]
+    fn strings_are_escaped() {
+        let mut s = String::new();
+        push_dxf_string(&mut s, "a\nbé—α");
+        assert_eq!(s, "a bé—\\U+03B1");
+        assert_eq!(encode_cp1252(s), b"a b\xE9\x97\\U+03B1");
+    }
+}

@@ -1,0 +1,490 @@
+//! SVG output: one Inkscape layer (`<g inkscape:groupmode="layer">`) per drawing layer,
+//! 1 drawing unit = 1 mm (`width`/`height` in mm, `viewBox` in drawing units), Y up by a single
+//! `scale(1,-1)` on each layer group, so path data is in drawing coordinates.
+//!
+//! Geometry is projected orthographically along the view direction (VIEWDIR, default +Z = plan
+//! view) onto the plane spanned by `arbitrary_axis(view_dir)`. Exactness: circles and arcs whose
+//! plane faces the view are SVG `A` commands; non-rational splines of degree 1, 2, 3 are `L`,
+//! `Q`, `C` segments of their Bézier decomposition (orthographic projection is affine, so the
+//! projected control points are exact). Everything else (rational or higher-degree splines,
+//! arcs seen obliquely, i.e. ellipses) is approximated by a fine polyline.
+
+use std::fmt::Write as _;
+
+use glam::{DVec2, DVec3};
+use svg::node::element::{Group, Path, Text};
+use svg::Document;
+
+use super::aci::aci_to_hex;
+use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, Drawing, Entity, EntityKind};
+use super::OutputOptions;
+use crate::geom::frame::arbitrary_axis;
+
+/// Segments per Bézier piece (or per radian of an oblique arc) where a curve is sampled.
+const SAMPLES_PER_PIECE: usize = 64;
+
+/// Orthographic projection onto the view plane.
+#[derive(Clone, Copy, Debug)]
+pub struct View {
+    pub right: DVec3,
+    pub up: DVec3,
+    pub dir: DVec3,
+}
+
+impl View {
+    pub fn new(view_dir: DVec3) -> View {
+        let (right, up) = arbitrary_axis(view_dir);
+        View {
+            right,
+            up,
+            dir: view_dir.normalize(),
+        }
+    }
+
+    pub fn project(&self, p: DVec3) -> DVec2 {
+        DVec2::new(p.dot(self.right), p.dot(self.up))
+    }
+
+    /// +1 when a plane with this normal faces the viewer, -1 when it faces away, None when the
+    /// view is oblique to it (its circles project to ellipses).
+    fn facing(&self, normal: DVec3) -> Option<f64> {
+        let c = normal.normalize().dot(self.dir);
+        if (c.abs() - 1.0).abs() < 1e-12 {
+            Some(c.signum())
+        } else {
+            None
+        }
+    }
+}
+
+/// A number in path data: micrometre-of-a-millimetre resolution (1e-6 units), no "-0".
+fn num(out: &mut String, x: f64) {
+    let r = (x * 1e6).round();
+    if r == 0.0 {
+        out.push('0');
+    } else {
+        let _ = write!(out, "{}", r / 1e6);
+    }
+}
+
+fn pt(out: &mut String, p: DVec2) {
+    num(out, p.x);
+    out.push(' ');
+    num(out, p.y);
+}
+
+fn move_to(d: &mut String, p: DVec2) {
+    if !d.is_empty() {
+        d.push(' ');
+    }
+    d.push('M');
+    pt(d, p);
+}
+
+fn line_to(d: &mut String, p: DVec2) {
+    d.push_str(" L");
+    pt(d, p);
+}
+
+/// `A r r 0 large sweep end`: sweep 1 = increasing angle in the path's own (Y-up drawing)
+/// coordinates, i.e. counter-clockwise as drawn; the layer's flip does not change it because
+/// the flag is interpreted before the transform.
+fn arc_to(d: &mut String, r: f64, large: bool, ccw: bool, end: DVec2) {
+    d.push_str(" A");
+    num(d, r);
+    d.push(' ');
+    num(d, r);
+    let _ = write!(d, " 0 {} {} ", large as u8, ccw as u8);
+    pt(d, end);
+}
+
+/// An arc in the view plane: centre, radius, start angle and signed sweep (may be a full turn).
+fn view_arc(d: &mut String, c: DVec2, r: f64, a0: f64, sweep: f64, start_new: bool) {
+    let at = |t: f64| c + DVec2::new(t.cos(), t.sin()) * r;
+    if start_new {
+        move_to(d, at(a0));
+    }
+    // SVG cannot draw a full turn in one command: split into pieces of at most a half turn.
+    let pieces = if sweep.abs() > std::f64::consts::PI {
+        2
+    } else {
+        1
+    };
+    for k in 1..=pieces {
+        let t = a0 + sweep * k as f64 / pieces as f64;
+        let piece = sweep / pieces as f64;
+        arc_to(d, r, piece.abs() > std::f64::consts::PI, piece > 0.0, at(t));
+    }
+}
+
+/// The 3D circle arc (centre, radius, OCS of `normal`) from angle a0 over `sweep` (CCW in its
+/// OCS), projected.
+#[allow(clippy::too_many_arguments)]
+fn circle_arc(
+    d: &mut String,
+    v: &View,
+    center: DVec3,
+    radius: f64,
+    normal: DVec3,
+    a0: f64,
+    sweep: f64,
+    start_new: bool,
+) {
+    let (ax, ay) = arbitrary_axis(normal);
+    let at3 = |t: f64| center + (ax * t.cos() + ay * t.sin()) * radius;
+    match v.facing(normal) {
+        Some(sign) => {
+            // Facing the viewer the OCS axes map by a rotation (sign +1) or a reflection (-1).
+            let c = v.project(center);
+            let s = v.project(at3(a0)) - c;
+            let start = s.y.atan2(s.x);
+            view_arc(d, c, radius, start, sweep * sign, start_new);
+        }
+        None => {
+            // An ellipse in this view: fine polyline.
+            let n = ((sweep.abs() * SAMPLES_PER_PIECE as f64).ceil() as usize).max(8);
+            if start_new {
+                move_to(d, v.project(at3(a0)));
+            }
+            for i in 1..=n {
+                line_to(d, v.project(at3(a0 + sweep * i as f64 / n as f64)));
+            }
+        }
+    }
+}
+
+/// Path data of a polyline given in the OCS of `normal` at `elevation`.
+fn ocs_polyline(
+    d: &mut String,
+    v: &View,
+    points: &[DVec2],
+    bulges: &[f64],
+    closed: bool,
+    elevation: f64,
+    normal: DVec3,
+) {
+    let (ax, ay) = arbitrary_axis(normal);
+    let n = normal.normalize();
+    let to3 = |p: DVec2| ax * p.x + ay * p.y + n * elevation;
+    move_to(d, v.project(to3(points[0])));
+    for (a, b, bulge) in bulge_segments(points, bulges, closed) {
+        match bulge_arc(a, b, bulge) {
+            None => line_to(d, v.project(to3(b))),
+            Some((c, r, a0, a1)) => {
+                let c3 = to3(c);
+                // The arc's OCS angle a0 is measured from `ax`, which is exactly the OCS of n.
+                circle_arc(d, v, c3, r, n, a0, a1 - a0, false);
+            }
+        }
+    }
+    if closed {
+        d.push_str(" Z");
+    }
+}
+
+fn entity_path(e: &Entity, v: &View, stroke: f64) -> Option<String> {
+    let mut d = String::new();
+    match &e.kind {
+        EntityKind::Line { p0, p1 } => {
+            move_to(&mut d, v.project(*p0));
+            line_to(&mut d, v.project(*p1));
+        }
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } => {
+            circle_arc(
+                &mut d,
+                v,
+                *center,
+                *radius,
+                *normal,
+                0.0,
+                std::f64::consts::TAU,
+                true,
+            );
+            d.push_str(" Z");
+        }
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } => circle_arc(
+            &mut d,
+            v,
+            *center,
+            *radius,
+            *normal,
+            *start,
+            ccw_sweep(*start, *end),
+            true,
+        ),
+        EntityKind::Point { p } => {
+            // A zero-length subpath with round caps renders as a dot of the stroke width.
+            let _ = stroke;
+            move_to(&mut d, v.project(*p));
+            d.push_str(" h0");
+        }
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } => ocs_polyline(&mut d, v, points, bulges, *closed, *elevation, *normal),
+        EntityKind::Polyline {
+            points,
+            bulges,
+            closed,
+        } => {
+            let z = points[0].z;
+            if points.iter().all(|p| p.z == z) {
+                let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
+                ocs_polyline(&mut d, v, &flat, bulges, *closed, z, DVec3::Z);
+            } else {
+                move_to(&mut d, v.project(points[0]));
+                for p in &points[1..] {
+                    line_to(&mut d, v.project(*p));
+                }
+                if *closed {
+                    d.push_str(" Z");
+                }
+            }
+        }
+        EntityKind::Spline { curve, .. } => {
+            let pieces = curve.to_beziers();
+            let exact = curve.weights.is_none() && curve.degree <= 3;
+            for (i, (pts, _)) in pieces.iter().enumerate() {
+                if i == 0 {
+                    move_to(&mut d, v.project(pts[0]));
+                }
+                if exact {
+                    d.push_str(match curve.degree {
+                        1 => " L",
+                        2 => " Q",
+                        _ => " C",
+                    });
+                    for (k, p) in pts[1..].iter().enumerate() {
+                        if k > 0 {
+                            d.push(' ');
+                        }
+                        pt(&mut d, v.project(*p));
+                    }
+                }
+            }
+            if !exact {
+                // Rational or degree > 3: SVG has no such curve; a fine polyline instead.
+                let (a, b) = curve.domain();
+                let n = SAMPLES_PER_PIECE * pieces.len();
+                for i in 1..=n {
+                    line_to(
+                        &mut d,
+                        v.project(curve.eval_u(a + (b - a) * i as f64 / n as f64)),
+                    );
+                }
+            }
+        }
+        EntityKind::Face3d { corners } => {
+            move_to(&mut d, v.project(corners[0]));
+            let n = if corners[3] == corners[2] { 3 } else { 4 };
+            for c in &corners[1..n] {
+                line_to(&mut d, v.project(*c));
+            }
+            d.push_str(" Z");
+        }
+        EntityKind::Text { .. } => return None,
+        EntityKind::Mesh {
+            vertices,
+            triangles,
+        } => {
+            // Wireframe: every edge once.
+            let mut edges: Vec<(usize, usize)> = triangles
+                .iter()
+                .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
+                .map(|(a, b)| (a.min(b), a.max(b)))
+                .filter(|(a, b)| a != b)
+                .collect();
+            edges.sort_unstable();
+            edges.dedup();
+            for (a, b) in edges {
+                move_to(&mut d, v.project(vertices[a]));
+                line_to(&mut d, v.project(vertices[b]));
+            }
+            if d.is_empty() {
+                return None;
+            }
+        }
+    }
+    Some(d)
+}
+
+fn text_element(insert: DVec3, height: f64, value: &str, rotation: f64, v: &View) -> Text {
+    let p = v.project(insert);
+    let mut tf = String::from("translate(");
+    pt(&mut tf, p);
+    tf.push_str(") scale(1 -1)");
+    if rotation != 0.0 {
+        // Un-flipped (Y down) space: a negative SVG rotation turns counter-clockwise.
+        tf.push_str(" rotate(");
+        num(&mut tf, -rotation.to_degrees());
+        tf.push(')');
+    }
+    let mut size = String::new();
+    num(&mut size, height);
+    Text::new(value)
+        .set("transform", tf)
+        .set("font-size", size)
+        .set("font-family", "sans-serif")
+        .set("stroke", "none")
+        .set("fill", "currentColor")
+}
+
+/// The SVG document for the drawing (deterministic: same drawing and options, same bytes).
+pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
+    let v = View::new(opts.view_dir);
+    // Extents in the view plane.
+    let mut lo = DVec2::splat(f64::INFINITY);
+    let mut hi = DVec2::splat(f64::NEG_INFINITY);
+    let mut pts = Vec::new();
+    for e in d.entities() {
+        pts.clear();
+        e.kind.extent_points(&mut pts);
+        for p in &pts {
+            let q = v.project(*p);
+            lo = lo.min(q);
+            hi = hi.max(q);
+        }
+    }
+    if !lo.is_finite() {
+        lo = DVec2::ZERO;
+        hi = DVec2::ZERO;
+    }
+    let m = opts.margin.max(0.0);
+    let (x0, y0) = (lo.x - m, -(hi.y + m));
+    let (w, h) = (
+        (hi.x - lo.x + 2.0 * m).max(1e-6),
+        (hi.y - lo.y + 2.0 * m).max(1e-6),
+    );
+    let mut vb = String::new();
+    for (i, x) in [x0, y0, w, h].into_iter().enumerate() {
+        if i > 0 {
+            vb.push(' ');
+        }
+        num(&mut vb, x);
+    }
+    let mm = |x: f64| {
+        let mut s = String::new();
+        num(&mut s, x);
+        s.push_str("mm");
+        s
+    };
+    let mut doc = Document::new()
+        .set(
+            "xmlns:inkscape",
+            "http://www.inkscape.org/namespaces/inkscape",
+        )
+        .set("version", "1.1")
+        .set("width", mm(w))
+        .set("height", mm(h))
+        .set("viewBox", vb);
+
+    // Bucket entities by layer (layer table order, entities in insertion order).
+    let layers = d.layers();
+    let mut buckets: Vec<Vec<&Entity>> = vec![Vec::new(); layers.len()];
+    for e in d.entities() {
+        if let Some(i) = layers
+            .iter()
+            .position(|l| l.name.eq_ignore_ascii_case(&e.layer))
+        {
+            buckets[i].push(e);
+        }
+    }
+    let mut sw = String::new();
+    num(&mut sw, opts.stroke_width_mm);
+    for (i, (layer, ents)) in layers.iter().zip(&buckets).enumerate() {
+        if ents.is_empty() {
+            continue;
+        }
+        let color = aci_to_hex(layer.color);
+        let mut g = Group::new()
+            .set("id", format!("layer{}", i + 1))
+            .set("inkscape:groupmode", "layer")
+            .set("inkscape:label", layer.name.as_str())
+            .set("transform", "scale(1 -1)")
+            .set("fill", "none")
+            .set("stroke", color.as_str())
+            .set("color", color.as_str())
+            .set("stroke-width", sw.as_str())
+            .set("stroke-linecap", "round")
+            .set("stroke-linejoin", "round");
+        if layer.is_off() || layer.frozen {
+            g = g.set("display", "none");
+        }
+        for e in ents {
+            let own = match e.color {
+                Some(c) if (1..=255).contains(&c) => Some(aci_to_hex(c)),
+                _ => None,
+            };
+            if let EntityKind::Text {
+                insert,
+                height,
+                value,
+                rotation,
+                ..
+            } = &e.kind
+            {
+                let mut t = text_element(*insert, *height, value, *rotation, &v);
+                if let Some(c) = &own {
+                    t = t.set("color", c.as_str());
+                }
+                g = g.add(t);
+                continue;
+            }
+            if let Some(data) = entity_path(e, &v, opts.stroke_width_mm) {
+                let mut p = Path::new().set("d", data);
+                if let Some(c) = &own {
+                    p = p.set("stroke", c.as_str());
+                }
+                g = g.add(p);
+            }
+        }
+        doc = doc.add(g);
+    }
+    let mut s = doc.to_string();
+    s.push('\n');
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_compact() {
+        let mut s = String::new();
+        num(&mut s, -0.0000001);
+        s.push(' ');
+        num(&mut s, 1.5);
+        s.push(' ');
+        num(&mut s, 2.0);
+        assert_eq!(s, "0 1.5 2");
+    }
+
+    #[test]
+    fn plan_arc_is_ccw_svg_arc() {
+        let mut d = Drawing::new();
+        d.add_kind(EntityKind::Arc {
+            center: DVec3::ZERO,
+            radius: 1.0,
+            start: 0.0,
+            end: std::f64::consts::FRAC_PI_2,
+            normal: DVec3::Z,
+        })
+        .unwrap();
+        let s = write_svg(&d, &OutputOptions::default());
+        assert!(s.contains(r#"d="M1 0 A1 1 0 0 1 0 1""#), "{s}");
+    }
+}

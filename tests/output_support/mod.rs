@@ -1,0 +1,364 @@
+//! Shared by the output tests: sample drawings, the Python validator, rsvg-convert.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use glam::{DVec2, DVec3};
+use lispcad::geom::bspline::BSpline;
+use lispcad::output::{Drawing, Entity, EntityKind, Layer};
+
+pub fn manifest() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The venv python `.ci/setup` creates. Missing = test failure (never a skip).
+pub fn python() -> PathBuf {
+    let p = manifest().join(".venv/bin/python");
+    assert!(
+        p.exists(),
+        "validator python missing at {}: run `bash .ci/setup` first",
+        p.display()
+    );
+    p
+}
+
+/// Run tests/validate/check_dxf.py and parse its JSON.
+pub fn check_dxf(path: &Path, cam: bool) -> serde_json::Value {
+    let mut cmd = Command::new(python());
+    cmd.arg(manifest().join("tests/validate/check_dxf.py"))
+        .arg(path);
+    if cam {
+        cmd.arg("--cam");
+    }
+    let out = cmd.output().expect("running check_dxf.py");
+    assert!(
+        out.status.success(),
+        "check_dxf.py failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap_or_else(|e| {
+        panic!(
+            "bad JSON from check_dxf.py ({e}): {}",
+            String::from_utf8_lossy(&out.stdout)
+        )
+    });
+    assert!(
+        v.get("load_error").is_none(),
+        "ezdxf.readfile refused {}: {v}",
+        path.display()
+    );
+    assert_eq!(
+        v["audit_errors"],
+        0,
+        "audit errors in {}: {}",
+        path.display(),
+        v["audit_messages"]
+    );
+    assert_eq!(
+        v["audit_fixes"],
+        0,
+        "audit fixes in {}: {}",
+        path.display(),
+        v["audit_messages"]
+    );
+    assert_eq!(
+        v["load_warnings"].as_array().map_or(0, |a| a.len()),
+        0,
+        "ezdxf warned while loading {}: {}",
+        path.display(),
+        v["load_warnings"]
+    );
+    v
+}
+
+/// Render with rsvg-convert to PNG; stderr must be empty.
+pub fn render_svg(svg: &Path, png: &Path) {
+    let out = Command::new("rsvg-convert")
+        .arg("-o")
+        .arg(png)
+        .arg(svg)
+        .output()
+        .expect("rsvg-convert not installed: run `bash .ci/setup`");
+    assert!(
+        out.status.success(),
+        "rsvg-convert failed on {}",
+        svg.display()
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "rsvg-convert warned on {}: {}",
+        svg.display(),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+pub fn v3(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+pub fn cubic_s() -> BSpline {
+    BSpline::new(
+        3,
+        vec![
+            v3(0.0, 40.0, 0.0),
+            v3(10.0, 60.0, 0.0),
+            v3(25.0, 20.0, 0.0),
+            v3(40.0, 55.0, 0.0),
+            v3(55.0, 40.0, 0.0),
+        ],
+        None,
+        None,
+    )
+    .unwrap()
+}
+
+pub fn quad_wave() -> BSpline {
+    BSpline::new(
+        2,
+        vec![
+            v3(60.0, 0.0, 0.0),
+            v3(65.0, 10.0, 0.0),
+            v3(70.0, 0.0, 0.0),
+            v3(75.0, -10.0, 0.0),
+            v3(80.0, 0.0, 0.0),
+        ],
+        Some(vec![0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0]),
+        None,
+    )
+    .unwrap()
+}
+
+/// A closed, C1 quadratic outline (temple-like blob): clamped ends meet at the start point
+/// with matching tangents.
+pub fn closed_quad_outline() -> BSpline {
+    let c = v3(100.0, 30.0, 0.0);
+    let pts: Vec<DVec3> = [
+        (20.0, 0.0),
+        (20.0, 12.0),
+        (0.0, 12.0),
+        (-20.0, 12.0),
+        (-20.0, 0.0),
+        (-20.0, -8.0),
+        (0.0, -8.0),
+        (20.0, -8.0),
+        (20.0, 0.0),
+    ]
+    .iter()
+    .map(|(x, y)| c + v3(*x, *y, 0.0))
+    .collect();
+    BSpline::new(
+        2,
+        pts,
+        Some(vec![
+            0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
+        ]),
+        None,
+    )
+    .unwrap()
+}
+
+/// A rational quadratic: an exact quarter circle (weights 1, √2/2, 1).
+pub fn rational_quarter() -> BSpline {
+    BSpline::new(
+        2,
+        vec![
+            v3(150.0, 0.0, 0.0),
+            v3(150.0, 10.0, 0.0),
+            v3(140.0, 10.0, 0.0),
+        ],
+        None,
+        Some(vec![1.0, std::f64::consts::FRAC_1_SQRT_2, 1.0]),
+    )
+    .unwrap()
+}
+
+/// Every entity kind, two layers with colours, a colour override, OCS arcs.
+pub fn mixed_drawing() -> Drawing {
+    let mut d = Drawing::new();
+    d.set_layer_record(Layer {
+        color: 1,
+        ..Layer::new("Outline")
+    })
+    .unwrap();
+    d.set_layer_record(Layer {
+        color: 5,
+        ..Layer::new("Construction")
+    })
+    .unwrap();
+    let add =
+        |d: &mut Drawing, layer: &str, kind: EntityKind| d.add(Entity::new(layer, kind)).unwrap();
+    add(
+        &mut d,
+        "0",
+        EntityKind::Line {
+            p0: v3(0.0, 0.0, 0.0),
+            p1: v3(50.0, 0.0, 0.0),
+        },
+    );
+    d.add(
+        Entity::new(
+            "Construction",
+            EntityKind::Line {
+                p0: v3(0.0, 0.0, 0.0),
+                p1: v3(0.0, 30.0, 5.0),
+            },
+        )
+        .with_color(3),
+    )
+    .unwrap();
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Circle {
+            center: v3(20.0, 15.0, 0.0),
+            radius: 7.5,
+            normal: DVec3::Z,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Arc {
+            center: v3(40.0, 15.0, 0.0),
+            radius: 5.0,
+            start: 0.3,
+            end: 2.5,
+            normal: DVec3::Z,
+        },
+    );
+    // Mirrored arc (extrusion -Z): OCS x is -WX.
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Arc {
+            center: v3(40.0, 30.0, 0.0),
+            radius: 4.0,
+            start: 0.0,
+            end: std::f64::consts::FRAC_PI_2,
+            normal: -DVec3::Z,
+        },
+    );
+    add(
+        &mut d,
+        "0",
+        EntityKind::Point {
+            p: v3(5.0, 5.0, 0.0),
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::LwPolyline {
+            points: vec![
+                DVec2::new(0.0, -20.0),
+                DVec2::new(30.0, -20.0),
+                DVec2::new(30.0, -10.0),
+                DVec2::new(0.0, -10.0),
+            ],
+            bulges: vec![0.0, 0.5, 0.0, -0.3],
+            closed: true,
+            elevation: 0.0,
+            normal: DVec3::Z,
+        },
+    );
+    add(
+        &mut d,
+        "Construction",
+        EntityKind::Polyline {
+            points: vec![
+                v3(60.0, -20.0, 0.0),
+                v3(70.0, -15.0, 3.0),
+                v3(80.0, -20.0, 6.0),
+            ],
+            bulges: vec![],
+            closed: false,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Polyline {
+            points: vec![
+                v3(60.0, -40.0, 0.0),
+                v3(80.0, -40.0, 0.0),
+                v3(80.0, -30.0, 0.0),
+            ],
+            bulges: vec![0.4, 0.0, 0.0],
+            closed: true,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Spline {
+            curve: cubic_s(),
+            fit_points: vec![],
+            closed: false,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Spline {
+            curve: quad_wave(),
+            fit_points: vec![],
+            closed: false,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Spline {
+            curve: closed_quad_outline(),
+            fit_points: vec![],
+            closed: true,
+        },
+    );
+    add(
+        &mut d,
+        "Outline",
+        EntityKind::Spline {
+            curve: rational_quarter(),
+            fit_points: vec![],
+            closed: false,
+        },
+    );
+    add(
+        &mut d,
+        "0",
+        EntityKind::Face3d {
+            corners: [
+                v3(120.0, -40.0, 0.0),
+                v3(140.0, -40.0, 0.0),
+                v3(140.0, -20.0, 10.0),
+                v3(120.0, -20.0, 10.0),
+            ],
+        },
+    );
+    add(
+        &mut d,
+        "0",
+        EntityKind::Text {
+            insert: v3(0.0, 70.0, 0.0),
+            height: 5.0,
+            value: "lispcad 1:1 mm".to_string(),
+            rotation: 0.0,
+            style: "Standard".to_string(),
+        },
+    );
+    add(
+        &mut d,
+        "Construction",
+        EntityKind::Mesh {
+            vertices: vec![
+                v3(160.0, 0.0, 0.0),
+                v3(180.0, 0.0, 0.0),
+                v3(180.0, 20.0, 5.0),
+                v3(160.0, 20.0, 5.0),
+            ],
+            triangles: vec![[0, 1, 2], [0, 2, 3]],
+        },
+    );
+    d
+}
