@@ -41,14 +41,16 @@ pub fn check(files: &[PathBuf]) -> i32 {
         eprintln!("error: check needs at least one file");
         return EXIT_USAGE;
     }
+    super::diag::install_hook();
     let mut errors = 0;
     let mut warnings = 0;
+    let mut unreadable = false;
     for file in files {
         let text = match std::fs::read_to_string(file) {
             Ok(t) => t,
             Err(e) => {
                 eprintln!("error: cannot read {}: {e}", file.display());
-                errors += 1;
+                unreadable = true;
                 continue;
             }
         };
@@ -97,7 +99,9 @@ pub fn check(files: &[PathBuf]) -> i32 {
         "{} file(s) checked: {errors} error(s), {warnings} warning(s)",
         files.len()
     );
-    if errors > 0 {
+    if unreadable {
+        EXIT_USAGE
+    } else if errors > 0 {
         EXIT_SCRIPT_ERROR
     } else {
         EXIT_OK

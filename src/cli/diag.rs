@@ -7,7 +7,7 @@ use crate::lang::{Interp, LispError};
 
 /// miette's handler without line wrapping: the first line must stay AutoLISP's whole message
 /// (scripts and tests match on it), whatever the terminal width.
-fn install_hook() {
+pub fn install_hook() {
     static HOOK: Once = Once::new();
     HOOK.call_once(|| {
         let _ = miette::set_hook(Box::new(|_| {

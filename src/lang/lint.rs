@@ -26,6 +26,8 @@ struct Ctx<'a> {
     it: &'a Interp,
     parsed: &'a Parsed,
     defined: HashSet<Sym>,
+    /// (function, symbol) leaks already reported: one warning per symbol per defun.
+    leaked: HashSet<(Sym, Sym)>,
     out: Vec<Lint>,
 }
 
@@ -39,6 +41,7 @@ pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
         it,
         parsed,
         defined,
+        leaked: HashSet::new(),
         out: Vec::new(),
     };
     for (f, span) in &parsed.forms {
@@ -57,6 +60,21 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
                 out.insert(n);
             }
         }
+        // (setq name (lambda ...)) or (setq name (function (lambda ...))) defines name too.
+        if c.car.as_sym() == Some(S_SETQ) {
+            let args: Vec<Value> = c.cdr.iter().cloned().collect();
+            for pair in args.chunks(2) {
+                if let [Value::Sym(n), v] = pair {
+                    let head = v.car().as_sym();
+                    let is_fn = head == Some(S_LAMBDA)
+                        || head == Some(S_FUNCTION)
+                            && v.cdr().car().car().as_sym() == Some(S_LAMBDA);
+                    if is_fn {
+                        out.insert(*n);
+                    }
+                }
+            }
+        }
         if c.car.as_sym() == Some(S_QUOTE) {
             return;
         }
@@ -64,6 +82,11 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
             collect_defuns(x, out, depth + 1);
         }
     }
+}
+
+/// `*name*` marks a global on purpose (the common AutoLISP convention): no leak warning.
+fn is_earmuffed(name: &str) -> bool {
+    name.len() > 2 && name.starts_with('*') && name.ends_with('*')
 }
 
 /// Parameters and locals of `(args / locals)`.
@@ -122,7 +145,10 @@ impl Ctx<'_> {
                 for (i, x) in args.iter().enumerate() {
                     if i % 2 == 0 {
                         if let (Some(s), Some(f)) = (x.as_sym(), defun) {
-                            if !scope.contains(&s) {
+                            if !scope.contains(&s)
+                                && !is_earmuffed(self.it.syms.name(s))
+                                && self.leaked.insert((f, s))
+                            {
                                 let (sn, fname) = (self.it.syms.name(s), self.it.syms.name(f));
                                 self.push(
                                     Severity::Warning,
