@@ -42,6 +42,8 @@ pub struct InputState {
     /// Ask on the terminal when there is no answer list (the interactive REPL).
     pub terminal: bool,
     pending: Option<Initget>,
+    /// The rest of a console line `read-char` has started (with its newline).
+    chars: VecDeque<char>,
 }
 
 impl InputState {
@@ -176,6 +178,30 @@ fn next_answer(it: &mut Interp, func: &str, prompt: Option<&str>) -> Result<Stri
         Ok(_) => Ok(line.trim_end_matches(['\n', '\r']).to_string()),
         Err(e) => Err(err(format!("{func}: cannot read the terminal: {e}"))),
     }
+}
+
+/// `(read-line)` without a file: the next console line (answers file or terminal); the rest of
+/// a line `read-char` started comes first.
+pub fn console_read_line(it: &mut Interp) -> LResult {
+    let st = it.ext::<InputState>();
+    if !st.chars.is_empty() {
+        let rest: String = st.chars.drain(..).collect();
+        return Ok(Value::str(rest.trim_end_matches('\n')));
+    }
+    Ok(Value::str(&next_answer(it, "read-line", None)?))
+}
+
+/// `(read-char)` without a file: the next character code of the console input, 10 at the end
+/// of each line, as AutoLISP's keyboard buffer gives them.
+pub fn console_read_char(it: &mut Interp) -> LResult {
+    if it.ext::<InputState>().chars.is_empty() {
+        let line = next_answer(it, "read-char", None)?;
+        let st = it.ext::<InputState>();
+        st.chars.extend(line.chars());
+        st.chars.push_back('\n');
+    }
+    let c = it.ext::<InputState>().chars.pop_front().unwrap_or('\n');
+    Ok(Value::Int(c as i32))
 }
 
 /// The optional (base point, prompt) arguments in either order, as AutoLISP accepts them.
