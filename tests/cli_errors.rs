@@ -304,3 +304,9 @@ fn error_handler_sees_autolisp_message() {
     assert!(r.out.starts_with("caught: divide by zero"), "{}", r.out);
     assert_eq!(r.code, Some(1));
 }
+
+#[test]
+fn eval_accepts_expressions_starting_with_a_minus() {
+    let r = eval("-.5", &[]);
+    assert_eq!((r.code, r.out.trim()), (Some(0), "-0.5"));
+}

@@ -105,3 +105,34 @@ fn an_unfinished_entry_at_end_of_input_is_reported() {
     assert_eq!(out, "1\n");
     assert!(err.contains("never closed"), "{err}");
 }
+
+#[test]
+fn no_subcommand_starts_the_repl() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir.path())
+        .env("NO_COLOR", "1")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(b"(* 6 7)\n").unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "42\n");
+}
+
+#[test]
+fn answers_feed_get_functions_in_the_repl() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("a.txt"), "3,4\n").unwrap();
+    let (code, out, err) = repl_in(
+        dir.path(),
+        &["--answers", "a.txt"],
+        "(distance '(0 0) (getpoint \"P: \"))\n(getreal)\n(+ 1 1)\n",
+    );
+    assert_eq!(code, 0);
+    assert_eq!(lines(&out), ["5.0", "2"]);
+    assert!(err.contains("getreal: no answers left"), "{err}");
+}
