@@ -310,3 +310,18 @@ fn eval_accepts_expressions_starting_with_a_minus() {
     let r = eval("-.5", &[]);
     assert_eq!((r.code, r.out.trim()), (Some(0), "-0.5"));
 }
+
+#[test]
+fn repeated_frames_are_collapsed_with_a_count() {
+    let r = run_script(
+        "(defun d (n)\n  (if (= n 0) (car 1) (d (1- n))))\n(defun e () (d 3))\n(e)\n",
+        &[],
+    );
+    assert_eq!(r.message(), "bad argument type: consp 1");
+    let d_frames = "in (D) called at s.lsp:2:23 [3 times]";
+    let first = "in (D) called at s.lsp:3:13";
+    let e = "in (E) called at s.lsp:4:1";
+    let (a, b, c) = (r.err.find(d_frames), r.err.find(first), r.err.find(e));
+    assert!(a.is_some() && b.is_some() && c.is_some(), "{}", r.err);
+    assert!(a < b && b < c, "{}", r.err);
+}
