@@ -105,3 +105,22 @@ fn parse_errors_fail_the_check() {
     let (code, err) = check("(setq a 1))\n");
     assert_eq!(code, 1, "{err}");
 }
+
+#[test]
+fn wrong_argument_count_to_a_defun_of_the_file_is_a_warning() {
+    let script = "(defun f (a b / c) (list a b))\n(f 1)\n(f 1 2)\n(f 1 2 3)\n\
+                  (defun g (x) x)\n(defun g (x y) x)\n(g 1)\n(setq h (lambda (x) x))\n(h)\n";
+    let (code, err) = check(script);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("too few arguments: (F) is defined with 2 parameter(s), called with 1"),
+        "{err}"
+    );
+    assert!(err.contains("[c.lsp:2:1]"), "{err}");
+    assert!(
+        err.contains("too many arguments: (F) is defined with 2 parameter(s), called with 3"),
+        "{err}"
+    );
+    // G has two definitions and H is a variable: no guess about their arity.
+    assert!(err.contains("0 error(s), 2 warning(s)"), "{err}");
+}

@@ -1,7 +1,7 @@
 //! `lispcad check`: static checks on read (not evaluated) code — global leaks from `setq` inside
 //! a `defun`, wrong argument counts to builtins, calls of functions defined nowhere.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use super::error::Span;
 use super::reader::Parsed;
@@ -26,6 +26,8 @@ struct Ctx<'a> {
     it: &'a Interp,
     parsed: &'a Parsed,
     defined: HashSet<Sym>,
+    /// Parameter counts of the file's defuns; None when a name is defined with two counts.
+    arity: HashMap<Sym, Option<usize>>,
     /// (function, symbol) leaks already reported: one warning per symbol per defun.
     leaked: HashSet<(Sym, Sym)>,
     out: Vec<Lint>,
@@ -34,13 +36,15 @@ struct Ctx<'a> {
 /// Lints every form of a parsed source, against the builtins of `it`.
 pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
     let mut defined = HashSet::new();
+    let mut arity = HashMap::new();
     for (f, _) in &parsed.forms {
-        collect_defuns(f, &mut defined, 0);
+        collect_defuns(f, &mut defined, &mut arity, 0);
     }
     let mut cx = Ctx {
         it,
         parsed,
         defined,
+        arity,
         leaked: HashSet::new(),
         out: Vec::new(),
     };
@@ -50,7 +54,12 @@ pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
     cx.out
 }
 
-fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
+fn collect_defuns(
+    f: &Value,
+    out: &mut HashSet<Sym>,
+    arity: &mut HashMap<Sym, Option<usize>>,
+    depth: usize,
+) {
     if depth > 200 {
         return;
     }
@@ -58,6 +67,17 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
         if matches!(c.car.as_sym(), Some(S_DEFUN | S_DEFUN_Q)) {
             if let Some(n) = c.cdr.car().as_sym() {
                 out.insert(n);
+                let params = c
+                    .cdr
+                    .cdr()
+                    .car()
+                    .iter()
+                    .take_while(|p| p.as_sym() != Some(S_SLASH))
+                    .count();
+                let e = arity.entry(n).or_insert(Some(params));
+                if *e != Some(params) {
+                    *e = None;
+                }
             }
         }
         // (setq name (lambda ...)) or (setq name (function (lambda ...))) defines name too.
@@ -71,6 +91,8 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
                             && v.cdr().car().car().as_sym() == Some(S_LAMBDA);
                     if is_fn {
                         out.insert(*n);
+                        // Its arity is not tracked: the name may be set to other lambdas.
+                        arity.insert(*n, None);
                     }
                 }
             }
@@ -79,7 +101,7 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
             return;
         }
         for x in f.iter() {
-            collect_defuns(x, out, depth + 1);
+            collect_defuns(x, out, arity, depth + 1);
         }
     }
 }
@@ -218,6 +240,18 @@ impl Ctx<'_> {
                 }
             }
             Some(Value::Subr(_)) => {}
+            _ if self.defined.contains(&f) => {
+                if let Some(Some(params)) = self.arity.get(&f) {
+                    if n != *params {
+                        let few = if n < *params { "few" } else { "many" };
+                        self.push(
+                            Severity::Warning,
+                            format!("too {few} arguments: ({name}) is defined with {params} parameter(s), called with {n}"),
+                            span,
+                        );
+                    }
+                }
+            }
             _ => {
                 if !self.defined.contains(&f) && !scope.contains(&f) {
                     self.push(
