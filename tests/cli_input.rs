@@ -247,3 +247,19 @@ fn eval_reads_answers_too() {
     );
     assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "5.0");
 }
+
+/// The table of AutoCAD's getangle/getorient reference: ANGBASE 90 (north), ANGDIR 1
+/// (clockwise); typed degrees -> radians returned.
+#[test]
+fn getangle_and_getorient_follow_the_reference_table() {
+    let got = values(
+        "(progn (setvar \"ANGBASE\" (/ pi 2)) (setvar \"ANGDIR\" 1) nil) \
+         (getangle) (getangle) (getangle) (getangle) \
+         (getorient) (getorient) (getorient) (getorient)",
+        "0\n-90\n180\n90\n0\n-90\n180\n90\n",
+    );
+    assert_eq!(
+        got,
+        ["nil", "0.0", "1.5708", "3.14159", "4.71239", "1.5708", "3.14159", "4.71239", "0.0"]
+    );
+}
