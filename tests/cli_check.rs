@@ -124,3 +124,51 @@ fn wrong_argument_count_to_a_defun_of_the_file_is_a_warning() {
     // G has two definitions and H is a variable: no guess about their arity.
     assert!(err.contains("0 error(s), 2 warning(s)"), "{err}");
 }
+
+#[test]
+fn functions_from_loaded_files_and_files_checked_together_are_defined() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path();
+    std::fs::create_dir(p.join("lib")).unwrap();
+    std::fs::write(
+        p.join("lib/util.lsp"),
+        "(defun util-a (x) x)\n(load \"deeper\")\n",
+    )
+    .unwrap();
+    std::fs::write(
+        p.join("lib/deeper.lsp"),
+        "(defun util-b () 1)\n(load \"util\")\n",
+    )
+    .unwrap();
+    std::fs::write(p.join("other.lsp"), "(defun other-c () 2)\n").unwrap();
+    std::fs::write(
+        p.join("main.lsp"),
+        "(load \"lib/util\")\n(util-a (util-b))\n(other-c)\n(nowhere-d)\n",
+    )
+    .unwrap();
+    let run = |files: &[&str]| {
+        let o = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+            .arg("check")
+            .args(files)
+            .current_dir(p)
+            .env("NO_COLOR", "1")
+            .output()
+            .unwrap();
+        (
+            o.status.code().unwrap(),
+            String::from_utf8_lossy(&o.stderr).into_owned(),
+        )
+    };
+    let (code, err) = run(&["main.lsp"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("UTIL-A") && !err.contains("UTIL-B"), "{err}");
+    assert!(err.contains("undefined function OTHER-C"), "{err}");
+    assert!(err.contains("undefined function NOWHERE-D"), "{err}");
+    let (code, err) = run(&["main.lsp", "other.lsp"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!err.contains("OTHER-C"), "{err}");
+    assert!(
+        err.contains("2 file(s) checked: 0 error(s), 1 warning(s)"),
+        "{err}"
+    );
+}

@@ -35,10 +35,57 @@ struct Ctx<'a> {
 
 /// Lints every form of a parsed source, against the builtins of `it`.
 pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
+    lint_with(it, parsed, &HashSet::new())
+}
+
+/// The functions a source defines (`defun`, `defun-q`, `setq` of a lambda), for linting the
+/// files that use them.
+pub fn defined_functions(parsed: &Parsed) -> HashSet<Sym> {
     let mut defined = HashSet::new();
     let mut arity = HashMap::new();
     for (f, _) in &parsed.forms {
         collect_defuns(f, &mut defined, &mut arity, 0);
+    }
+    defined
+}
+
+/// The literal file names of `(load "name" ...)` forms anywhere in a source.
+pub fn loaded_files(parsed: &Parsed, syms: &super::symbols::SymbolTable) -> Vec<String> {
+    fn walk(v: &Value, load: Option<Sym>, out: &mut Vec<String>, depth: usize) {
+        let Value::Cons(c) = v else { return };
+        if depth > 200 {
+            return;
+        }
+        if load.is_some() && c.car.as_sym() == load {
+            if let Some(name) = c.cdr.car().as_str() {
+                out.push(name.to_string());
+            }
+        }
+        for x in v.iter() {
+            walk(x, load, out, depth + 1);
+        }
+    }
+    let load = syms.lookup("LOAD");
+    let mut out = Vec::new();
+    for (f, _) in &parsed.forms {
+        walk(f, load, &mut out, 0);
+    }
+    out
+}
+
+/// Lints a source knowing that `known` functions are defined elsewhere (files checked together,
+/// files it loads).
+pub fn lint_with(it: &Interp, parsed: &Parsed, known: &HashSet<Sym>) -> Vec<Lint> {
+    let mut defined = known.clone();
+    let mut arity = HashMap::new();
+    for (f, _) in &parsed.forms {
+        collect_defuns(f, &mut defined, &mut arity, 0);
+    }
+    // A function also defined in another file may have another parameter list there.
+    for s in known {
+        if arity.contains_key(s) {
+            arity.insert(*s, None);
+        }
     }
     let mut cx = Ctx {
         it,
