@@ -136,3 +136,42 @@ fn answers_feed_get_functions_in_the_repl() {
     assert_eq!(lines(&out), ["5.0", "2"]);
     assert!(err.contains("getreal: no answers left"), "{err}");
 }
+
+/// SIGINT (Ctrl-C) during an evaluation interrupts it and the session goes on.
+#[cfg(unix)]
+#[test]
+fn interrupt_stops_a_running_evaluation_not_the_session() {
+    use std::io::{BufRead, BufReader};
+    let dir = tempfile::tempdir().unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .arg("repl")
+        .current_dir(dir.path())
+        .env("NO_COLOR", "1")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let mut out = BufReader::new(child.stdout.take().unwrap());
+    // A first answer proves the REPL (and its interrupt handler) is up.
+    stdin.write_all(b"(+ 40 2)\n").unwrap();
+    let mut line = String::new();
+    out.read_line(&mut line).unwrap();
+    assert_eq!(line, "42\n");
+    stdin.write_all(b"(while t 1)\n").unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    stdin.write_all(b"(+ 1 2)\n").unwrap();
+    drop(stdin);
+    let mut rest = String::new();
+    std::io::Read::read_to_string(&mut out, &mut rest).unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "ended by a signal?");
+    assert_eq!(rest, "3\n");
+    assert!(String::from_utf8_lossy(&o.stderr).contains("interrupted"));
+}
