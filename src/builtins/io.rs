@@ -22,9 +22,9 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("alert", "(alert string)", "Shows a message (printed, headless); returns nil.", 1, 1, alert),
     builtin!("open", "(open filename mode)", "Opens a file for \"r\"ead, \"w\"rite or \"a\"ppend; a file descriptor, or nil on failure.", 2, 2, open),
     builtin!("close", "(close file)", "Closes a file; returns nil.", 1, 1, close),
-    builtin!("read-line", "(read-line [file])", "The next line of a file without its newline; nil at end of file.", 0, 1, read_line),
+    builtin!("read-line", "(read-line [file])", "The next line of a file without its newline, nil at end of file; without a file, the next console line (--answers or terminal).", 0, 1, read_line),
     builtin!("write-line", "(write-line string [file])", "Writes the string and a newline; returns the string.", 1, 2, write_line),
-    builtin!("read-char", "(read-char [file])", "The code of the next character of a file; nil at end of file.", 0, 1, read_char),
+    builtin!("read-char", "(read-char [file])", "The code of the next character of a file, nil at end of file; without a file, of the console input (10 ends a line).", 0, 1, read_char),
     builtin!("write-char", "(write-char code [file])", "Writes one character; returns its code.", 1, 2, write_char),
     builtin!("findfile", "(findfile name)", "The full path of a file found in the script's directory or the current one, or nil.", 1, 1, findfile),
 ];
@@ -215,6 +215,9 @@ fn reader_of<'a>(it: &Interp, a: &'a [Value]) -> Result<&'a LispFile, crate::lan
 }
 
 fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
+    if a.is_empty() {
+        return super::input::console_read_line(it);
+    }
     let f = reader_of(it, a)?;
     let mut h = f.handle.borrow_mut();
     let Handle::Read(r) = &mut *h else {
@@ -238,6 +241,9 @@ fn write_line(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn read_char(it: &mut Interp, a: &[Value]) -> LResult {
+    if a.is_empty() {
+        return super::input::console_read_char(it);
+    }
     let f = reader_of(it, a)?;
     let mut h = f.handle.borrow_mut();
     let Handle::Read(r) = &mut *h else {

@@ -537,10 +537,16 @@ fn vl_sort(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn vl_sort_i(it: &mut Interp, a: &[Value]) -> LResult {
-    let items = elements(it, &a[0])?;
+    let mut items = elements(it, &a[0])?;
     let less = it.callable(&a[1])?;
+    // AutoCAD lists equal elements last-first: its reference gives
+    // (vl-sort-i '(3 2 1 3) '<) => (2 1 3 0). A stable sort of the reversed list does that.
+    items.reverse();
+    let n = items.len();
     let order = sort_indices(it, &items, &less)?;
-    Ok(Value::list(order.into_iter().map(|i| Value::Int(i as i32))))
+    Ok(Value::list(
+        order.into_iter().map(|i| Value::Int((n - 1 - i) as i32)),
+    ))
 }
 
 fn acad_strlsort(it: &mut Interp, a: &[Value]) -> LResult {

@@ -11,6 +11,7 @@ pub mod entities;
 pub mod format;
 pub mod geom2d;
 pub mod geometry;
+pub mod input;
 pub mod io;
 pub mod lists;
 pub mod numbers;
@@ -35,6 +36,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Strings", strings::BUILTINS),
         ("Strings: formatting and matching", format::BUILTINS),
         ("Printing and files", io::BUILTINS),
+        ("Interactive input", input::BUILTINS),
         ("Curves", geometry::BUILTINS),
         ("Surfaces and meshes", surfaces::BUILTINS),
         ("Eyeglass temple", temple::BUILTINS),

@@ -11,14 +11,14 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("-", "(- [number [number...]])", "The first number minus the rest; with one argument, its negation.", 0, MANY, sub),
     builtin!("*", "(* [number...])", "The product; integer if every argument is an integer.", 0, MANY, mul),
     builtin!("/", "(/ [number [number...]])", "The first number divided by the rest; integer division (truncating) when all are integers.", 0, MANY, div),
-    builtin!("rem", "(rem number number...)", "The remainder of dividing the first number by the rest (sign of the dividend).", 1, MANY, rem),
+    builtin!("rem", "(rem [number number...])", "The remainder of dividing the first number by the rest (sign of the dividend); 0 without arguments.", 0, MANY, rem),
     builtin!("1+", "(1+ number)", "The number plus 1.", 1, 1, one_plus),
     builtin!("1-", "(1- number)", "The number minus 1.", 1, 1, one_minus),
     builtin!("abs", "(abs number)", "The absolute value.", 1, 1, abs),
     builtin!("fix", "(fix number)", "The number truncated toward zero to an integer.", 1, 1, fix),
     builtin!("float", "(float number)", "The number as a real.", 1, 1, float),
-    builtin!("max", "(max number...)", "The largest number (real if any argument is real).", 1, MANY, max),
-    builtin!("min", "(min number...)", "The smallest number (real if any argument is real).", 1, MANY, min),
+    builtin!("max", "(max [number...])", "The largest number (real if any argument is real); 0 without arguments.", 0, MANY, max),
+    builtin!("min", "(min [number...])", "The smallest number (real if any argument is real); 0 without arguments.", 0, MANY, min),
     builtin!("gcd", "(gcd int int)", "The greatest common divisor of two integers.", 2, 2, gcd),
     builtin!("lcm", "(lcm int int...)", "The least common multiple of integers.", 1, MANY, lcm),
     builtin!("sqrt", "(sqrt number)", "The square root, as a real.", 1, 1, sqrt),
@@ -117,6 +117,9 @@ fn div(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn rem(it: &mut Interp, a: &[Value]) -> LResult {
+    if a.is_empty() {
+        return Ok(Value::Int(0));
+    }
     if a.len() == 1 {
         it.num(&a[0])?;
         return Ok(a[0].clone());
@@ -192,11 +195,18 @@ fn extremum(it: &Interp, a: &[Value], pick_first: fn(f64, f64) -> bool) -> LResu
     })
 }
 
+// AutoCAD's reference: "If no argument is supplied, max returns 0" (min likewise).
 fn max(it: &mut Interp, a: &[Value]) -> LResult {
+    if a.is_empty() {
+        return Ok(Value::Int(0));
+    }
     extremum(it, a, |v, b| v > b)
 }
 
 fn min(it: &mut Interp, a: &[Value]) -> LResult {
+    if a.is_empty() {
+        return Ok(Value::Int(0));
+    }
     extremum(it, a, |v, b| v < b)
 }
 

@@ -125,7 +125,18 @@ fn read(it: &mut Interp, a: &[Value]) -> LResult {
     it.sync_cells();
     match r {
         Ok(Some((v, _))) => Ok(v),
-        Ok(None) => Ok(Value::Nil),
+        // Nothing read: empty text is nil, an unfinished or stray bracket is AutoLISP's error.
+        Ok(None) => match crate::lang::reader::scan(&text) {
+            crate::lang::reader::Scan::Incomplete(e) if e.message.contains("string") => {
+                Err(err("malformed string on input"))
+            }
+            crate::lang::reader::Scan::Incomplete(e) if e.message.contains("comment") => {
+                Ok(Value::Nil)
+            }
+            crate::lang::reader::Scan::Incomplete(_) => Err(err("malformed list on input")),
+            crate::lang::reader::Scan::Invalid(e) => Err(err(e.message)),
+            crate::lang::reader::Scan::Complete => Ok(Value::Nil),
+        },
         Err(e) => Err(err(if e.message.starts_with("malformed list") {
             "malformed list on input".to_string()
         } else {

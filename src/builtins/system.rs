@@ -115,6 +115,10 @@ impl Default for SysVars {
         );
         put("PLATFORM", Value::str(std::env::consts::OS));
         put("DWGNAME", Value::str("Drawing1.dwg"));
+        put(
+            "LASTPOINT",
+            Value::list([Value::Real(0.0), Value::Real(0.0), Value::Real(0.0)]),
+        );
         SysVars { vars }
     }
 }

@@ -58,6 +58,8 @@ pub enum Command {
     Run(run::RunArgs),
     /// Evaluate one expression and print its value.
     Eval {
+        /// The expression (may start with `-`, e.g. `-.5`).
+        #[arg(allow_hyphen_values = true)]
         expr: String,
         /// Bind a global before evaluating: NAME=VALUE (VALUE read as a literal).
         #[arg(long = "set", value_name = "NAME=VALUE")]

@@ -69,13 +69,19 @@ impl Highlighter for ReplHelper {
     }
 }
 
+/// Whether an entry is ready to evaluate: a `:command` line, or text whose forms are all closed
+/// by the reader's own scan (so parens in strings and comments do not count). Malformed text
+/// (a stray `)`) is "complete" too: evaluating it reports the error.
+fn entry_complete(input: &str) -> bool {
+    input.trim_start().starts_with(':') || !matches!(scan(input), Scan::Incomplete(_))
+}
+
 impl Validator for ReplHelper {
     fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
-        Ok(match scan(ctx.input()) {
-            Scan::Incomplete(_) if !ctx.input().trim_start().starts_with(':') => {
-                ValidationResult::Incomplete
-            }
-            _ => ValidationResult::Valid(None),
+        Ok(if entry_complete(ctx.input()) {
+            ValidationResult::Valid(None)
+        } else {
+            ValidationResult::Incomplete
         })
     }
 }
@@ -99,7 +105,13 @@ fn completion_names(it: &Interp) -> Vec<String> {
 }
 
 pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
-    let mut it = super::run::configured_interp(common);
+    let mut it = match super::run::configured_interp(common) {
+        Ok(it) => it,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return super::EXIT_USAGE;
+        }
+    };
     for f in files {
         if let Err(e) = it.load_file(&f.display().to_string()) {
             diag::print_error(&it, &e);
@@ -109,6 +121,7 @@ pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
     // Ctrl-C while evaluating interrupts the evaluation; while editing, rustyline sees it.
     let _ = ctrlc::set_handler(move || flag.store(true, std::sync::atomic::Ordering::Relaxed));
     if std::io::stdin().is_terminal() {
+        it.ext::<crate::builtins::input::InputState>().terminal = true;
         interactive(&mut it)
     } else {
         piped(&mut it)
@@ -166,8 +179,7 @@ fn piped(it: &mut Interp) -> i32 {
         let Ok(line) = line else { break };
         pending.push_str(&line);
         pending.push('\n');
-        let is_command = pending.trim_start().starts_with(':');
-        if !is_command && matches!(scan(&pending), Scan::Incomplete(_)) {
+        if !entry_complete(&pending) {
             continue;
         }
         let text = std::mem::take(&mut pending);
@@ -272,4 +284,74 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
         other => eprintln!("unknown command :{other} (try :help)"),
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rustyline::history::DefaultHistory;
+
+    #[test]
+    fn validator_understands_strings_and_comments() {
+        assert!(entry_complete("(+ 1 2)"));
+        assert!(!entry_complete("(+ 1\n"));
+        assert!(!entry_complete("(strcat \")\""));
+        assert!(entry_complete("(strcat \"((\" \")\")"));
+        assert!(!entry_complete("(setq a 1 ; )\n"));
+        assert!(entry_complete("(setq a 1 ; (\n)"));
+        assert!(entry_complete("(setq a ;| ( |; 1)"));
+        assert!(!entry_complete("(setq a ;| ) |; 1"));
+        assert!(entry_complete("(princ \"\\\"\")"));
+        assert!(entry_complete(":load (unbalanced"));
+        assert!(entry_complete("a"));
+        assert!(entry_complete(""));
+    }
+
+    fn helper(names: &[&str]) -> ReplHelper {
+        ReplHelper {
+            names: Rc::new(RefCell::new(names.iter().map(|s| s.to_string()).collect())),
+            brackets: MatchingBracketHighlighter::new(),
+        }
+    }
+
+    #[test]
+    fn completer_offers_builtins_and_user_symbols() {
+        let it = Interp::new();
+        let mut names = completion_names(&it);
+        names.push("my-func".into());
+        let h = ReplHelper {
+            names: Rc::new(RefCell::new(names)),
+            brackets: MatchingBracketHighlighter::new(),
+        };
+        let hist = DefaultHistory::new();
+        let ctx = Context::new(&hist);
+        let (start, found) = h.complete("(mapc", 5, &ctx).unwrap();
+        assert_eq!((start, found), (1, vec!["mapcar".to_string()]));
+        let (start, found) = h.complete("(list (MY-", 10, &ctx).unwrap();
+        assert_eq!((start, found), (7, vec!["my-func".to_string()]));
+        let (_, found) = h.complete("(vl-string-tr", 13, &ctx).unwrap();
+        assert!(found.contains(&"vl-string-trim".to_string()), "{found:?}");
+        let (_, found) = h.complete("(", 1, &ctx).unwrap();
+        assert!(found.is_empty());
+    }
+
+    #[test]
+    fn completion_stops_at_quote_and_string_delimiters() {
+        let h = helper(&["alpha", "alphabet", "beta"]);
+        let hist = DefaultHistory::new();
+        let ctx = Context::new(&hist);
+        let (start, found) = h.complete("(f 'alp", 7, &ctx).unwrap();
+        assert_eq!(start, 4);
+        assert_eq!(found, ["alpha", "alphabet"]);
+    }
+
+    #[test]
+    fn brackets_are_highlighted() {
+        let h = helper(&[]);
+        // The cursor after the closing paren highlights its partner.
+        assert!(h.highlight_char("(+ 1 2)", 7, CmdKind::MoveCursor));
+        let shown = h.highlight("(+ 1 2)", 7);
+        assert_ne!(shown, "(+ 1 2)");
+        assert!(shown.contains("\x1b["), "{shown:?}");
+    }
 }

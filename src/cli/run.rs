@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use super::{diag, Common, EXIT_OK, EXIT_SCRIPT_ERROR, EXIT_USAGE};
+use crate::builtins::input::InputState;
 use crate::builtins::io::FsPolicy;
 use crate::lang::reader::read_one;
 use crate::lang::{ErrorKind, Interp};
@@ -21,12 +22,18 @@ pub struct RunArgs {
     pub set: Vec<String>,
 }
 
-/// An interpreter configured from the common options.
-pub fn configured_interp(common: &Common) -> Interp {
+/// An interpreter configured from the common options; a usage error message when the answers
+/// file cannot be read.
+pub fn configured_interp(common: &Common) -> Result<Interp, String> {
     let mut it = Interp::new();
     it.set_max_steps(common.max_steps);
     it.ext::<FsPolicy>().allow_all = common.allow_fs;
-    it
+    if let Some(path) = &common.answers {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| format!("cannot read the answers file {}: {e}", path.display()))?;
+        it.ext::<InputState>().load_answers(&text);
+    }
+    Ok(it)
 }
 
 /// Applies `--set NAME=VALUE` bindings; an error message on a malformed one.
@@ -51,7 +58,13 @@ pub fn apply_sets(it: &mut Interp, sets: &[String]) -> Result<(), String> {
 }
 
 pub fn run(args: &RunArgs, common: &Common) -> i32 {
-    let mut it = configured_interp(common);
+    let mut it = match configured_interp(common) {
+        Ok(it) => it,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return EXIT_USAGE;
+        }
+    };
     let roots = script_roots(&args.file, &args.outputs);
     it.ext::<FsPolicy>().roots = roots;
     if let Err(msg) = apply_sets(&mut it, &args.set) {
@@ -96,7 +109,13 @@ fn script_roots(file: &Path, outputs: &[PathBuf]) -> Vec<PathBuf> {
 }
 
 pub fn eval_expr(expr: &str, sets: &[String], common: &Common) -> i32 {
-    let mut it = configured_interp(common);
+    let mut it = match configured_interp(common) {
+        Ok(it) => it,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return EXIT_USAGE;
+        }
+    };
     if let Err(msg) = apply_sets(&mut it, sets) {
         eprintln!("error: {msg}");
         return EXIT_USAGE;

@@ -116,7 +116,7 @@ impl Report {
             ),
             None => (None, None),
         };
-        let stack = e
+        let frames: Vec<String> = e
             .stack
             .iter()
             .map(|fr| match fr.call_site.as_ref().and_then(span_of) {
@@ -130,6 +130,18 @@ impl Report {
                 None => format!("in ({})", fr.function),
             })
             .collect();
+        // Deep recursion repeats one frame many times: show it once with the count.
+        let mut stack: Vec<String> = Vec::new();
+        let mut i = 0;
+        while i < frames.len() {
+            let n = frames[i..].iter().take_while(|f| **f == frames[i]).count();
+            if n > 1 {
+                stack.push(format!("{} [{n} times]", frames[i]));
+            } else {
+                stack.push(frames[i].clone());
+            }
+            i += n;
+        }
         Report {
             message: e.message.clone(),
             source,

@@ -1,7 +1,7 @@
 //! `lispcad check`: static checks on read (not evaluated) code — global leaks from `setq` inside
 //! a `defun`, wrong argument counts to builtins, calls of functions defined nowhere.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use super::error::Span;
 use super::reader::Parsed;
@@ -26,19 +26,73 @@ struct Ctx<'a> {
     it: &'a Interp,
     parsed: &'a Parsed,
     defined: HashSet<Sym>,
+    /// Parameter counts of the file's defuns; None when a name is defined with two counts.
+    arity: HashMap<Sym, Option<usize>>,
+    /// (function, symbol) leaks already reported: one warning per symbol per defun.
+    leaked: HashSet<(Sym, Sym)>,
     out: Vec<Lint>,
 }
 
 /// Lints every form of a parsed source, against the builtins of `it`.
 pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
+    lint_with(it, parsed, &HashSet::new())
+}
+
+/// The functions a source defines (`defun`, `defun-q`, `setq` of a lambda), for linting the
+/// files that use them.
+pub fn defined_functions(parsed: &Parsed) -> HashSet<Sym> {
     let mut defined = HashSet::new();
+    let mut arity = HashMap::new();
     for (f, _) in &parsed.forms {
-        collect_defuns(f, &mut defined, 0);
+        collect_defuns(f, &mut defined, &mut arity, 0);
+    }
+    defined
+}
+
+/// The literal file names of `(load "name" ...)` forms anywhere in a source.
+pub fn loaded_files(parsed: &Parsed, syms: &super::symbols::SymbolTable) -> Vec<String> {
+    fn walk(v: &Value, load: Option<Sym>, out: &mut Vec<String>, depth: usize) {
+        let Value::Cons(c) = v else { return };
+        if depth > 200 {
+            return;
+        }
+        if load.is_some() && c.car.as_sym() == load {
+            if let Some(name) = c.cdr.car().as_str() {
+                out.push(name.to_string());
+            }
+        }
+        for x in v.iter() {
+            walk(x, load, out, depth + 1);
+        }
+    }
+    let load = syms.lookup("LOAD");
+    let mut out = Vec::new();
+    for (f, _) in &parsed.forms {
+        walk(f, load, &mut out, 0);
+    }
+    out
+}
+
+/// Lints a source knowing that `known` functions are defined elsewhere (files checked together,
+/// files it loads).
+pub fn lint_with(it: &Interp, parsed: &Parsed, known: &HashSet<Sym>) -> Vec<Lint> {
+    let mut defined = known.clone();
+    let mut arity = HashMap::new();
+    for (f, _) in &parsed.forms {
+        collect_defuns(f, &mut defined, &mut arity, 0);
+    }
+    // A function also defined in another file may have another parameter list there.
+    for s in known {
+        if arity.contains_key(s) {
+            arity.insert(*s, None);
+        }
     }
     let mut cx = Ctx {
         it,
         parsed,
         defined,
+        arity,
+        leaked: HashSet::new(),
         out: Vec::new(),
     };
     for (f, span) in &parsed.forms {
@@ -47,7 +101,12 @@ pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
     cx.out
 }
 
-fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
+fn collect_defuns(
+    f: &Value,
+    out: &mut HashSet<Sym>,
+    arity: &mut HashMap<Sym, Option<usize>>,
+    depth: usize,
+) {
     if depth > 200 {
         return;
     }
@@ -55,15 +114,48 @@ fn collect_defuns(f: &Value, out: &mut HashSet<Sym>, depth: usize) {
         if matches!(c.car.as_sym(), Some(S_DEFUN | S_DEFUN_Q)) {
             if let Some(n) = c.cdr.car().as_sym() {
                 out.insert(n);
+                let params = c
+                    .cdr
+                    .cdr()
+                    .car()
+                    .iter()
+                    .take_while(|p| p.as_sym() != Some(S_SLASH))
+                    .count();
+                let e = arity.entry(n).or_insert(Some(params));
+                if *e != Some(params) {
+                    *e = None;
+                }
+            }
+        }
+        // (setq name (lambda ...)) or (setq name (function (lambda ...))) defines name too.
+        if c.car.as_sym() == Some(S_SETQ) {
+            let args: Vec<Value> = c.cdr.iter().cloned().collect();
+            for pair in args.chunks(2) {
+                if let [Value::Sym(n), v] = pair {
+                    let head = v.car().as_sym();
+                    let is_fn = head == Some(S_LAMBDA)
+                        || head == Some(S_FUNCTION)
+                            && v.cdr().car().car().as_sym() == Some(S_LAMBDA);
+                    if is_fn {
+                        out.insert(*n);
+                        // Its arity is not tracked: the name may be set to other lambdas.
+                        arity.insert(*n, None);
+                    }
+                }
             }
         }
         if c.car.as_sym() == Some(S_QUOTE) {
             return;
         }
         for x in f.iter() {
-            collect_defuns(x, out, depth + 1);
+            collect_defuns(x, out, arity, depth + 1);
         }
     }
+}
+
+/// `*name*` marks a global on purpose (the common AutoLISP convention): no leak warning.
+fn is_earmuffed(name: &str) -> bool {
+    name.len() > 2 && name.starts_with('*') && name.ends_with('*')
 }
 
 /// Parameters and locals of `(args / locals)`.
@@ -122,7 +214,10 @@ impl Ctx<'_> {
                 for (i, x) in args.iter().enumerate() {
                     if i % 2 == 0 {
                         if let (Some(s), Some(f)) = (x.as_sym(), defun) {
-                            if !scope.contains(&s) {
+                            if !scope.contains(&s)
+                                && !is_earmuffed(self.it.syms.name(s))
+                                && self.leaked.insert((f, s))
+                            {
                                 let (sn, fname) = (self.it.syms.name(s), self.it.syms.name(f));
                                 self.push(
                                     Severity::Warning,
@@ -192,6 +287,18 @@ impl Ctx<'_> {
                 }
             }
             Some(Value::Subr(_)) => {}
+            _ if self.defined.contains(&f) => {
+                if let Some(Some(params)) = self.arity.get(&f) {
+                    if n != *params {
+                        let few = if n < *params { "few" } else { "many" };
+                        self.push(
+                            Severity::Warning,
+                            format!("too {few} arguments: ({name}) is defined with {params} parameter(s), called with {n}"),
+                            span,
+                        );
+                    }
+                }
+            }
             _ => {
                 if !self.defined.contains(&f) && !scope.contains(&f) {
                     self.push(
