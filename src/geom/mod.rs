@@ -2,26 +2,31 @@
 //!
 //! Pure Rust over glam's f64 types. Nothing here knows about the language (`Value`):
 //! the bindings in `src/builtins` convert.
+//!
+//! Curves: `line`, `circle`, `arc`, `polyline` (bulges), `quadspline` (the temple paper's
+//! spline), `bspline` (NURBS); the `Curve` enum (`curve.rs`) unites them with the queries and
+//! transforms SPEC §4 names; `offset.rs` offsets planar curves; `intersect/` intersects any
+//! two. Shared machinery: `piece.rs` (lines, arcs and Bézier spans every curve decomposes
+//! into), `bezier.rs`, `bernstein.rs` (root isolation), `traits.rs` (capabilities).
 
-pub mod bspline;
-pub mod frame;
-pub mod quadspline;
-pub mod traits;
-
-pub use glam::{DMat4, DVec2, DVec3};
-pub use traits::ParamCurve;
 pub mod arc;
 pub mod bernstein;
 pub mod bezier;
+pub mod bspline;
 pub mod circle;
 pub mod curve;
 pub mod error;
+pub mod frame;
 pub mod intersect;
 pub mod line;
 pub mod offset;
 pub mod piece;
 pub mod polyline;
+pub mod quadspline;
+pub mod traits;
 
 pub use curve::Curve;
 pub use error::GeomError;
-pub use intersect::{intersect, intersect_near, Hit, HitKind};
+pub use glam::{DMat4, DVec2, DVec3};
+pub use intersect::{intersect, intersect_near, Hit, HitKind, GEOMTOL};
+pub use traits::ParamCurve;

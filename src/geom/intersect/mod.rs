@@ -43,8 +43,9 @@ pub enum HitKind {
     /// The curves touch (tangents parallel, or a double root within tolerance).
     Tangent,
     /// The curves share a piece; it is given, running the direction of the first curve.
-    /// The hit's `point`, `t1`, `t2` are at the start of that piece.
-    Overlap(Curve),
+    /// The hit's `point`, `t1`, `t2` are at the start of that piece. (Boxed so that the
+    /// common point hits stay small; `Hit::overlap` borrows it.)
+    Overlap(Box<Curve>),
 }
 
 /// One intersection: the point, the public parameters on both curves and the kind.
@@ -57,6 +58,14 @@ pub struct Hit {
 }
 
 impl Hit {
+    /// The shared piece of an OVERLAP hit.
+    pub fn overlap(&self) -> Option<&Curve> {
+        match &self.kind {
+            HitKind::Overlap(c) => Some(c),
+            _ => None,
+        }
+    }
+
     /// `CROSS`, `TANGENT` or `OVERLAP`.
     pub fn kind_name(&self) -> &'static str {
         match self.kind {
@@ -319,7 +328,7 @@ pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
             if let HitKind::Overlap(c) = &mut h.kind {
                 // Give the shared piece the direction of the (new) first curve.
                 if let Some(rev) = reversed_if_against(c, a) {
-                    *c = rev;
+                    **c = rev;
                     h.point = c.eval(0.0);
                     h.t1 = a.closest_point(h.point).0;
                     h.t2 = b.closest_point(h.point).0;
@@ -441,7 +450,7 @@ fn to_hit(h: LHit, a0: f64, a1: f64, b0: f64, b1: f64) -> Hit {
         kind: match h.kind {
             LKind::Cross => HitKind::Cross,
             LKind::Tangent => HitKind::Tangent,
-            LKind::Overlap(p, _, _) => HitKind::Overlap(piece_to_curve(*p)),
+            LKind::Overlap(p, _, _) => HitKind::Overlap(Box::new(piece_to_curve(*p))),
         },
     }
 }
@@ -452,7 +461,7 @@ fn finish(hits: &mut Vec<Keyed>, tol: f64, out: &mut Vec<Hit>) {
     let overlaps: Vec<Curve> = hits
         .iter()
         .filter_map(|(h, _)| match &h.kind {
-            HitKind::Overlap(c) => Some(c.clone()),
+            HitKind::Overlap(c) => Some((**c).clone()),
             _ => None,
         })
         .collect();
