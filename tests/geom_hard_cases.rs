@@ -115,7 +115,7 @@ fn coincident_and_overlapping_arcs() {
     let b = arc(v(0.0, 0.0), 1.0, FRAC_PI_4, PI);
     let h = both(&a, &b);
     assert_eq!(kinds(&h), ["OVERLAP"]);
-    let HitKind::Overlap(Curve::Arc(o)) = &h[0].kind else {
+    let Some(Curve::Arc(o)) = h[0].overlap() else {
         panic!("{h:?}")
     };
     assert!((o.start_angle() - FRAC_PI_4).abs() < 1e-12 && (o.sweep() - FRAC_PI_4).abs() < 1e-12);
@@ -150,7 +150,7 @@ fn overlapping_segments() {
         &line(v(1.0, 0.0), v(3.0, 0.0)),
     );
     assert_eq!(kinds(&h), ["OVERLAP"]);
-    let HitKind::Overlap(Curve::Line(l)) = &h[0].kind else {
+    let Some(Curve::Line(l)) = h[0].overlap() else {
         panic!()
     };
     assert!(close(l.p0, v(1.0, 0.0), 1e-15) && close(l.p1, v(2.0, 0.0), 1e-15));
@@ -160,7 +160,7 @@ fn overlapping_segments() {
         &line(v(0.0, 0.0), v(2.0, 0.0)),
         &line(v(3.0, 0.0), v(1.0, 0.0)),
     );
-    let HitKind::Overlap(Curve::Line(l)) = &h[0].kind else {
+    let Some(Curve::Line(l)) = h[0].overlap() else {
         panic!()
     };
     assert!(close(l.p0, v(1.0, 0.0), 1e-15) && close(l.p1, v(2.0, 0.0), 1e-15));
@@ -205,7 +205,7 @@ fn arcs_across_the_seam() {
     let b = arc(v(0.0, 0.0), 1.0, 0.0, 20f64.to_radians());
     let h = both(&a, &b);
     assert_eq!(kinds(&h), ["OVERLAP"]);
-    let HitKind::Overlap(Curve::Arc(o)) = &h[0].kind else {
+    let Some(Curve::Arc(o)) = h[0].overlap() else {
         panic!()
     };
     assert!(o.start_angle().abs() < 1e-12 && (o.sweep() - 10f64.to_radians()).abs() < 1e-12);
@@ -397,4 +397,83 @@ fn spline_against_circle_and_spline() {
     // Same spline: one overlap.
     let h = both(&s, &s.clone());
     assert_eq!(kinds(&h), ["OVERLAP"]);
+}
+
+#[test]
+fn bulged_polyline_against_circle_and_near_point() {
+    // Slot: (0,0)→(4,0), semicircle to (4,2), (4,2)→(0,2), semicircle back to (0,0).
+    let slot = Curve::pline(
+        vec![v(0.0, 0.0), v(4.0, 0.0), v(4.0, 2.0), v(0.0, 2.0)],
+        true,
+        Some(vec![0.0, 1.0, 0.0, 1.0]),
+    )
+    .unwrap();
+    // The slot's right end cap is the circle (4,1) R1: overlap of half of it.
+    let cap = circle(v(4.0, 1.0), 1.0);
+    let h = both(&slot, &cap);
+    assert_eq!(kinds(&h), ["OVERLAP"], "{h:?}");
+    // A vertical line through x = 2 crosses twice; the near point picks the upper one.
+    let l = line(v(2.0, -1.0), v(2.0, 3.0));
+    let h = both(&slot, &l);
+    assert_eq!(kinds(&h), ["CROSS", "CROSS"]);
+    let near = lispcad::geom::intersect_near(&h, v(2.0, 2.5)).unwrap();
+    assert!(close(near, v(2.0, 2.0), 1e-12));
+    // A horizontal line y = 1 crosses both caps at their outermost points.
+    let h = both(&slot, &line(v(-2.0, 1.0), v(6.0, 1.0)));
+    assert_eq!(h.len(), 2);
+    assert!(close(h[0].point, v(5.0, 1.0), 1e-12) || close(h[0].point, v(-1.0, 1.0), 1e-12));
+    assert!(lispcad::geom::intersect_near(&[], v(0.0, 0.0)).is_none());
+}
+
+#[test]
+fn closed_spline_hit_at_its_seam_is_reported_once_at_t_zero() {
+    // A closed quadratic spline: four segments around the unit square's midpoints.
+    let pts = [v(1.0, 0.0), v(0.0, 1.0), v(-1.0, 0.0), v(0.0, -1.0)];
+    let ctrl = [v(1.0, 1.0), v(-1.0, 1.0), v(-1.0, -1.0), v(1.0, -1.0)];
+    let segs: Vec<[DVec3; 3]> = (0..4)
+        .map(|i| [pts[i], ctrl[i], pts[(i + 1) % 4]])
+        .collect();
+    let s = Curve::Spline(QuadSpline {
+        points: pts.to_vec(),
+        closed: true,
+        segments: segs,
+    });
+    let h = both(&s, &line(v(0.0, 0.0), v(3.0, 0.0)));
+    assert_eq!(h.len(), 1, "{h:?}");
+    assert!(h[0].t1 == 0.0 && close(h[0].point, v(1.0, 0.0), 1e-12));
+}
+
+#[test]
+fn nurbs_circle_overlaps_the_circle_and_a_spline_pierces_a_circle_plane() {
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let ctrl = vec![
+        v(1.0, 0.0),
+        v(1.0, 1.0),
+        v(0.0, 1.0),
+        v(-1.0, 1.0),
+        v(-1.0, 0.0),
+    ];
+    let knots = vec![0.0, 0.0, 0.0, 0.5, 0.5, 1.0, 1.0, 1.0];
+    let half = Curve::bspline(ctrl, 2, Some(knots), Some(vec![1.0, w, 1.0, w, 1.0])).unwrap();
+    let h = both(&half, &circle(v(0.0, 0.0), 1.0));
+    assert!(
+        !h.is_empty() && h.iter().all(|x| x.kind_name() == "OVERLAP"),
+        "{h:?}"
+    );
+    // A space spline crossing the XY plane exactly on the unit circle at (0, 1, 0).
+    let s = Curve::bspline(
+        vec![
+            v3(0.0, 1.0, -1.0),
+            v3(0.5, 1.0, -0.5),
+            v3(-0.5, 1.0, 0.5),
+            v3(0.0, 1.0, 1.0),
+        ],
+        3,
+        None,
+        None,
+    )
+    .unwrap();
+    let h = both(&s, &circle(v(0.0, 0.0), 1.0));
+    assert_eq!(h.len(), 1, "{h:?}");
+    assert!(close(h[0].point, v(0.0, 1.0), 1e-12));
 }

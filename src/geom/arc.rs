@@ -30,6 +30,17 @@ pub struct Arc {
 /// Angle reduced to [0, 2π).
 #[inline]
 pub(crate) fn norm_angle(a: f64) -> f64 {
+    // Most inputs are within one turn of the range: avoid the division in rem_euclid.
+    if (0.0..TAU).contains(&a) {
+        return a;
+    }
+    if (-TAU..0.0).contains(&a) {
+        let r = a + TAU;
+        return if r >= TAU { 0.0 } else { r };
+    }
+    if (TAU..2.0 * TAU).contains(&a) {
+        return a - TAU;
+    }
     let r = a.rem_euclid(TAU);
     if r >= TAU {
         0.0
@@ -189,6 +200,12 @@ impl Arc {
         } else {
             None
         }
+    }
+
+    /// The tangent direction (increasing angle) at a point `p` of the circle, length r.
+    #[inline]
+    pub(crate) fn tangent_at_point(&self, p: DVec3) -> DVec3 {
+        self.normal.cross(p - self.center)
     }
 
     /// The unit tangent (direction of increasing angle) at angle `a`.

@@ -188,8 +188,9 @@ impl Curve {
         (i, ((t - s.t0) / (s.t1 - s.t0)).clamp(0.0, 1.0))
     }
 
-    /// `(point-at c t)`: the point at public parameter t in [0, 1] (clamped).
+    /// `(point-at c t)`: the point at public parameter t in [0, 1] (clamped; NaN reads as 0).
     pub fn eval(&self, t: f64) -> DVec3 {
+        let t = if t.is_nan() { 0.0 } else { t };
         match self {
             Curve::Line(l) => l.eval(t.clamp(0.0, 1.0)),
             Curve::Circle(c) => c.eval(t.clamp(0.0, 1.0)),
@@ -204,8 +205,9 @@ impl Curve {
         }
     }
 
-    /// dP/dt at public parameter t.
+    /// dP/dt at public parameter t (clamped to [0, 1]; NaN reads as 0).
     pub fn deriv(&self, t: f64) -> DVec3 {
+        let t = if t.is_nan() { 0.0 } else { t };
         match self {
             Curve::Line(l) => l.dir(),
             Curve::Circle(c) => c.deriv(t.clamp(0.0, 1.0)),
@@ -270,8 +272,12 @@ impl Curve {
         Ok(1.0)
     }
 
-    /// `(closest-point c p)`: `(t, point)` of the curve point nearest to `p`.
+    /// `(closest-point c p)`: `(t, point)` of the curve point nearest to `p`. A non-finite
+    /// `p` has no nearest point: the start `(0, start)` is returned (bindings should refuse it).
     pub fn closest_point(&self, p: DVec3) -> (f64, DVec3) {
+        if !p.is_finite() {
+            return (0.0, self.eval(0.0));
+        }
         let mut best = (f64::INFINITY, 0.0, DVec3::ZERO);
         for sp in self.spans() {
             let (s, q) = sp.piece.nearest(p);

@@ -2,6 +2,12 @@
 //!
 //! Pure Rust over glam's f64 types. Nothing here knows about the language (`Value`):
 //! the bindings in `src/builtins` convert.
+//!
+//! Curves: `line`, `circle`, `arc`, `polyline` (bulges), `quadspline` (the temple paper's
+//! spline), `bspline` (NURBS); the `Curve` enum (`curve.rs`) unites them with the queries and
+//! transforms SPEC §4 names; `offset.rs` offsets planar curves; `intersect/` intersects any
+//! two. Shared machinery: `piece.rs` (lines, arcs and Bézier spans every curve decomposes
+//! into), `bezier.rs`, `bernstein.rs` (root isolation), `traits.rs` (capabilities).
 
 pub mod arc;
 pub mod bernstein;
@@ -28,5 +34,5 @@ pub mod traits;
 pub use curve::Curve;
 pub use error::GeomError;
 pub use glam::{DMat4, DVec2, DVec3};
-pub use intersect::{intersect, intersect_near, Hit, HitKind};
+pub use intersect::{intersect, intersect_near, Hit, HitKind, GEOMTOL};
 pub use traits::ParamCurve;

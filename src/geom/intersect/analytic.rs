@@ -19,8 +19,8 @@ use crate::geom::traits::ParamCurve;
 
 #[inline]
 fn kind_by_tangents(t1: DVec3, t2: DVec3) -> LKind {
-    let (a, b) = (t1.length(), t2.length());
-    if t1.cross(t2).length() <= TANGENT_SIN * a * b {
+    let (a, b) = (t1.length_squared(), t2.length_squared());
+    if t1.cross(t2).length_squared() <= TANGENT_SIN * TANGENT_SIN * a * b {
         LKind::Tangent
     } else {
         LKind::Cross
@@ -45,17 +45,18 @@ pub fn line_line(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
     let (la, lb) = (da.length(), db.length());
     let w = b.p0 - a.p0;
     let cross = da.cross(db);
-    let cl = cross.length();
-    // Collinear: both ends of b within tol of a's carrier and vice versa.
-    let dist_to_a = |p: DVec3| (p - a.p0).cross(da).length() / la;
-    if dist_to_a(b.p0) <= tol && dist_to_a(b.p1) <= tol && cl <= 1e-9 * la * lb {
-        collinear(a, b, tol, out);
-        return;
+    let cc = cross.length_squared();
+    // Collinear: parallel, and both ends of b within tol of a's carrier.
+    if cc <= 1e-18 * (la * lb) * (la * lb) {
+        let dist_to_a = |p: DVec3| (p - a.p0).cross(da).length() / la;
+        if dist_to_a(b.p0) <= tol && dist_to_a(b.p1) <= tol {
+            collinear(a, b, tol, out);
+            return;
+        }
+        if cc == 0.0 {
+            return;
+        }
     }
-    if cl == 0.0 {
-        return;
-    }
-    let cc = cl * cl;
     let s = w.cross(db).dot(cross) / cc;
     let u = w.cross(da).dot(cross) / cc;
     let (Some(s), Some(u)) = (seg_param(s, la, tol), seg_param(u, lb, tol)) else {
@@ -82,7 +83,7 @@ fn collinear(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
             lo,
             u0.clamp(0.0, 1.0),
             piece.p0,
-            LKind::Overlap(Piece::Line(piece), hi, u1.clamp(0.0, 1.0)),
+            LKind::Overlap(Box::new(Piece::Line(piece)), hi, u1.clamp(0.0, 1.0)),
         ));
     } else if (lo - hi) * la <= tol {
         let s = (0.5 * (lo + hi)).clamp(0.0, 1.0);
@@ -117,7 +118,7 @@ pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
         let kind = if tangent {
             LKind::Tangent
         } else {
-            kind_by_tangents(d, a.tangent_at_angle(a.angle_of(p)))
+            kind_by_tangents(d, a.tangent_at_point(p))
         };
         out.push(LHit::new(s, u, p, kind));
     };
@@ -178,7 +179,7 @@ pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
         let kind = if tangent {
             LKind::Tangent
         } else {
-            kind_by_tangents(a.tangent_at_angle(ta), b.tangent_at_angle(tb))
+            kind_by_tangents(a.tangent_at_point(p), b.tangent_at_point(p))
         };
         out.push(LHit::new(s, u, p, kind));
     };
@@ -292,7 +293,7 @@ fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
                 s0,
                 ul,
                 a.point_at_angle(a.start + lo),
-                LKind::Overlap(Piece::Arc(piece), (hi / a.sweep).min(1.0), uh),
+                LKind::Overlap(Box::new(Piece::Arc(piece)), (hi / a.sweep).min(1.0), uh),
             ));
         } else {
             let m = 0.5 * (lo + hi);
@@ -349,7 +350,7 @@ fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
             lo / sw1,
             ul,
             a.point_at_angle(a.start + lo),
-            LKind::Overlap(Piece::Arc(piece), (hi - TAU) / sw1, uh),
+            LKind::Overlap(Box::new(Piece::Arc(piece)), (hi - TAU) / sw1, uh),
         ));
         return;
     }

@@ -43,8 +43,9 @@ pub enum HitKind {
     /// The curves touch (tangents parallel, or a double root within tolerance).
     Tangent,
     /// The curves share a piece; it is given, running the direction of the first curve.
-    /// The hit's `point`, `t1`, `t2` are at the start of that piece.
-    Overlap(Curve),
+    /// The hit's `point`, `t1`, `t2` are at the start of that piece. (Boxed so that the
+    /// common point hits stay small; `Hit::overlap` borrows it.)
+    Overlap(Box<Curve>),
 }
 
 /// One intersection: the point, the public parameters on both curves and the kind.
@@ -57,6 +58,14 @@ pub struct Hit {
 }
 
 impl Hit {
+    /// The shared piece of an OVERLAP hit.
+    pub fn overlap(&self) -> Option<&Curve> {
+        match &self.kind {
+            HitKind::Overlap(c) => Some(c),
+            _ => None,
+        }
+    }
+
     /// `CROSS`, `TANGENT` or `OVERLAP`.
     pub fn kind_name(&self) -> &'static str {
         match self.kind {
@@ -83,7 +92,7 @@ pub(crate) enum LKind {
     Cross,
     Tangent,
     /// The shared piece and the parameters (on the first, second piece) at its end.
-    Overlap(Piece, f64, f64),
+    Overlap(Box<Piece>, f64, f64),
 }
 
 impl LHit {
@@ -154,7 +163,7 @@ fn swap_from(out: &mut LHits, start: usize) {
             std::mem::swap(se, ue);
             // The shared piece runs along the first curve: reverse it if it ran along b.
             if *se < h.s {
-                *piece = reverse_piece(piece);
+                **piece = reverse_piece(piece);
                 // Its start is now at the other end.
                 let (s0, u0) = (h.s, h.u);
                 h.s = *se;
@@ -198,8 +207,42 @@ fn rank(c: &Curve) -> u8 {
     }
 }
 
+/// The defining numbers of a line, circle or arc, on the stack.
+fn simple_key(c: &Curve) -> Option<[f64; 11]> {
+    Some(match c {
+        Curve::Line(l) => [
+            l.p0.x, l.p0.y, l.p0.z, l.p1.x, l.p1.y, l.p1.z, 0.0, 0.0, 0.0, 0.0, 0.0,
+        ],
+        Curve::Circle(ci) => {
+            let a = &ci.arc;
+            let (c, n) = (a.center, a.normal);
+            [c.x, c.y, c.z, n.x, n.y, n.z, a.radius, 0.0, 0.0, 0.0, 0.0]
+        }
+        Curve::Arc(a) => {
+            let (c, n) = (a.center, a.normal);
+            [
+                c.x, c.y, c.z, n.x, n.y, n.z, a.radius, a.start, a.sweep, 0.0, 0.0,
+            ]
+        }
+        _ => return None,
+    })
+}
+
 /// A total order on curves: by kind, then by their defining numbers.
 fn canonical_cmp(a: &Curve, b: &Curve) -> Ordering {
+    let by_kind = rank(a).cmp(&rank(b));
+    if by_kind != Ordering::Equal {
+        return by_kind;
+    }
+    if let (Some(ka), Some(kb)) = (simple_key(a), simple_key(b)) {
+        for (x, y) in ka.iter().zip(&kb) {
+            match x.total_cmp(y) {
+                Ordering::Equal => continue,
+                o => return o,
+            }
+        }
+        return Ordering::Equal;
+    }
     rank(a).cmp(&rank(b)).then_with(|| {
         let mut fa: SmallVec<[f64; 16]> = SmallVec::new();
         let mut fb: SmallVec<[f64; 16]> = SmallVec::new();
@@ -261,15 +304,6 @@ fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
     }
 }
 
-fn simple_piece(c: &Curve) -> Option<Piece> {
-    match c {
-        Curve::Line(l) => Some(Piece::Line(*l)),
-        Curve::Circle(ci) => Some(Piece::Arc(ci.arc)),
-        Curve::Arc(a) => Some(Piece::Arc(*a)),
-        _ => None,
-    }
-}
-
 /// `(intersect a b)` / `(intersect-info a b)`: every hit of `a` and `b`, sorted by t1.
 /// `tol` (GEOMTOL, default 1e-9): points closer than it are one point, curves farther apart
 /// than it do not meet.
@@ -294,7 +328,7 @@ pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
             if let HitKind::Overlap(c) = &mut h.kind {
                 // Give the shared piece the direction of the (new) first curve.
                 if let Some(rev) = reversed_if_against(c, a) {
-                    *c = rev;
+                    **c = rev;
                     h.point = c.eval(0.0);
                     h.t1 = a.closest_point(h.point).0;
                     h.t2 = b.closest_point(h.point).0;
@@ -332,17 +366,46 @@ fn reversed_if_against(c: &Curve, a: &Curve) -> Option<Curve> {
 /// A hit with the key of the root pair it belongs to (two simple roots around one extremum).
 type Keyed = (Hit, Option<u64>);
 
+/// The arc (or full-circle arc) of a circle or an arc.
+fn as_arc(c: &Curve) -> Option<&Arc> {
+    match c {
+        Curve::Circle(ci) => Some(&ci.arc),
+        Curve::Arc(a) => Some(a),
+        _ => None,
+    }
+}
+
+/// Closed forms for two lines, circles or arcs, without copying them into pieces.
+fn simple_pair(a: &Curve, b: &Curve, tol: f64, hits: &mut LHits) -> bool {
+    match (a, b) {
+        (Curve::Line(x), Curve::Line(y)) => analytic::line_line(x, y, tol, hits),
+        (Curve::Line(x), _) if as_arc(b).is_some() => {
+            analytic::line_arc(x, as_arc(b).unwrap(), tol, hits)
+        }
+        (_, Curve::Line(y)) if as_arc(a).is_some() => {
+            analytic::line_arc(y, as_arc(a).unwrap(), tol, hits);
+            swap_from(hits, 0);
+        }
+        _ => match (as_arc(a), as_arc(b)) {
+            (Some(x), Some(y)) => analytic::arc_arc(x, y, tol, hits),
+            _ => return false,
+        },
+    }
+    true
+}
+
 fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
-    if let (Some(pa), Some(pb)) = (simple_piece(a), simple_piece(b)) {
-        let mut hits = LHits::new();
-        piece_pair(&pa, &pb, tol, &mut hits);
-        for h in hits {
+    let mut hits = LHits::new();
+    if simple_pair(a, b, tol, &mut hits) {
+        // The closed forms give distinct points (a double root comes out once) and no point
+        // inside an overlap: only the order is left to fix.
+        for h in hits.drain(..) {
             out.push(to_hit(h, 0.0, 1.0, 0.0, 1.0));
         }
-        if out.len() > 1 {
+        if out.len() == 2 && out[1].t1 < out[0].t1 {
+            out.swap(0, 1);
+        } else if out.len() > 2 {
             out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
-            let mut keyed: Vec<Keyed> = out.drain(..).map(|h| (h, None)).collect();
-            finish(&mut keyed, tol, out);
         }
         return;
     }
@@ -350,7 +413,6 @@ fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
     let sb = b.spans();
     let boxes_b: Vec<(DVec3, DVec3)> = sb.iter().map(|s| s.piece.hull_bbox()).collect();
     let mut keyed: Vec<Keyed> = Vec::new();
-    let mut hits = LHits::new();
     let (a_closed, b_closed) = (a.is_closed(), b.is_closed());
     for (i, x) in sa.iter().enumerate() {
         let (alo, ahi) = x.piece.hull_bbox();
@@ -388,7 +450,7 @@ fn to_hit(h: LHit, a0: f64, a1: f64, b0: f64, b1: f64) -> Hit {
         kind: match h.kind {
             LKind::Cross => HitKind::Cross,
             LKind::Tangent => HitKind::Tangent,
-            LKind::Overlap(p, _, _) => HitKind::Overlap(piece_to_curve(p)),
+            LKind::Overlap(p, _, _) => HitKind::Overlap(Box::new(piece_to_curve(*p))),
         },
     }
 }
@@ -399,7 +461,7 @@ fn finish(hits: &mut Vec<Keyed>, tol: f64, out: &mut Vec<Hit>) {
     let overlaps: Vec<Curve> = hits
         .iter()
         .filter_map(|(h, _)| match &h.kind {
-            HitKind::Overlap(c) => Some(c.clone()),
+            HitKind::Overlap(c) => Some((**c).clone()),
             _ => None,
         })
         .collect();

@@ -1,8 +1,12 @@
 //! Bézier against Bézier: recursive subdivision with hull bounding boxes (Lane–Riesenfeld
-//! style) isolates every region where the pieces can meet; once both sub-pieces are flat
-//! their chords give a start for Gauss–Newton on |A(s) − B(u)|² (the 3-D least-squares form
-//! of the paper's Newton step), run on the original pieces. Roots found more than once are
-//! merged by the caller.
+//! style) until each surviving pair of sub-pieces provably holds at most one intersection:
+//! when the tangent cones of the two sub-pieces (spanned by their control polygons' edges,
+//! which contain every derivative direction, rational pieces included) share no direction up
+//! to sign, two intersections would need a common chord direction inside both cones
+//! (Sederberg & Meyers' loop test, applied to a pair). Such a pair is solved by Gauss–Newton
+//! on |A(s) − B(u)|² (the 3-D least-squares form of the paper's Newton step) from the chords'
+//! closest points; if Newton does not land inside the pair, the pair is split further.
+//! Pairs whose cones keep overlapping (tangencies) are followed down to tolerance size.
 
 use glam::DVec3;
 
@@ -23,7 +27,7 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
             0.0,
             0.0,
             a.eval(0.0),
-            LKind::Overlap(Piece::Bez(a.clone()), 1.0, 1.0),
+            LKind::Overlap(Box::new(Piece::Bez(a.clone())), 1.0, 1.0),
         ));
         return;
     }
@@ -32,7 +36,7 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
             0.0,
             1.0,
             a.eval(0.0),
-            LKind::Overlap(Piece::Bez(a.clone()), 1.0, 0.0),
+            LKind::Overlap(Box::new(Piece::Bez(a.clone())), 1.0, 0.0),
         ));
         return;
     }
@@ -46,7 +50,7 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
         a,
         b,
         tol,
-        flat: (1e-7 * scale).max(tol),
+        flat: (1e-9 * scale).max(tol),
     };
     let start = out.len();
     recurse(&ctx, a, (0.0, 1.0), b, (0.0, 1.0), 0, out);
@@ -92,6 +96,45 @@ fn boxes_meet(a: &Bez, b: &Bez, tol: f64) -> bool {
     !((la - tol).cmpgt(hb + tol).any() || (lb - tol).cmpgt(ha + tol).any())
 }
 
+/// The tangent cone of a piece: (unit axis, half-angle), or `None` when it is 90° or wider.
+fn cone(x: &Bez) -> Option<(DVec3, f64)> {
+    let mut prev: Option<DVec3> = None;
+    let mut axis = DVec3::ZERO;
+    let mut edges: smallvec::SmallVec<[DVec3; 8]> = smallvec::SmallVec::new();
+    for p in x.points() {
+        if let Some(q) = prev {
+            if let Some(e) = (p - q).try_normalize() {
+                axis += e;
+                edges.push(e);
+            }
+        }
+        prev = Some(p);
+    }
+    let axis = axis.try_normalize()?;
+    let mut cos_half: f64 = 1.0;
+    for e in &edges {
+        cos_half = cos_half.min(axis.dot(*e));
+    }
+    if cos_half <= 0.0 {
+        return None;
+    }
+    Some((axis, cos_half.min(1.0).acos()))
+}
+
+/// True when no tangent of `a` is parallel (either sense) to a tangent of `b`.
+fn cones_disjoint(a: &Bez, b: &Bez) -> bool {
+    let (Some((xa, ha)), Some((xb, hb))) = (cone(a), cone(b)) else {
+        return false;
+    };
+    let between = xa.dot(xb).abs().min(1.0).acos();
+    between > ha + hb + 1e-12
+}
+
+fn size(x: &Bez) -> f64 {
+    let (l, h) = x.hull_bbox();
+    (h - l).max_element()
+}
+
 fn recurse(
     ctx: &Ctx,
     a: &Bez,
@@ -104,26 +147,31 @@ fn recurse(
     if !boxes_meet(a, b, ctx.tol) {
         return;
     }
-    let (fa, fb) = (a.flatness(), b.flatness());
-    if (fa <= ctx.flat && fb <= ctx.flat) || depth >= 60 {
+    let (sa, sb) = (size(a), size(b));
+    let tiny = sa <= ctx.flat && sb <= ctx.flat;
+    if tiny || depth >= 60 || cones_disjoint(a, b) {
+        // At most one intersection here (or tolerance-sized pieces): Newton from the chords.
         let (a0, a1) = (a.eval(0.0), a.eval(1.0));
         let (b0, b1) = (b.eval(0.0), b.eval(1.0));
-        let (s, u, dist) = segment_closest(a0, a1, b0, b1);
-        if dist > fa + fb + ctx.tol {
-            return;
-        }
+        let (s, u, _) = segment_closest(a0, a1, b0, b1);
         let s0 = ra.0 + (ra.1 - ra.0) * s;
         let u0 = rb.0 + (rb.1 - rb.0) * u;
         if let Some(h) = polish(ctx, s0, u0) {
-            out.push(h);
+            // Accept only a root inside this pair (a neighbour pair owns the others).
+            let slack_a = 1e-9 * (ra.1 - ra.0);
+            let slack_b = 1e-9 * (rb.1 - rb.0);
+            if (ra.0 - slack_a..=ra.1 + slack_a).contains(&h.s)
+                && (rb.0 - slack_b..=rb.1 + slack_b).contains(&h.u)
+            {
+                out.push(h);
+                return;
+            }
         }
-        return;
+        if tiny || depth >= 60 {
+            return;
+        }
     }
-    let size = |x: &Bez| {
-        let (l, h) = x.hull_bbox();
-        (h - l).max_element()
-    };
-    if fa > ctx.flat && (fb <= ctx.flat || size(a) >= size(b)) {
+    if sa >= sb {
         let (l, r) = a.split(0.5);
         let m = 0.5 * (ra.0 + ra.1);
         recurse(ctx, &l, (ra.0, m), b, rb, depth + 1, out);
