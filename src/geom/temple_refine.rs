@@ -28,6 +28,7 @@
 use glam::DVec3;
 
 use super::quadspline::QuadSpline;
+use super::quadspline_fit::QuadSplineError;
 use super::temple::{bend_one, Bend, TempleError, TempleParams};
 use super::traits::ParamCurve;
 
@@ -93,6 +94,16 @@ fn refine(
     }
     let bend = Bend::new(params)?;
     let closed = s.closed;
+    let need = if closed { 3 } else { 2 };
+    if s.points.len() < need || s.segments.is_empty() {
+        // Only a hand-built spline can be this short; `interpolate` refuses it.
+        return Err(QuadSplineError::TooFewPoints {
+            need,
+            got: s.points.len(),
+            closed,
+        }
+        .into());
+    }
     let n0 = s.points.len();
     let intervals = if closed { n0 } else { n0.saturating_sub(1) };
     // Public parameter of each original type-value point on `s` (exact for interpolated
