@@ -55,12 +55,9 @@
         (tpt (* 0.04 L1) h0)
         (tpt 0.0 h0)))
 
-;; Checks a designer would otherwise learn from a ruined blank.
-(if (<= R (/ TIPW 2.0))
-  (progn
-    (princ (strcat "\ntemple.lsp: bend radius R " (rtos R 2 2)
-                   " must exceed half the tip width " (rtos (/ TIPW 2.0) 2 2)))
-    (exit)))
+;; bend-temple itself refuses a bend that would fold the outline (a point of the
+;; moved part lying R or more inside the bend), R <= 0, and L or Lp < 0, naming the
+;; parameter; in a batch run that row fails and the others go on.
 
 ;; A line of text on NOTES below the temple.
 (defun note (row str)

@@ -23,6 +23,7 @@ Prints the number of variants, the total time and variants per second. Pure Pyth
 """
 
 import argparse
+import bisect
 import csv
 import math
 import os
@@ -66,19 +67,22 @@ def dot(a, b):
     return a[0] * b[0] + a[1] * b[1]
 
 
+# Written with the same operation order as glam / lispcad (sqrt of the dot product, lerp as
+# a(1-t) + bt, Bezier weights formed first) so both programs take the same branches.
 def norm(a):
-    return math.hypot(a[0], a[1])
+    return math.sqrt(a[0] * a[0] + a[1] * a[1])
 
 
 def lerp(a, b, t):
-    return (a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
+    return (a[0] * (1.0 - t) + b[0] * t, a[1] * (1.0 - t) + b[1] * t)
 
 
 def bez(s, u):
     v = 1.0 - u
+    w0, w1, w2 = v * v, 2.0 * v * u, u * u
     return (
-        s[0][0] * v * v + s[1][0] * 2 * u * v + s[2][0] * u * u,
-        s[0][1] * v * v + s[1][1] * 2 * u * v + s[2][1] * u * u,
+        s[0][0] * w0 + s[1][0] * w1 + s[2][0] * w2,
+        s[0][1] * w0 + s[1][1] * w1 + s[2][1] * w2,
     )
 
 
@@ -337,19 +341,22 @@ def bent_tangent(segs, bend, t, fallback):
     return mul(v, 1 / n)
 
 
+def cross(a, b):
+    return a[0] * b[1] - a[1] * b[0]
+
+
 def tangent_meet(p, tp, q, tq):
+    """Meeting point of the tangent lines (cross-product solve, no 1 - cos^2 cancellation)."""
     dv = sub(q, p)
     ln = norm(dv)
-    c = dot(tp, tq)
-    det = 1 - c * c
-    if det < 1e-12:
-        cross = dv[0] * tp[1] - dv[1] * tp[0]
-        if c > 0 and dot(dv, tp) > 0 and abs(cross) <= 1e-12 * ln:
+    n = cross(tp, tq)
+    n2 = n * n
+    if n2 < 1e-24:
+        if dot(tp, tq) > 0 and dot(dv, tp) > 0 and abs(cross(dv, tp)) <= 1e-12 * ln:
             return lerp(p, q, 0.5)
         return None
-    bp, bq = dot(tp, dv), dot(tq, dv)
-    alpha = (bp - c * bq) / det
-    gamma = (bq - c * bp) / det
+    alpha = cross(dv, tq) * n / n2
+    gamma = cross(tp, dv) * n / n2
     if not (alpha > 0.05 * ln and gamma > 0.05 * ln):
         return None
     x1 = add(p, mul(tp, alpha))
@@ -374,6 +381,32 @@ def hermite_piece(segs, bend, ta, tb, a, b, tan_a, tan_b):
     return [a, x1, mid], [mid, x2, b]
 
 
+def kink_params(segs, bend):
+    """Parameters where the outline crosses s = L or s = L + R*theta (corners of the exact bend)."""
+    out = []
+    if bend.th == 0:
+        return out
+    n = len(segs)
+    for c in (bend.l, bend.l + bend.r * bend.th):
+        c = bend.bx + c
+        for i, sg in enumerate(segs):
+            x0, x1, x2 = sg[0][0] - c, sg[1][0] - c, sg[2][0] - c
+            a, b = x0 - 2 * x1 + x2, 2 * (x1 - x0)
+            roots = []
+            if abs(a) <= 1e-300:
+                if b != 0:
+                    roots.append(-x0 / b)
+            else:
+                disc = b * b - 4 * a * x0
+                if disc >= 0:
+                    q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
+                    roots.append(q / a)
+                    if q != 0:
+                        roots.append(x0 / q)
+            out += [(i + u) / n for u in roots if 0 <= u <= 1]
+    return sorted(out)
+
+
 def bend_outline(segs, npts, bend, tol=TOL):
     """Returns (segments, deviation, added points)."""
     ts = [j / npts for j in range(npts)]
@@ -381,6 +414,7 @@ def bend_outline(segs, npts, bend, tol=TOL):
     tans = [bent_tangent(segs, bend, t, (1.0, 0.0)) for t in ts]
     known = [None] * npts
     pieces = [None] * npts
+    kinks = kink_params(segs, bend)
     added = 0
     for _ in range(MAX_ROUNDS):
         n = len(ts)
@@ -391,8 +425,9 @@ def bend_outline(segs, npts, bend, tol=TOL):
                 j = (i + 1) % n
                 pieces[i] = hermite_piece(segs, bend, ta, tb, bent[i], bent[j], tans[i], tans[j])
                 err = 0.0
-                for k in range(1, SAMPLES + 1):
-                    t = ta + (tb - ta) * k / (SAMPLES + 1)
+                first = bisect.bisect_right(kinks, ta)
+                inside = [k for k in kinks[first:] if k < tb]
+                for t in [ta + (tb - ta) * k / (SAMPLES + 1) for k in range(1, SAMPLES + 1)] + inside:
                     e = bend.map(spline_eval(segs, t))
                     err = max(err, min(seg_distance(pieces[i][0], e), seg_distance(pieces[i][1], e)))
                 known[i] = err

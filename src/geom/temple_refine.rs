@@ -28,6 +28,7 @@
 use glam::DVec3;
 
 use super::quadspline::QuadSpline;
+use super::quadspline_fit::QuadSplineError;
 use super::temple::{bend_one, Bend, TempleError, TempleParams};
 use super::traits::ParamCurve;
 
@@ -93,6 +94,16 @@ fn refine(
     }
     let bend = Bend::new(params)?;
     let closed = s.closed;
+    let need = if closed { 3 } else { 2 };
+    if s.points.len() < need || s.segments.is_empty() {
+        // Only a hand-built spline can be this short; `interpolate` refuses it.
+        return Err(QuadSplineError::TooFewPoints {
+            need,
+            got: s.points.len(),
+            closed,
+        }
+        .into());
+    }
     let n0 = s.points.len();
     let intervals = if closed { n0 } else { n0.saturating_sub(1) };
     // Public parameter of each original type-value point on `s` (exact for interpolated
@@ -108,6 +119,7 @@ fn refine(
         .enumerate()
         .map(|(i, p)| bend_one(&bend, *p, i))
         .collect::<Result<Vec<_>, _>>()?;
+    let kinks = kink_params(s, &bend);
     let mut added = 0;
     let mut round = 0;
     // Measured error per interval; None where it must be (re)measured. Hermite pieces depend
@@ -122,7 +134,7 @@ fn refine(
         if generator == Generator::Interpolate {
             known.iter_mut().for_each(|e| *e = None);
         }
-        let errs = interval_errors(s, &fit, &ts, &bend, &mut known)?;
+        let errs = interval_errors(s, &fit, &ts, &bend, &kinks, &mut known)?;
         let deviation = errs.iter().copied().fold(0.0, f64::max);
         if deviation <= tol || round >= MAX_ROUNDS || added >= MAX_ADDED {
             return Ok(BentSpline {
@@ -185,12 +197,14 @@ fn bend_sample(bend: &Bend, p: DVec3, t: f64) -> Result<DVec3, TempleError> {
 /// For each interval between consecutive type-value points, the largest distance from the
 /// exact bend of the original outline (sampled) to the spline's two segments of that interval
 /// (the nearest point restricted to them: an upper bound of the true distance, so honest).
-/// Intervals with a `known` value are not measured again.
+/// Intervals with a `known` value are not measured again. Besides the evenly spaced samples,
+/// every kink parameter inside the interval is sampled: the error peaks there.
 fn interval_errors(
     orig: &QuadSpline,
     fit: &QuadSpline,
     ts: &[f64],
     bend: &Bend,
+    kinks: &[f64],
     known: &mut [Option<f64>],
 ) -> Result<Vec<f64>, TempleError> {
     let mut errs = Vec::with_capacity(known.len());
@@ -201,8 +215,11 @@ fn interval_errors(
         }
         let (ta, tb) = interval_span(ts, i);
         let mut err: f64 = 0.0;
-        for k in 1..=SAMPLES_PER_INTERVAL {
-            let t = ta + (tb - ta) * k as f64 / (SAMPLES_PER_INTERVAL + 1) as f64;
+        let first = kinks.partition_point(|k| *k <= ta);
+        let inside = kinks[first..].iter().take_while(|k| **k < tb).copied();
+        let even = (1..=SAMPLES_PER_INTERVAL)
+            .map(|k| ta + (tb - ta) * k as f64 / (SAMPLES_PER_INTERVAL + 1) as f64);
+        for t in even.chain(inside) {
             let exact = bend_sample(bend, orig.eval(t), t)?;
             err = err.max(fit.closest_point_in(exact, 2 * i, 2 * i + 2).distance);
         }
@@ -210,6 +227,47 @@ fn interval_errors(
         errs.push(err);
     }
     Ok(errs)
+}
+
+/// The parameters where the original outline crosses s = L or s = L + Rθ, sorted: there the
+/// exact bent outline has a slight corner (off the centerline the map is only C0 across those
+/// lines), so the refit's error peaks there. Roots of x(u) = c per Bézier segment.
+fn kink_params(orig: &QuadSpline, bend: &Bend) -> Vec<f64> {
+    let mut out = Vec::new();
+    if bend.th == 0.0 {
+        return out;
+    }
+    let n = orig.segments.len() as f64;
+    for c in [bend.l, bend.l + bend.r * bend.th] {
+        let c = bend.base.x + c;
+        for (i, sg) in orig.segments.iter().enumerate() {
+            // x(u) = a u² + b u + x0 with a = x0 − 2x1 + x2, b = 2(x1 − x0).
+            let (x0, x1, x2) = (sg[0].x - c, sg[1].x - c, sg[2].x - c);
+            let (a, b) = (x0 - 2.0 * x1 + x2, 2.0 * (x1 - x0));
+            let mut roots = [f64::NAN; 2];
+            if a.abs() <= 1e-300 {
+                if b != 0.0 {
+                    roots[0] = -x0 / b;
+                }
+            } else {
+                let disc = b * b - 4.0 * a * x0;
+                if disc >= 0.0 {
+                    let q = -0.5 * (b + b.signum() * disc.sqrt());
+                    roots[0] = q / a;
+                    if q != 0.0 {
+                        roots[1] = x0 / q;
+                    }
+                }
+            }
+            for u in roots {
+                if (0.0..=1.0).contains(&u) {
+                    out.push((i as f64 + u) / n);
+                }
+            }
+        }
+    }
+    out.sort_by(f64::total_cmp);
+    out
 }
 
 /// The unit tangent of the exact bent outline at original parameter t: J(S(t))·S'(t), falling
@@ -230,16 +288,18 @@ fn bent_tangent(orig: &QuadSpline, bend: &Bend, t: f64, fallback: DVec3) -> DVec
 fn tangent_meet(p: DVec3, tp: DVec3, q: DVec3, tq: DVec3) -> Option<DVec3> {
     let d = q - p;
     let len = d.length();
-    let c = tp.dot(tq);
-    let det = 1.0 - c * c;
-    if det < 1e-12 {
+    // α·tp + γ·tq = d, solved with cross products (n = tp × tq, |n|² = sin² of the angle
+    // between the tangents): no 1 − cos² cancellation, so nearly parallel tangents (a nearly
+    // straight piece) still give an accurate meeting point.
+    let n = tp.cross(tq);
+    let n2 = n.length_squared();
+    if n2 < 1e-24 {
         // Parallel tangents: only a straight piece along them works (control at the middle).
-        let straight = c > 0.0 && d.dot(tp) > 0.0 && d.cross(tp).length() <= 1e-12 * len;
+        let straight = tp.dot(tq) > 0.0 && d.dot(tp) > 0.0 && d.cross(tp).length() <= 1e-12 * len;
         return straight.then(|| p.lerp(q, 0.5));
     }
-    let (bp, bq) = (tp.dot(d), tq.dot(d));
-    let alpha = (bp - c * bq) / det;
-    let gamma = (bq - c * bp) / det;
+    let alpha = d.cross(tq).dot(n) / n2;
+    let gamma = tp.cross(d).dot(n) / n2;
     // Legs much shorter than the chord make a near-cusp (speed almost 0 at an end), which
     // CAM arc fitting and offsetting handle badly: refuse them as well.
     if !(alpha > 0.05 * len && gamma > 0.05 * len) {
