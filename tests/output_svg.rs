@@ -186,24 +186,6 @@ fn eval_path(d: &str) -> Vec<Vec<DVec2>> {
 
 // ---------------------------------------------------------------- reference geometry
 
-fn dense(f: impl Fn(f64) -> DVec2, n: usize) -> Vec<DVec2> {
-    (0..=n).map(|i| f(i as f64 / n as f64)).collect()
-}
-
-/// A bulge segment's arc, derived independently of the library: centre from the chord's
-/// midpoint along its left normal by (d/2)/tan(θ/2), then rotation of (a - c) by s·θ.
-fn bulge_ref(a: DVec2, b: DVec2, bulge: f64) -> Vec<DVec2> {
-    if bulge == 0.0 {
-        return vec![a, b];
-    }
-    let th = 4.0 * bulge.atan();
-    let ch = b - a;
-    let d = ch.length();
-    let left = DVec2::new(-ch.y, ch.x) / d;
-    let c = (a + b) / 2.0 + left * (d / 2.0) / (th / 2.0).tan();
-    dense(|s| c + DVec2::from_angle(th * s).rotate(a - c), 2000)
-}
-
 /// Reference polylines of an entity seen along `view` (orthographic onto arbitrary_axis(view)).
 fn reference(e: &EntityKind, view: DVec3) -> Vec<Vec<DVec2>> {
     let (rx, ry) = arbitrary_axis(view);
@@ -295,58 +277,6 @@ fn reference(e: &EntityKind, view: DVec3) -> Vec<Vec<DVec2>> {
             .map(|(a, b)| vec![pr(vertices[a]), pr(vertices[b])])
             .collect(),
         EntityKind::Text { .. } => vec![],
-    }
-}
-
-/// Segments bucketed on a grid, so a distance query looks at a few cells only. Queries
-/// farther than one cell from everything answer infinity (a failure at the tolerances here).
-struct SegIndex {
-    cell: f64,
-    map: std::collections::HashMap<(i64, i64), Vec<(DVec2, DVec2)>>,
-}
-
-impl SegIndex {
-    fn new(lines: &[Vec<DVec2>]) -> SegIndex {
-        let cell = 0.5;
-        let mut map: std::collections::HashMap<(i64, i64), Vec<(DVec2, DVec2)>> =
-            std::collections::HashMap::new();
-        for l in lines {
-            let segs: Vec<(DVec2, DVec2)> = if l.len() == 1 {
-                vec![(l[0], l[0])]
-            } else {
-                l.windows(2).map(|w| (w[0], w[1])).collect()
-            };
-            for (a, b) in segs {
-                let lo = (a.min(b) / cell).floor();
-                let hi = (a.max(b) / cell).floor();
-                for i in lo.x as i64..=hi.x as i64 {
-                    for j in lo.y as i64..=hi.y as i64 {
-                        map.entry((i, j)).or_default().push((a, b));
-                    }
-                }
-            }
-        }
-        SegIndex { cell, map }
-    }
-
-    fn dist(&self, q: DVec2) -> f64 {
-        let c = (q / self.cell).floor();
-        let mut best = f64::INFINITY;
-        for i in -1..=1 {
-            for j in -1..=1 {
-                let key = (c.x as i64 + i, c.y as i64 + j);
-                for (a, b) in self.map.get(&key).map(|v| v.as_slice()).unwrap_or(&[]) {
-                    let ab = *b - *a;
-                    let s = if ab.length_squared() == 0.0 {
-                        0.0
-                    } else {
-                        ((q - *a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
-                    };
-                    best = best.min((q - (*a + ab * s)).length());
-                }
-            }
-        }
-        best
     }
 }
 

@@ -23,14 +23,20 @@ pub fn python() -> PathBuf {
     p
 }
 
-/// Run tests/validate/check_dxf.py and parse its JSON.
+/// Run tests/validate/check_dxf.py on one file and check the verdict (see `check_dxf_many`).
 pub fn check_dxf(path: &Path, cam: bool) -> serde_json::Value {
+    check_dxf_many(&[path], cam).remove(0)
+}
+
+/// Run tests/validate/check_dxf.py once over several files; every file must load with the
+/// strict reader, audit with 0 errors and 0 fixes, and load without ezdxf warnings.
+pub fn check_dxf_many(paths: &[&Path], cam: bool) -> Vec<serde_json::Value> {
     let mut cmd = Command::new(python());
-    cmd.arg(manifest().join("tests/validate/check_dxf.py"))
-        .arg(path);
+    cmd.arg(manifest().join("tests/validate/check_dxf.py"));
     if cam {
         cmd.arg("--cam");
     }
+    cmd.args(paths);
     let out = cmd.output().expect("running check_dxf.py");
     assert!(
         out.status.success(),
@@ -43,33 +49,35 @@ pub fn check_dxf(path: &Path, cam: bool) -> serde_json::Value {
             String::from_utf8_lossy(&out.stdout)
         )
     });
-    assert!(
-        v.get("load_error").is_none(),
-        "ezdxf.readfile refused {}: {v}",
-        path.display()
-    );
-    assert_eq!(
-        v["audit_errors"],
-        0,
-        "audit errors in {}: {}",
-        path.display(),
-        v["audit_messages"]
-    );
-    assert_eq!(
-        v["audit_fixes"],
-        0,
-        "audit fixes in {}: {}",
-        path.display(),
-        v["audit_messages"]
-    );
-    assert_eq!(
-        v["load_warnings"].as_array().map_or(0, |a| a.len()),
-        0,
-        "ezdxf warned while loading {}: {}",
-        path.display(),
-        v["load_warnings"]
-    );
-    v
+    let all = if paths.len() == 1 {
+        vec![v]
+    } else {
+        v.as_array().unwrap().clone()
+    };
+    for (v, path) in all.iter().zip(paths) {
+        let path = path.display();
+        assert!(
+            v.get("load_error").is_none(),
+            "ezdxf.readfile refused {path}: {v}"
+        );
+        assert_eq!(
+            v["audit_errors"], 0,
+            "audit errors in {path}: {}",
+            v["audit_messages"]
+        );
+        assert_eq!(
+            v["audit_fixes"], 0,
+            "audit fixes in {path}: {}",
+            v["audit_messages"]
+        );
+        assert_eq!(
+            v["load_warnings"].as_array().map_or(0, |a| a.len()),
+            0,
+            "ezdxf warned while loading {path}: {}",
+            v["load_warnings"]
+        );
+    }
+    all
 }
 
 /// Render with rsvg-convert to PNG; stderr must be empty.
@@ -361,4 +369,77 @@ pub fn mixed_drawing() -> Drawing {
         },
     );
     d
+}
+
+pub fn dense(f: impl Fn(f64) -> DVec2, n: usize) -> Vec<DVec2> {
+    (0..=n).map(|i| f(i as f64 / n as f64)).collect()
+}
+
+/// A bulge segment's arc, derived independently of the library: centre from the chord's
+/// midpoint along its left normal by (d/2)/tan(θ/2), then rotation of (a - c) by s·θ.
+pub fn bulge_ref(a: DVec2, b: DVec2, bulge: f64) -> Vec<DVec2> {
+    if bulge == 0.0 {
+        return vec![a, b];
+    }
+    let th = 4.0 * bulge.atan();
+    let ch = b - a;
+    let d = ch.length();
+    let left = DVec2::new(-ch.y, ch.x) / d;
+    let c = (a + b) / 2.0 + left * (d / 2.0) / (th / 2.0).tan();
+    // Chord error below 1e-7: sagitta r·(1 - cos(Δ/2)) ≈ r·Δ²/8.
+    let r = (a - c).length();
+    let n = ((th.abs() * (r / 8e-7).sqrt()).ceil() as usize).clamp(4, 20000);
+    dense(|s| c + DVec2::from_angle(th * s).rotate(a - c), n)
+}
+
+/// Segments bucketed on a grid, so a distance query looks at a few cells only. Queries
+/// farther than one cell from everything answer infinity (a failure at the tolerances here).
+pub struct SegIndex {
+    cell: f64,
+    map: std::collections::HashMap<(i64, i64), Vec<(DVec2, DVec2)>>,
+}
+
+impl SegIndex {
+    pub fn new(lines: &[Vec<DVec2>]) -> SegIndex {
+        let cell = 0.5;
+        let mut map: std::collections::HashMap<(i64, i64), Vec<(DVec2, DVec2)>> =
+            std::collections::HashMap::new();
+        for l in lines {
+            let segs: Vec<(DVec2, DVec2)> = if l.len() == 1 {
+                vec![(l[0], l[0])]
+            } else {
+                l.windows(2).map(|w| (w[0], w[1])).collect()
+            };
+            for (a, b) in segs {
+                let lo = (a.min(b) / cell).floor();
+                let hi = (a.max(b) / cell).floor();
+                for i in lo.x as i64..=hi.x as i64 {
+                    for j in lo.y as i64..=hi.y as i64 {
+                        map.entry((i, j)).or_default().push((a, b));
+                    }
+                }
+            }
+        }
+        SegIndex { cell, map }
+    }
+
+    pub fn dist(&self, q: DVec2) -> f64 {
+        let c = (q / self.cell).floor();
+        let mut best = f64::INFINITY;
+        for i in -1..=1 {
+            for j in -1..=1 {
+                let key = (c.x as i64 + i, c.y as i64 + j);
+                for (a, b) in self.map.get(&key).map(|v| v.as_slice()).unwrap_or(&[]) {
+                    let ab = *b - *a;
+                    let s = if ab.length_squared() == 0.0 {
+                        0.0
+                    } else {
+                        ((q - *a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+                    };
+                    best = best.min((q - (*a + ab * s)).length());
+                }
+            }
+        }
+        best
+    }
 }

@@ -1,6 +1,6 @@
 """Strict DXF check used by the Rust tests (tests/output_dxf.rs, tests/output_cam.rs).
 
-Usage: check_dxf.py FILE [--cam]
+Usage: check_dxf.py [--cam] FILE...   (several files: a JSON array, one object per file)
 
 Loads FILE with ezdxf's strict reader (`ezdxf.readfile`, not `recover`), runs `doc.audit()`,
 and prints one JSON object on stdout:
@@ -203,9 +203,7 @@ def cam_report(msp):
     }
 
 
-def main():
-    path = sys.argv[1]
-    cam = "--cam" in sys.argv[2:]
+def check(path, cam):
     # Anything ezdxf's loader repairs silently is logged; collect it as a failure too.
     records = []
 
@@ -214,30 +212,42 @@ def main():
             if record.levelno >= logging.WARNING:
                 records.append(record.getMessage())
 
-    logging.getLogger("ezdxf").addHandler(Collect())
+    handler = Collect()
+    logger = logging.getLogger("ezdxf")
+    logger.addHandler(handler)
     try:
-        doc = ezdxf.readfile(path)
-    except Exception as exc:  # the Rust test reports this as a failure
-        print(json.dumps({"load_error": f"{type(exc).__name__}: {exc}"}))
-        return
-    auditor = doc.audit()
-    msp = doc.modelspace()
-    out = {
-        "version": doc.dxfversion,
-        "audit_errors": len(auditor.errors),
-        "audit_fixes": len(auditor.fixes),
-        "audit_messages": [str(m.message) for m in list(auditor.errors) + list(auditor.fixes)],
-        "load_warnings": records,
-        "insunits": doc.header.get("$INSUNITS"),
-        "layers": [
-            {"name": decode_dxf_unicode(l.dxf.name), "color": l.dxf.color, "linetype": l.dxf.linetype}
-            for l in doc.layers
-        ],
-        "entities": [dump_entity(e) for e in msp],
-    }
-    if cam:
-        out["cam"] = cam_report(msp)
-    print(json.dumps(out))
+        try:
+            doc = ezdxf.readfile(path)
+        except Exception as exc:  # the Rust test reports this as a failure
+            return {"load_error": f"{type(exc).__name__}: {exc}"}
+        auditor = doc.audit()
+        msp = doc.modelspace()
+        out = {
+            "version": doc.dxfversion,
+            "audit_errors": len(auditor.errors),
+            "audit_fixes": len(auditor.fixes),
+            "audit_messages": [str(m.message) for m in list(auditor.errors) + list(auditor.fixes)],
+            "load_warnings": records,
+            "insunits": doc.header.get("$INSUNITS"),
+            "layers": [
+                {"name": decode_dxf_unicode(l.dxf.name), "color": l.dxf.color, "linetype": l.dxf.linetype}
+                for l in doc.layers
+            ],
+            "entities": [dump_entity(e) for e in msp],
+        }
+        if cam:
+            out["cam"] = cam_report(msp)
+        return out
+    finally:
+        logger.removeHandler(handler)
+
+
+def main():
+    args = sys.argv[1:]
+    cam = "--cam" in args
+    files = [a for a in args if a != "--cam"]
+    results = [check(f, cam) for f in files]
+    print(json.dumps(results[0] if len(results) == 1 else results))
 
 
 if __name__ == "__main__":
