@@ -50,6 +50,14 @@ fn main() {
         r0.iter().filter(|p| p.closed).count(),
         r0.iter().map(|p| p.points.len()).sum::<usize>()
     );
+    // A plane through mesh vertices and along edges (the icosahedron has vertices on z = 0).
+    let rv = section(&a, DVec3::ZERO, DVec3::Z).unwrap();
+    println!(
+        "section_vertices pieces {} closed {} on_plane_vertices {}",
+        rv.len(),
+        rv.iter().filter(|p| p.closed).count(),
+        a.vertices().iter().filter(|v| v.z == 0.0).count()
+    );
     println!(
         "section_all_single_closed_loop {}",
         pieces.iter().all(|&(n, c)| n == 1 && c == 1)
@@ -57,17 +65,26 @@ fn main() {
 
     let c = a.clone();
     let t = Instant::now();
+    let cpu = cpu_seconds();
     c.bvh();
-    println!("bvh_build_one_s {:.4}", t.elapsed().as_secs_f64());
+    println!(
+        "bvh_build_one_s {:.4} cpu {:.2}",
+        t.elapsed().as_secs_f64(),
+        cpu_seconds() - cpu
+    );
     drop(c);
     let t = Instant::now();
     c2_adj(&a);
     println!("adjacency_build_s {:.4}", t.elapsed().as_secs_f64());
 
     let t = Instant::now();
+    let cpu = cpu_seconds();
     let (curves, stats) = intersect_meshes_with_stats(&a, &b);
     let inter = t.elapsed().as_secs_f64();
-    println!("intersect_incl_bvh_s {inter:.4}");
+    println!(
+        "intersect_incl_bvh_s {inter:.4} cpu {:.2}",
+        cpu_seconds() - cpu
+    );
     println!(
         "intersect pieces {} closed {} points {} box_pairs {} plane_pairs {} intersecting_pairs {} irregular {}",
         curves.len(),
@@ -89,4 +106,17 @@ fn main() {
 fn c2_adj(m: &Mesh) {
     let c = m.clone();
     let _ = c.adjacency();
+}
+
+/// This process's user + system CPU time (Linux /proc; 0 elsewhere), to see through the load
+/// of a shared machine.
+fn cpu_seconds() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
+        return 0.0;
+    };
+    let after = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = after.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    // Fields 14 and 15 of stat (utime, stime) are at 11 and 12 after the command name.
+    (ticks(11) + ticks(12)) / 100.0
 }
