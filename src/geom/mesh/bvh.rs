@@ -5,8 +5,8 @@
 //! the tree is cut top-down where the highest differing code bit changes (Lauterbach et al.,
 //! "Fast BVH construction on GPUs", 2009), into flat arrays: nodes in depth-first order, the left
 //! child right after its parent, leaves holding a run of `order` (their boxes are stored in
-//! the same order, so traversal reads them sequentially). Boxes are exact (min/max of the f64 corners), so box tests never
-//! reject a pair that truly touches.
+//! the same order, so traversal reads them sequentially). Boxes are stored in f32 rounded
+//! outward, so box tests never reject a pair that truly touches.
 
 use super::Mesh;
 use glam::DVec3;
@@ -78,9 +78,87 @@ impl Aabb {
     }
 }
 
+/// A box stored in f32 with its bounds rounded outward: half the memory of [`Aabb`] (which
+/// matters at millions of triangles) and still conservative, so no touching pair is lost.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Box32 {
+    min: [f32; 3],
+    max: [f32; 3],
+}
+
+#[inline]
+fn round_down(x: f64) -> f32 {
+    let r = x as f32;
+    if r as f64 > x {
+        r.next_down()
+    } else {
+        r
+    }
+}
+
+#[inline]
+fn round_up(x: f64) -> f32 {
+    let r = x as f32;
+    if (r as f64) < x {
+        r.next_up()
+    } else {
+        r
+    }
+}
+
+impl Box32 {
+    const EMPTY: Box32 = Box32 {
+        min: [f32::INFINITY; 3],
+        max: [f32::NEG_INFINITY; 3],
+    };
+
+    #[inline]
+    fn from_aabb(b: &Aabb) -> Box32 {
+        Box32 {
+            min: [
+                round_down(b.min.x),
+                round_down(b.min.y),
+                round_down(b.min.z),
+            ],
+            max: [round_up(b.max.x), round_up(b.max.y), round_up(b.max.z)],
+        }
+    }
+
+    #[inline]
+    fn to_aabb(self) -> Aabb {
+        Aabb {
+            min: DVec3::new(self.min[0] as f64, self.min[1] as f64, self.min[2] as f64),
+            max: DVec3::new(self.max[0] as f64, self.max[1] as f64, self.max[2] as f64),
+        }
+    }
+
+    #[inline]
+    fn union(&self, o: &Box32) -> Box32 {
+        Box32 {
+            min: std::array::from_fn(|i| self.min[i].min(o.min[i])),
+            max: std::array::from_fn(|i| self.max[i].max(o.max[i])),
+        }
+    }
+
+    #[inline]
+    fn overlaps(&self, o: &Box32) -> bool {
+        self.min[0] <= o.max[0]
+            && o.min[0] <= self.max[0]
+            && self.min[1] <= o.max[1]
+            && o.min[1] <= self.max[1]
+            && self.min[2] <= o.max[2]
+            && o.min[2] <= self.max[2]
+    }
+
+    #[inline]
+    fn size2(&self) -> f32 {
+        (0..3).map(|i| (self.max[i] - self.min[i]).powi(2)).sum()
+    }
+}
+
 #[derive(Debug, Clone, Copy)]
 struct Node {
-    bounds: Aabb,
+    bounds: Box32,
     /// Leaf: first index into `order`; inner: index of the right child.
     start_or_right: u32,
     /// Leaf: number of triangles (> 0); inner: 0.
@@ -92,8 +170,8 @@ struct Node {
 pub struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
-    /// The triangles' exact boxes, in `order`'s order.
-    tri_bounds: Vec<Aabb>,
+    /// The triangles' boxes (outward-rounded f32), in `order`'s order.
+    tri_bounds: Vec<Box32>,
 }
 
 const LEAF_SIZE: usize = 4;
@@ -138,10 +216,10 @@ impl Bvh {
         let keyed = radix_sort_high32(keyed);
         let order: Vec<u32> = keyed.iter().map(|&k| k as u32).collect();
         // Boxes in leaf order, so the build and every traversal read them sequentially.
-        let tri_bounds: Vec<Aabb> = order
+        let tri_bounds: Vec<Box32> = order
             .par_iter()
             .with_min_len(1 << 14)
-            .map(|&t| Aabb::of_points(&mesh.corners_of(t as usize)))
+            .map(|&t| Box32::from_aabb(&Aabb::of_points(&mesh.corners_of(t as usize))))
             .collect();
         let mut nodes = Vec::with_capacity(2 * keyed.len() / LEAF_SIZE + 1);
         build_into(&keyed, 0, &tri_bounds, &mut nodes);
@@ -154,7 +232,7 @@ impl Bvh {
 
     /// The box of everything (None for an empty mesh).
     pub fn bounds(&self) -> Option<Aabb> {
-        self.nodes.first().map(|n| n.bounds)
+        self.nodes.first().map(|n| n.bounds.to_aabb())
     }
 
     /// Calls `f` with every triangle whose box overlaps `b`.
@@ -190,12 +268,12 @@ impl Bvh {
         stack.push(0);
         while let Some(i) = stack.pop() {
             let n = &self.nodes[i as usize];
-            if !enter(&n.bounds) {
+            if !enter(&n.bounds.to_aabb()) {
                 continue;
             }
             if n.count > 0 {
                 for k in n.start_or_right as usize..(n.start_or_right + n.count) as usize {
-                    leaf(self.order[k], &self.tri_bounds[k]);
+                    leaf(self.order[k], &self.tri_bounds[k].to_aabb());
                 }
             } else {
                 stack.push(n.start_or_right);
@@ -210,7 +288,8 @@ impl Bvh {
             return None;
         }
         let mut best: Option<(u32, f64)> = None;
-        let mut stack: Vec<(u32, f64)> = vec![(0, self.nodes[0].bounds.distance_squared(p))];
+        let mut stack: Vec<(u32, f64)> =
+            vec![(0, self.nodes[0].bounds.to_aabb().distance_squared(p))];
         while let Some((i, d)) = stack.pop() {
             if best.is_some_and(|(_, bd)| d > bd) {
                 continue;
@@ -227,8 +306,8 @@ impl Bvh {
                 }
             } else {
                 let (l, r) = (i + 1, n.start_or_right);
-                let dl = self.nodes[l as usize].bounds.distance_squared(p);
-                let dr = self.nodes[r as usize].bounds.distance_squared(p);
+                let dl = self.nodes[l as usize].bounds.to_aabb().distance_squared(p);
+                let dr = self.nodes[r as usize].bounds.to_aabb().distance_squared(p);
                 // Push the farther first so the nearer is explored first.
                 if dl < dr {
                     stack.push((r, dr));
@@ -341,8 +420,8 @@ impl Bvh {
                 }
                 (false, false) => {
                     // Split the larger box to keep the pair boxes comparable.
-                    let sa = (na.bounds.max - na.bounds.min).length_squared();
-                    let sb = (nb.bounds.max - nb.bounds.min).length_squared();
+                    let sa = na.bounds.size2();
+                    let sb = nb.bounds.size2();
                     if sa >= sb {
                         stack.push((a + 1, b));
                         stack.push((na.start_or_right, b));
@@ -417,9 +496,9 @@ fn split_point(codes: &[u64]) -> usize {
 
 /// `codes` holds the sorted keys (Morton code in the high 32 bits); `tri_bounds` is in leaf
 /// order; the run covers `offset..offset + codes.len()`.
-fn build_into(codes: &[u64], offset: usize, tri_bounds: &[Aabb], nodes: &mut Vec<Node>) -> Aabb {
+fn build_into(codes: &[u64], offset: usize, tri_bounds: &[Box32], nodes: &mut Vec<Node>) -> Box32 {
     if codes.len() <= LEAF_SIZE {
-        let mut b = Aabb::EMPTY;
+        let mut b = Box32::EMPTY;
         for tb in &tri_bounds[offset..offset + codes.len()] {
             b = b.union(tb);
         }
@@ -433,7 +512,7 @@ fn build_into(codes: &[u64], offset: usize, tri_bounds: &[Aabb], nodes: &mut Vec
     let mid = split_point(codes);
     let me = nodes.len();
     nodes.push(Node {
-        bounds: Aabb::EMPTY,
+        bounds: Box32::EMPTY,
         start_or_right: 0,
         count: 0,
     });
