@@ -15,12 +15,14 @@ fn main() {
     }
     let planes: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20);
     let t = Instant::now();
+    let cpu = cpu_seconds();
     let (a, ra) = read_stl(&args[1], 0.0).expect("read A");
     let load_a = t.elapsed().as_secs_f64();
+    let load_a_cpu = cpu_seconds() - cpu;
     let t = Instant::now();
     let (b, _) = read_stl(&args[2], 0.0).expect("read B");
     let load_b = t.elapsed().as_secs_f64();
-    println!("load_a_s {load_a:.4}");
+    println!("load_a_s {load_a:.4} cpu {load_a_cpu:.2}");
     println!("load_b_s {load_b:.4}");
     println!(
         "triangles {} vertices {} dropped {}",
