@@ -15,12 +15,14 @@ fn main() {
     }
     let planes: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20);
     let t = Instant::now();
+    let cpu = cpu_seconds();
     let (a, ra) = read_stl(&args[1], 0.0).expect("read A");
     let load_a = t.elapsed().as_secs_f64();
+    let load_a_cpu = cpu_seconds() - cpu;
     let t = Instant::now();
     let (b, _) = read_stl(&args[2], 0.0).expect("read B");
     let load_b = t.elapsed().as_secs_f64();
-    println!("load_a_s {load_a:.4}");
+    println!("load_a_s {load_a:.4} cpu {load_a_cpu:.2}");
     println!("load_b_s {load_b:.4}");
     println!(
         "triangles {} vertices {} dropped {}",
@@ -50,6 +52,14 @@ fn main() {
         r0.iter().filter(|p| p.closed).count(),
         r0.iter().map(|p| p.points.len()).sum::<usize>()
     );
+    // A plane through mesh vertices and along edges (the icosahedron has vertices on z = 0).
+    let rv = section(&a, DVec3::ZERO, DVec3::Z).unwrap();
+    println!(
+        "section_vertices pieces {} closed {} on_plane_vertices {}",
+        rv.len(),
+        rv.iter().filter(|p| p.closed).count(),
+        a.vertices().iter().filter(|v| v.z == 0.0).count()
+    );
     println!(
         "section_all_single_closed_loop {}",
         pieces.iter().all(|&(n, c)| n == 1 && c == 1)
@@ -57,17 +67,26 @@ fn main() {
 
     let c = a.clone();
     let t = Instant::now();
+    let cpu = cpu_seconds();
     c.bvh();
-    println!("bvh_build_one_s {:.4}", t.elapsed().as_secs_f64());
+    println!(
+        "bvh_build_one_s {:.4} cpu {:.2}",
+        t.elapsed().as_secs_f64(),
+        cpu_seconds() - cpu
+    );
     drop(c);
     let t = Instant::now();
     c2_adj(&a);
     println!("adjacency_build_s {:.4}", t.elapsed().as_secs_f64());
 
     let t = Instant::now();
+    let cpu = cpu_seconds();
     let (curves, stats) = intersect_meshes_with_stats(&a, &b);
     let inter = t.elapsed().as_secs_f64();
-    println!("intersect_incl_bvh_s {inter:.4}");
+    println!(
+        "intersect_incl_bvh_s {inter:.4} cpu {:.2}",
+        cpu_seconds() - cpu
+    );
     println!(
         "intersect pieces {} closed {} points {} box_pairs {} plane_pairs {} intersecting_pairs {} irregular {}",
         curves.len(),
@@ -89,4 +108,17 @@ fn main() {
 fn c2_adj(m: &Mesh) {
     let c = m.clone();
     let _ = c.adjacency();
+}
+
+/// This process's user + system CPU time (Linux /proc; 0 elsewhere), to see through the load
+/// of a shared machine.
+fn cpu_seconds() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
+        return 0.0;
+    };
+    let after = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = after.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    // Fields 14 and 15 of stat (utime, stime) are at 11 and 12 after the command name.
+    (ticks(11) + ticks(12)) / 100.0
 }

@@ -135,3 +135,23 @@ fn adjacency_links_shared_edges() {
     assert_eq!(a.neighbours(1)[0], 0);
     assert_eq!(a.boundary_edges().count(), 4);
 }
+
+#[test]
+fn streamed_and_in_memory_binary_reads_agree() {
+    use lispcad::geom::mesh::parse_stl;
+    let dir = tempfile::tempdir().unwrap();
+    // 20,480 facets: more than one read chunk.
+    let m = icosphere(DVec3::new(1.0, 2.0, 3.0), 2.0, 5);
+    let p = dir.path().join("big.stl");
+    write_stl_binary(&m, &p).unwrap();
+    let (a, ia) = read_stl(&p, 0.0).unwrap();
+    let (b, ib) = parse_stl(&std::fs::read(&p).unwrap(), 0.0, "big.stl").unwrap();
+    assert_eq!(ia, ib);
+    assert_eq!(a.vertices(), b.vertices());
+    assert_eq!(a.triangles(), b.triangles());
+    assert_eq!(a.vertices().len(), m.vertices().len());
+    // A truncated binary file is not silently accepted.
+    let bytes = std::fs::read(&p).unwrap();
+    std::fs::write(&p, &bytes[..bytes.len() - 7]).unwrap();
+    assert!(read_stl(&p, 0.0).is_err());
+}

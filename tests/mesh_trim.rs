@@ -110,3 +110,21 @@ fn a_cutter_that_misses_keeps_everything() {
     assert!(r.removed.is_empty());
     assert!(trim(&s, &grid(2, 1.0, 5.0), DVec3::NAN).is_err());
 }
+
+use proptest::prelude::*;
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+    #[test]
+    fn trimmed_parts_add_up_and_share_the_cut(z in -0.8f64..0.8, ax in -0.5f64..0.5, ay in -0.5f64..0.5) {
+        let s = icosphere(DVec3::ZERO, 1.0, 2);
+        let m = DMat4::from_translation(DVec3::new(0.0, 0.0, z)) * DMat4::from_rotation_x(ax) * DMat4::from_rotation_y(ay);
+        let cutter = grid(3, 3.0, 0.0).map_vertices(|p| m.transform_point3(p)).unwrap();
+        let r = trim(&s, &cutter, DVec3::new(0.0, 0.0, 5.0)).unwrap();
+        let sum = r.kept.area() + r.removed.area();
+        prop_assert!((sum - s.area()).abs() <= 1e-12 * s.area());
+        prop_assert_eq!(r.kept.boundary().len(), 1);
+        prop_assert_eq!(r.removed.boundary().len(), 1);
+        prop_assert_eq!(sorted_points(&r.kept), sorted_points(&r.removed));
+    }
+}

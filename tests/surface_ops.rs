@@ -153,3 +153,34 @@ fn areas_and_boundaries() {
     let s = Surface::sphere(DVec3::ZERO, 1.0).unwrap();
     assert!(surface_boundary(&s, 1e-3).unwrap().is_empty());
 }
+
+#[test]
+fn revolved_profile_sections_are_exact() {
+    use lispcad::geom::surface::SampledCurve;
+    use std::sync::Arc;
+    // A cone-like profile from (1,0,0) to (2,0,2), revolved fully about Z.
+    let prof = Arc::new(
+        SampledCurve::new(
+            vec![DVec3::new(1.0, 0.0, 0.0), DVec3::new(2.0, 0.0, 2.0)],
+            false,
+        )
+        .unwrap(),
+    );
+    let s = Surface::revolve(prof, DVec3::ZERO, DVec3::Z, std::f64::consts::TAU).unwrap();
+    // ⟂ axis at z = 1: the circle of radius 1.5.
+    let r = surface_section(&s, DVec3::new(0.0, 0.0, 1.0), DVec3::Z, 1e-4).unwrap();
+    assert_eq!(r.len(), 1);
+    assert!(r[0].closed);
+    for p in &r[0].points {
+        assert!(((p.x * p.x + p.y * p.y).sqrt() - 1.5).abs() < 1e-14 && (p.z - 1.0).abs() < 1e-15);
+    }
+    // Through the axis (plane x = 0): the profile and its mirror, exactly.
+    let r = surface_section(&s, DVec3::ZERO, DVec3::X, 1e-4).unwrap();
+    assert_eq!(r.len(), 2);
+    for c in &r {
+        assert!(c.points.iter().all(|p| p.x.abs() < 1e-15));
+        let last = c.points[c.points.len() - 1];
+        assert!((c.points[0].y.abs() - 1.0).abs() < 1e-15 && (last.y.abs() - 2.0).abs() < 1e-15);
+        assert!((last.z - 2.0).abs() < 1e-15);
+    }
+}

@@ -59,6 +59,8 @@ def run_trimesh(out):
     s0 = a.section(plane_origin=[0, 0, 0], plane_normal=NORMAL)
     r["section_z0_pieces"] = len(s0.discrete)
     r["section_pieces_range"] = (min(pieces), max(pieces))
+    sv = a.section(plane_origin=[0, 0, 0], plane_normal=[0, 0, 1])
+    r["section_vertices_pieces"] = len(sv.discrete)
     t = time.perf_counter()
     for o in planes():
         trimesh.intersections.mesh_plane(a, NORMAL, o)
@@ -95,7 +97,10 @@ def main():
         ("load both STL (s)", f"{load_lc:.3f}", f"{tm['load_both_s']:.3f}"),
         ("plane section, per plane, no BVH (ms)", lc["section_scan_ms_per_plane"][0], f"{tm['section_ms']:.1f} (section)"),
         ("plane section, per plane, BVH cached (ms)", lc["section_bvh_ms_per_plane"][0], f"{tm['mesh_plane_ms']:.1f} (mesh_plane, segments only)"),
-        ("section pieces at z=0", lc["section_z0"][1], str(tm["section_z0_pieces"])),
+        ("section pieces, oblique plane at z=0", lc["section_z0"][1], str(tm["section_z0_pieces"])),
+        ("section pieces, 20 oblique planes (min..max)", "1..1" if lc["section_all_single_closed_loop"][0] == "true" else "not all 1",
+         f"{tm['section_pieces_range'][0]}..{tm['section_pieces_range'][1]}"),
+        ("section pieces, plane z=0 through vertices", lc["section_vertices"][1], str(tm["section_vertices_pieces"])),
         ("mesh/mesh curve incl. BVH build (s)", lc["intersect_incl_bvh_s"][0],
          f"{tm.get('manifold_intersection_s', float('nan')):.3f} (manifold3d boolean ∩)"),
         ("mesh/mesh curve, BVHs cached (s)", lc["intersect_cached_bvh_s"][0], "-"),

@@ -22,30 +22,51 @@ pub(crate) fn edge_key(a: u32, b: u32) -> u64 {
 }
 
 impl Adjacency {
-    /// Built by sorting the half-edges on their undirected vertex pair (O(n log n), parallel).
-    pub fn build(triangles: &[[u32; 3]], _vertex_count: usize) -> Adjacency {
-        let mut half: Vec<(u64, u32)> = triangles
+    /// Built from the vertex → incident-triangle lists (compressed rows): the neighbour across
+    /// edge (a, b) of t is the one other triangle in a's list that also uses b. Linear in the
+    /// mesh size (times the vertex valence), parallel over triangles.
+    pub fn build(triangles: &[[u32; 3]], vertex_count: usize) -> Adjacency {
+        let mut start = vec![0u32; vertex_count + 1];
+        for t in triangles {
+            for &v in t {
+                start[v as usize + 1] += 1;
+            }
+        }
+        for i in 0..vertex_count {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut incident = vec![0u32; triangles.len() * 3];
+        for (t, tri) in triangles.iter().enumerate() {
+            for &v in tri {
+                incident[fill[v as usize] as usize] = t as u32;
+                fill[v as usize] += 1;
+            }
+        }
+        let neighbours = triangles
             .par_iter()
             .enumerate()
-            .flat_map_iter(|(t, tri)| {
-                (0..3).map(move |i| (edge_key(tri[i], tri[(i + 1) % 3]), (t * 3 + i) as u32))
+            .map(|(t, tri)| {
+                std::array::from_fn(|i| {
+                    let (a, b) = (tri[i], tri[(i + 1) % 3]);
+                    let list =
+                        &incident[start[a as usize] as usize..start[a as usize + 1] as usize];
+                    let mut found = NO_NEIGHBOUR;
+                    let mut count = 0;
+                    for &u in list {
+                        if u as usize != t && triangles[u as usize].contains(&b) {
+                            count += 1;
+                            found = u;
+                        }
+                    }
+                    if count == 1 {
+                        found
+                    } else {
+                        NO_NEIGHBOUR
+                    }
+                })
             })
             .collect();
-        half.par_sort_unstable();
-        let mut neighbours = vec![[NO_NEIGHBOUR; 3]; triangles.len()];
-        let mut i = 0;
-        while i < half.len() {
-            let mut j = i + 1;
-            while j < half.len() && half[j].0 == half[i].0 {
-                j += 1;
-            }
-            if j - i == 2 {
-                let (h0, h1) = (half[i].1 as usize, half[i + 1].1 as usize);
-                neighbours[h0 / 3][h0 % 3] = (h1 / 3) as u32;
-                neighbours[h1 / 3][h1 % 3] = (h0 / 3) as u32;
-            }
-            i = j;
-        }
         Adjacency { neighbours }
     }
 

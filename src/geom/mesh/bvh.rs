@@ -4,9 +4,9 @@
 //! A linear BVH: triangle centroids get 30-bit Morton codes, one radix sort orders them, and
 //! the tree is cut top-down where the highest differing code bit changes (Lauterbach et al.,
 //! "Fast BVH construction on GPUs", 2009), into flat arrays: nodes in depth-first order, the left
-//! child right after its parent, leaves holding a run of `order`. The two halves of large nodes
-//! are built in parallel. Boxes are exact (min/max of the f64 corners), so box tests never
-//! reject a pair that truly touches.
+//! child right after its parent, leaves holding a run of `order` (their boxes are stored in
+//! the same order, so traversal reads them sequentially). Boxes are stored in f32 rounded
+//! outward, so box tests never reject a pair that truly touches.
 
 use super::Mesh;
 use glam::DVec3;
@@ -78,9 +78,87 @@ impl Aabb {
     }
 }
 
+/// A box stored in f32 with its bounds rounded outward: half the memory of [`Aabb`] (which
+/// matters at millions of triangles) and still conservative, so no touching pair is lost.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Box32 {
+    min: [f32; 3],
+    max: [f32; 3],
+}
+
+#[inline]
+fn round_down(x: f64) -> f32 {
+    let r = x as f32;
+    if r as f64 > x {
+        r.next_down()
+    } else {
+        r
+    }
+}
+
+#[inline]
+fn round_up(x: f64) -> f32 {
+    let r = x as f32;
+    if (r as f64) < x {
+        r.next_up()
+    } else {
+        r
+    }
+}
+
+impl Box32 {
+    const EMPTY: Box32 = Box32 {
+        min: [f32::INFINITY; 3],
+        max: [f32::NEG_INFINITY; 3],
+    };
+
+    #[inline]
+    fn from_aabb(b: &Aabb) -> Box32 {
+        Box32 {
+            min: [
+                round_down(b.min.x),
+                round_down(b.min.y),
+                round_down(b.min.z),
+            ],
+            max: [round_up(b.max.x), round_up(b.max.y), round_up(b.max.z)],
+        }
+    }
+
+    #[inline]
+    fn to_aabb(self) -> Aabb {
+        Aabb {
+            min: DVec3::new(self.min[0] as f64, self.min[1] as f64, self.min[2] as f64),
+            max: DVec3::new(self.max[0] as f64, self.max[1] as f64, self.max[2] as f64),
+        }
+    }
+
+    #[inline]
+    fn union(&self, o: &Box32) -> Box32 {
+        Box32 {
+            min: std::array::from_fn(|i| self.min[i].min(o.min[i])),
+            max: std::array::from_fn(|i| self.max[i].max(o.max[i])),
+        }
+    }
+
+    #[inline]
+    fn overlaps(&self, o: &Box32) -> bool {
+        self.min[0] <= o.max[0]
+            && o.min[0] <= self.max[0]
+            && self.min[1] <= o.max[1]
+            && o.min[1] <= self.max[1]
+            && self.min[2] <= o.max[2]
+            && o.min[2] <= self.max[2]
+    }
+
+    #[inline]
+    fn size2(&self) -> f32 {
+        (0..3).map(|i| (self.max[i] - self.min[i]).powi(2)).sum()
+    }
+}
+
 #[derive(Debug, Clone, Copy)]
 struct Node {
-    bounds: Aabb,
+    bounds: Box32,
     /// Leaf: first index into `order`; inner: index of the right child.
     start_or_right: u32,
     /// Leaf: number of triangles (> 0); inner: 0.
@@ -92,48 +170,59 @@ struct Node {
 pub struct Bvh {
     nodes: Vec<Node>,
     order: Vec<u32>,
-    tri_bounds: Vec<Aabb>,
+    /// The triangles' boxes (outward-rounded f32), in `order`'s order.
+    tri_bounds: Vec<Box32>,
 }
 
 const LEAF_SIZE: usize = 4;
-/// Only the root's two halves are built in parallel: deeper parallel levels cost more in
-/// copying node arrays than they gain on two cores.
-const PARALLEL_CUTOFF: usize = 1 << 15;
 
 impl Bvh {
     /// Builds the hierarchy over all triangles of `mesh`.
     pub fn build(mesh: &Mesh) -> Bvh {
         use rayon::prelude::*;
-        let tri_bounds: Vec<Aabb> = (0..mesh.len())
-            .into_par_iter()
-            .map(|t| Aabb::of_points(&mesh.corners_of(t)))
-            .collect();
-        if tri_bounds.is_empty() {
+        if mesh.is_empty() {
             return Bvh {
                 nodes: Vec::new(),
                 order: Vec::new(),
-                tri_bounds,
+                tri_bounds: Vec::new(),
             };
         }
-        let mut cb = Aabb::EMPTY;
-        for b in &tri_bounds {
-            cb.grow((b.min + b.max) * 0.5);
-        }
+        let centroid = |t: usize| {
+            let [a, b, c] = mesh.corners_of(t);
+            (a + b + c) * (1.0 / 3.0)
+        };
+        let cb = (0..mesh.len())
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .fold(
+                || Aabb::EMPTY,
+                |mut acc, t| {
+                    acc.grow(centroid(t));
+                    acc
+                },
+            )
+            .reduce(|| Aabb::EMPTY, |x, y| x.union(&y));
         let ext = (cb.max - cb.min).max(DVec3::splat(f64::MIN_POSITIVE));
         let scale = DVec3::splat(((1u64 << MORTON_BITS) - 1) as f64) / ext;
         // Key = 30-bit Morton code << 32 | triangle: one u64 radix-sorted on the code bits.
-        let keyed: Vec<u64> = tri_bounds
-            .par_iter()
-            .enumerate()
-            .map(|(t, b)| {
-                let q = (((b.min + b.max) * 0.5 - cb.min) * scale).max(DVec3::ZERO);
+        let keyed: Vec<u64> = (0..mesh.len())
+            .into_par_iter()
+            .with_min_len(1 << 14)
+            .map(|t| {
+                let q = ((centroid(t) - cb.min) * scale).max(DVec3::ZERO);
                 (morton3(q.x as u64, q.y as u64, q.z as u64) << 32) | t as u64
             })
             .collect();
         let keyed = radix_sort_high32(keyed);
-        let codes: Vec<u64> = keyed.iter().map(|k| k >> 32).collect();
         let order: Vec<u32> = keyed.iter().map(|&k| k as u32).collect();
-        let nodes = build_rec(&codes, &order, 0, &tri_bounds);
+        // Boxes in leaf order, so the build and every traversal read them sequentially.
+        let tri_bounds: Vec<Box32> = order
+            .par_iter()
+            .with_min_len(1 << 14)
+            .map(|&t| Box32::from_aabb(&Aabb::of_points(&mesh.corners_of(t as usize))))
+            .collect();
+        let mut nodes = Vec::with_capacity(2 * keyed.len() / LEAF_SIZE + 1);
+        build_into(&keyed, 0, &tri_bounds, &mut nodes);
         Bvh {
             nodes,
             order,
@@ -141,15 +230,9 @@ impl Bvh {
         }
     }
 
-    /// The exact box of triangle `t`.
-    #[inline]
-    pub fn triangle_bounds(&self, t: usize) -> &Aabb {
-        &self.tri_bounds[t]
-    }
-
     /// The box of everything (None for an empty mesh).
     pub fn bounds(&self) -> Option<Aabb> {
-        self.nodes.first().map(|n| n.bounds)
+        self.nodes.first().map(|n| n.bounds.to_aabb())
     }
 
     /// Calls `f` with every triangle whose box overlaps `b`.
@@ -185,14 +268,12 @@ impl Bvh {
         stack.push(0);
         while let Some(i) = stack.pop() {
             let n = &self.nodes[i as usize];
-            if !enter(&n.bounds) {
+            if !enter(&n.bounds.to_aabb()) {
                 continue;
             }
             if n.count > 0 {
-                for &t in
-                    &self.order[n.start_or_right as usize..(n.start_or_right + n.count) as usize]
-                {
-                    leaf(t, &self.tri_bounds[t as usize]);
+                for k in n.start_or_right as usize..(n.start_or_right + n.count) as usize {
+                    leaf(self.order[k], &self.tri_bounds[k].to_aabb());
                 }
             } else {
                 stack.push(n.start_or_right);
@@ -207,7 +288,8 @@ impl Bvh {
             return None;
         }
         let mut best: Option<(u32, f64)> = None;
-        let mut stack: Vec<(u32, f64)> = vec![(0, self.nodes[0].bounds.distance_squared(p))];
+        let mut stack: Vec<(u32, f64)> =
+            vec![(0, self.nodes[0].bounds.to_aabb().distance_squared(p))];
         while let Some((i, d)) = stack.pop() {
             if best.is_some_and(|(_, bd)| d > bd) {
                 continue;
@@ -224,8 +306,8 @@ impl Bvh {
                 }
             } else {
                 let (l, r) = (i + 1, n.start_or_right);
-                let dl = self.nodes[l as usize].bounds.distance_squared(p);
-                let dr = self.nodes[r as usize].bounds.distance_squared(p);
+                let dl = self.nodes[l as usize].bounds.to_aabb().distance_squared(p);
+                let dr = self.nodes[r as usize].bounds.to_aabb().distance_squared(p);
                 // Push the farther first so the nearer is explored first.
                 if dl < dr {
                     stack.push((r, dr));
@@ -314,18 +396,16 @@ impl Bvh {
             }
             match (na.count > 0, nb.count > 0) {
                 (true, true) => {
-                    let ra = &self.order
-                        [na.start_or_right as usize..(na.start_or_right + na.count) as usize];
-                    let rb = &other.order
-                        [nb.start_or_right as usize..(nb.start_or_right + nb.count) as usize];
-                    for &ta in ra {
-                        let ba = &self.tri_bounds[ta as usize];
+                    let ra = na.start_or_right as usize..(na.start_or_right + na.count) as usize;
+                    let rb = nb.start_or_right as usize..(nb.start_or_right + nb.count) as usize;
+                    for ka in ra {
+                        let ba = &self.tri_bounds[ka];
                         if !ba.overlaps(&nb.bounds) {
                             continue;
                         }
-                        for &tb in rb {
-                            if ba.overlaps(&other.tri_bounds[tb as usize]) {
-                                out.push((ta, tb));
+                        for kb in rb.clone() {
+                            if ba.overlaps(&other.tri_bounds[kb]) {
+                                out.push((self.order[ka], other.order[kb]));
                             }
                         }
                     }
@@ -340,8 +420,8 @@ impl Bvh {
                 }
                 (false, false) => {
                     // Split the larger box to keep the pair boxes comparable.
-                    let sa = (na.bounds.max - na.bounds.min).length_squared();
-                    let sb = (nb.bounds.max - nb.bounds.min).length_squared();
+                    let sa = na.bounds.size2();
+                    let sb = nb.bounds.size2();
                     if sa >= sb {
                         stack.push((a + 1, b));
                         stack.push((na.start_or_right, b));
@@ -396,25 +476,17 @@ fn morton3(x: u64, y: u64, z: u64) -> u64 {
     spread3(x) | (spread3(y) << 1) | (spread3(z) << 2)
 }
 
-/// Builds the subtree over the Morton-sorted run `codes`/`tris` (at `offset` in the final
-/// order); returns its nodes in depth-first order with indices relative to the subtree's root.
-fn build_rec(codes: &[u64], tris: &[u32], offset: usize, tri_bounds: &[Aabb]) -> Vec<Node> {
-    let mut nodes = Vec::with_capacity(2 * tris.len() / LEAF_SIZE + 1);
-    build_into(codes, tris, offset, tri_bounds, &mut nodes);
-    nodes
-}
-
 /// The split of a Morton-sorted run: where its highest differing bit turns on (the linear BVH
 /// of Lauterbach et al. 2009), or the middle when all codes are equal or the split is lopsided.
 fn split_point(codes: &[u64]) -> usize {
     let n = codes.len();
-    let (first, last) = (codes[0], codes[n - 1]);
+    let (first, last) = (codes[0] >> 32, codes[n - 1] >> 32);
     if first != last {
         let bit = 63 - (first ^ last).leading_zeros();
         let mask = !0u64 << bit;
         let prefix = first & mask;
         // First index whose code has the bit set.
-        let s = codes.partition_point(|&c| c & mask == prefix);
+        let s = codes.partition_point(|&c| (c >> 32) & mask == prefix);
         if s > n / 8 && s < n - n / 8 {
             return s;
         }
@@ -422,63 +494,33 @@ fn split_point(codes: &[u64]) -> usize {
     n / 2
 }
 
-fn build_into(
-    codes: &[u64],
-    tris: &[u32],
-    offset: usize,
-    tri_bounds: &[Aabb],
-    nodes: &mut Vec<Node>,
-) -> Aabb {
-    if tris.len() <= LEAF_SIZE {
-        let mut b = Aabb::EMPTY;
-        for &t in tris {
-            b = b.union(&tri_bounds[t as usize]);
+/// `codes` holds the sorted keys (Morton code in the high 32 bits); `tri_bounds` is in leaf
+/// order; the run covers `offset..offset + codes.len()`.
+fn build_into(codes: &[u64], offset: usize, tri_bounds: &[Box32], nodes: &mut Vec<Node>) -> Box32 {
+    if codes.len() <= LEAF_SIZE {
+        let mut b = Box32::EMPTY;
+        for tb in &tri_bounds[offset..offset + codes.len()] {
+            b = b.union(tb);
         }
         nodes.push(Node {
             bounds: b,
             start_or_right: offset as u32,
-            count: tris.len() as u32,
+            count: codes.len() as u32,
         });
         return b;
     }
     let mid = split_point(codes);
     let me = nodes.len();
     nodes.push(Node {
-        bounds: Aabb::EMPTY,
+        bounds: Box32::EMPTY,
         start_or_right: 0,
         count: 0,
     });
     let (lc, rc) = codes.split_at(mid);
-    let (lt, rt) = tris.split_at(mid);
-    let b = if tris.len() >= PARALLEL_CUTOFF && nodes.is_empty() {
-        let (mut ln, rn) = rayon::join(
-            || build_rec(lc, lt, offset, tri_bounds),
-            || build_rec(rc, rt, offset + mid, tri_bounds),
-        );
-        let base = (me + 1) as u32;
-        let rbase = base + ln.len() as u32;
-        for n in ln.iter_mut() {
-            if n.count == 0 {
-                n.start_or_right += base;
-            }
-        }
-        let bl = ln[0].bounds;
-        let br = rn[0].bounds;
-        nodes.extend_from_slice(&ln);
-        nodes.extend(rn.into_iter().map(|mut n| {
-            if n.count == 0 {
-                n.start_or_right += rbase;
-            }
-            n
-        }));
-        nodes[me].start_or_right = rbase;
-        bl.union(&br)
-    } else {
-        let bl = build_into(lc, lt, offset, tri_bounds, nodes);
-        nodes[me].start_or_right = nodes.len() as u32;
-        let br = build_into(rc, rt, offset + mid, tri_bounds, nodes);
-        bl.union(&br)
-    };
+    let bl = build_into(lc, offset, tri_bounds, nodes);
+    nodes[me].start_or_right = nodes.len() as u32;
+    let br = build_into(rc, offset + mid, tri_bounds, nodes);
+    let b = bl.union(&br);
     nodes[me].bounds = b;
     b
 }

@@ -70,9 +70,64 @@ fn extension(path: &Path) -> Option<String> {
 /// Reads a binary or ASCII STL file. `weld_tolerance` ≥ 0: corners closer than it merge
 /// (0 = exact bit-pattern welding only).
 pub fn read_stl(path: impl AsRef<Path>, weld_tolerance: f64) -> Result<(Mesh, StlRead), MeshError> {
+    use std::io::Read;
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| io_err(path, e))?;
-    parse_stl(&bytes, weld_tolerance, &path.display().to_string())
+    let name = path.display().to_string();
+    let mut file = std::fs::File::open(path).map_err(|e| io_err(path, e))?;
+    let len = file.metadata().map_err(|e| io_err(path, e))?.len();
+    let mut header = [0u8; 84];
+    if len >= 84 {
+        file.read_exact(&mut header).map_err(|e| io_err(path, e))?;
+        let n = u32::from_le_bytes([header[80], header[81], header[82], header[83]]) as u64;
+        if len == 84 + 50 * n {
+            check_weld_tolerance(weld_tolerance)?;
+            // Binary: stream the facets through the welder in chunks (no copy of the file).
+            let n = n as usize;
+            let mut welder = Welder::new(n * 3);
+            const CHUNK: usize = 8192;
+            let mut buf = vec![0u8; 50 * CHUNK];
+            let mut done = 0;
+            while done < n {
+                let k = CHUNK.min(n - done);
+                file.read_exact(&mut buf[..50 * k])
+                    .map_err(|e| io_err(path, e))?;
+                for rec in buf[..50 * k].chunks_exact(50) {
+                    for c in 0..3 {
+                        welder.push(binary_corner(rec, c));
+                    }
+                }
+                done += k;
+            }
+            let (v, idx) = welder.finish();
+            return finish_stl(n, v, idx, weld_tolerance, &name, true);
+        }
+    }
+    let mut bytes = header[..len.min(84) as usize].to_vec();
+    file.read_to_end(&mut bytes).map_err(|e| io_err(path, e))?;
+    parse_stl(&bytes, weld_tolerance, &name)
+}
+
+fn check_weld_tolerance(weld_tolerance: f64) -> Result<(), MeshError> {
+    if weld_tolerance >= 0.0 && weld_tolerance.is_finite() {
+        Ok(())
+    } else {
+        Err(MeshError::BadParameter {
+            parameter: "weld tolerance",
+            limit: "finite and >= 0",
+            value: weld_tolerance,
+        })
+    }
+}
+
+/// Corner `c` (0..3) of a 50-byte binary STL facet record.
+#[inline]
+fn binary_corner(rec: &[u8], c: usize) -> DVec3 {
+    let s = 12 + 12 * c;
+    let f = |j: usize| {
+        let o = s + 4 * j;
+        f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]) as f64
+    };
+    DVec3::new(f(0), f(1), f(2))
 }
 
 /// Parses STL bytes (`name` is used in error messages).
@@ -81,35 +136,41 @@ pub fn parse_stl(
     weld_tolerance: f64,
     name: &str,
 ) -> Result<(Mesh, StlRead), MeshError> {
-    if !(weld_tolerance >= 0.0 && weld_tolerance.is_finite()) {
-        return Err(MeshError::BadParameter {
-            parameter: "weld tolerance",
-            limit: "finite and >= 0",
-            value: weld_tolerance,
-        });
-    }
+    check_weld_tolerance(weld_tolerance)?;
     let binary = bytes.len() >= 84 && {
         let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
         bytes.len() as u64 == 84 + 50 * n as u64
     };
     let (facets, vertices, idx) = if binary {
         let n = (bytes.len() - 84) / 50;
-        let corner = |i: usize| {
-            let rec = &bytes[84 + 50 * (i / 3)..];
-            let s = 12 + 12 * (i % 3);
-            let f = |j: usize| {
-                let o = s + 4 * j;
-                f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]) as f64
-            };
-            DVec3::new(f(0), f(1), f(2))
-        };
-        let (v, idx) = weld_exact(n * 3, corner);
+        let mut welder = Welder::new(n * 3);
+        for rec in bytes[84..].chunks_exact(50) {
+            for c in 0..3 {
+                welder.push(binary_corner(rec, c));
+            }
+        }
+        let (v, idx) = welder.finish();
         (n, v, idx)
     } else {
         let corners = parse_ascii_stl(bytes, name)?;
-        let (v, idx) = weld_exact(corners.len(), |i| corners[i]);
+        let mut welder = Welder::new(corners.len());
+        for &c in &corners {
+            welder.push(c);
+        }
+        let (v, idx) = welder.finish();
         (corners.len() / 3, v, idx)
     };
+    finish_stl(facets, vertices, idx, weld_tolerance, name, binary)
+}
+
+fn finish_stl(
+    facets: usize,
+    vertices: Vec<DVec3>,
+    idx: Vec<u32>,
+    weld_tolerance: f64,
+    name: &str,
+    binary: bool,
+) -> Result<(Mesh, StlRead), MeshError> {
     if let Some(i) = vertices.iter().position(|c| !c.is_finite()) {
         return Err(parse_err(
             name,
@@ -195,43 +256,63 @@ fn same_bits(a: DVec3, b: DVec3) -> bool {
         && a.z.to_bits() == b.z.to_bits()
 }
 
-/// Exact welding of `n` corners: an open-addressing table keyed on the coordinates' bit
-/// patterns (after `+ 0.0`, which turns -0 into +0 so the two zeros weld), grown at half load.
-fn weld_exact(n: usize, corner: impl Fn(usize) -> DVec3) -> (Vec<DVec3>, Vec<u32>) {
-    let mut cap = (n / 2).next_power_of_two().max(16);
-    let mut table = vec![u32::MAX; cap];
-    let mut vertices: Vec<DVec3> = Vec::with_capacity(n / 5 + 16);
-    let mut idx = Vec::with_capacity(n);
-    for i in 0..n {
-        let p = corner(i) + DVec3::ZERO;
-        let mut slot = hash_point(p) as usize & (cap - 1);
-        loop {
-            let e = table[slot];
-            if e == u32::MAX {
-                table[slot] = vertices.len() as u32;
-                idx.push(vertices.len() as u32);
-                vertices.push(p);
-                break;
-            }
-            if same_bits(vertices[e as usize], p) {
-                idx.push(e);
-                break;
-            }
-            slot = (slot + 1) & (cap - 1);
+/// Exact welding by the coordinates' bit patterns (after `+ 0.0`, which turns -0 into +0 so
+/// the two zeros weld): an open-addressing table, grown at half load, fed one corner at a time.
+struct Welder {
+    cap: usize,
+    table: Vec<u32>,
+    vertices: Vec<DVec3>,
+    idx: Vec<u32>,
+}
+
+impl Welder {
+    fn new(corners: usize) -> Welder {
+        // Closed meshes have about one vertex per six corners.
+        let cap = (corners / 3).next_power_of_two().max(16);
+        Welder {
+            cap,
+            table: vec![u32::MAX; cap],
+            vertices: Vec::with_capacity(corners / 5 + 16),
+            idx: Vec::with_capacity(corners),
         }
-        if vertices.len() * 2 > cap {
-            cap *= 2;
-            table = vec![u32::MAX; cap];
-            for (k, &v) in vertices.iter().enumerate() {
-                let mut slot = hash_point(v) as usize & (cap - 1);
-                while table[slot] != u32::MAX {
-                    slot = (slot + 1) & (cap - 1);
+    }
+
+    #[inline]
+    fn push(&mut self, p: DVec3) {
+        let p = p + DVec3::ZERO;
+        let mask = self.cap - 1;
+        let mut slot = hash_point(p) as usize & mask;
+        loop {
+            let e = self.table[slot];
+            if e == u32::MAX {
+                self.table[slot] = self.vertices.len() as u32;
+                self.idx.push(self.vertices.len() as u32);
+                self.vertices.push(p);
+                break;
+            }
+            if same_bits(self.vertices[e as usize], p) {
+                self.idx.push(e);
+                break;
+            }
+            slot = (slot + 1) & mask;
+        }
+        if self.vertices.len() * 2 > self.cap {
+            self.cap *= 2;
+            let mask = self.cap - 1;
+            self.table = vec![u32::MAX; self.cap];
+            for (k, &v) in self.vertices.iter().enumerate() {
+                let mut slot = hash_point(v) as usize & mask;
+                while self.table[slot] != u32::MAX {
+                    slot = (slot + 1) & mask;
                 }
-                table[slot] = k as u32;
+                self.table[slot] = k as u32;
             }
         }
     }
-    (vertices, idx)
+
+    fn finish(self) -> (Vec<DVec3>, Vec<u32>) {
+        (self.vertices, self.idx)
+    }
 }
 
 /// Tolerance welding: each vertex, in order, joins the first earlier kept vertex within `tol`

@@ -20,14 +20,14 @@ mod trim;
 
 pub use adjacency::{Adjacency, NO_NEIGHBOUR};
 pub use bvh::{Aabb, Bvh};
-pub use chain::{chain_segments, Polyline3};
+pub use chain::{chain_segments, Polyline3, Segment};
 pub use error::MeshError;
 pub use extend::{corners, extend};
 pub use intersect::{intersect_meshes, intersect_meshes_with_stats, IntersectStats};
 pub(crate) use io::weld_tolerance_grid;
 pub use io::{
-    read_mesh, read_obj, read_stl, write_mesh, write_obj, write_stl_ascii, write_stl_binary,
-    StlRead,
+    parse_obj, parse_stl, read_mesh, read_obj, read_stl, write_mesh, write_obj, write_stl_ascii,
+    write_stl_binary, StlRead,
 };
 pub use primitives::icosphere;
 pub use section::section;

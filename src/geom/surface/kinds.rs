@@ -196,8 +196,8 @@ impl Surface {
         }))
     }
 
-    /// Whether the u direction closes on itself (u = 0 and u = 1 meet).
-    pub(crate) fn name(&self) -> &'static str {
+    /// The kind's name, as the language shows it.
+    pub fn name(&self) -> &'static str {
         match self {
             Surface::Ruled(_) => "ruled",
             Surface::Revolve(_) => "revolve",

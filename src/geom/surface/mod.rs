@@ -28,7 +28,7 @@ pub use ops::{
 };
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};
-pub use sweep::rotation_minimizing_frames;
+pub use sweep::{rotation_minimizing_frames, Frame};
 pub use tessellate::mesh_surface;
 
 use crate::geom::ParamCurve;

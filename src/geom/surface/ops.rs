@@ -31,8 +31,104 @@ pub fn surface_section(
             }
             Ok(cylinder_section(c, plane_point, plane_normal, tol))
         }
+        Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol) {
+            Some(curves) => Ok(curves),
+            None => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
+        },
         _ => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
     }
+}
+
+/// The exact sections of a surface of revolution where they are simple: a plane perpendicular
+/// to the axis cuts circles (arcs for a partial revolution) through the profile's crossings
+/// (paper 002's arc/plane, inverted); a plane containing the axis cuts the profile itself,
+/// turned into the plane. Other planes: None (use the mesh).
+fn revolve_section(
+    r: &super::kinds::Revolve,
+    p: DVec3,
+    n: DVec3,
+    tol: f64,
+) -> Option<Vec<Polyline3>> {
+    use glam::DQuat;
+    use std::f64::consts::TAU;
+    let n = n.normalize_or_zero();
+    if n == DVec3::ZERO || !p.is_finite() {
+        return None;
+    }
+    let axis = r.axis_dir;
+    let along = n.dot(axis).abs();
+    let (_, prof) = super::sampled::sample_curve(r.profile.as_ref(), tol, 16);
+    if (1.0 - along) <= 1e-14 {
+        let mut out = Vec::new();
+        // One crossing per sign change, a point on the plane counting as positive (as in the
+        // mesh section), so a sample lying on the plane is not reported twice.
+        for w in prof.windows(2) {
+            let (d0, d1) = (n.dot(w[0] - p), n.dot(w[1] - p));
+            if (d0 < 0.0) == (d1 < 0.0) {
+                continue;
+            }
+            let q = if d0 == 0.0 {
+                w[0]
+            } else if d1 == 0.0 {
+                w[1]
+            } else {
+                w[0] + (w[1] - w[0]) * (d0 / (d0 - d1))
+            };
+            let c = r.axis_point + axis * (q - r.axis_point).dot(axis);
+            let rad = (q - c).length();
+            if rad <= tol {
+                out.push(Polyline3 {
+                    points: vec![q],
+                    closed: false,
+                });
+                continue;
+            }
+            let step = (2.0 * (1.0 - tol / rad).clamp(-1.0, 1.0).acos())
+                .clamp(1e-4, std::f64::consts::FRAC_PI_8);
+            let k = (r.angle / step).ceil().max(1.0) as usize;
+            let full = r.angle >= TAU;
+            let m = if full { k } else { k + 1 };
+            let pts: Vec<DVec3> = (0..m)
+                .map(|i| c + DQuat::from_axis_angle(axis, r.angle * i as f64 / k as f64) * (q - c))
+                .collect();
+            out.push(Polyline3 {
+                points: pts,
+                closed: full,
+            });
+        }
+        return Some(out);
+    }
+    if along <= 1e-14 && n.dot(r.axis_point - p).abs() <= tol {
+        // The plane contains the axis: the profile turned by θ lies in it where its radial
+        // direction does; find that direction from a profile point off the axis.
+        let q = prof.iter().copied().find(|q| {
+            let d = *q - r.axis_point;
+            (d - axis * d.dot(axis)).length() > tol
+        })?;
+        let d = q - r.axis_point;
+        let radial = (d - axis * d.dot(axis)).normalize();
+        let target = axis.cross(n).normalize();
+        let mut out = Vec::new();
+        for dir in [target, -target] {
+            let theta = radial
+                .cross(dir)
+                .dot(axis)
+                .atan2(radial.dot(dir))
+                .rem_euclid(TAU);
+            if theta <= r.angle + 1e-12 || (r.angle >= TAU) {
+                let rot = DQuat::from_axis_angle(axis, theta);
+                out.push(Polyline3 {
+                    points: prof
+                        .iter()
+                        .map(|x| r.axis_point + rot * (*x - r.axis_point))
+                        .collect(),
+                    closed: false,
+                });
+            }
+        }
+        return Some(out);
+    }
+    None
 }
 
 /// Intersection curves of two surfaces, through their meshes.
