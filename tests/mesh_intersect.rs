@@ -206,3 +206,28 @@ fn exactly_the_truly_intersecting_pairs() {
         "one curve point per intersecting pair on a closed loop"
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    #[test]
+    fn swapping_the_arguments_gives_the_same_curves(
+        ax in -1.0f64..1.0, ay in -1.0f64..1.0, angle in 0.0f64..3.0,
+        tx in -1.5f64..1.5, ty in -1.0f64..1.0, tz in -1.0f64..1.0,
+    ) {
+        let a = icosphere(DVec3::ZERO, 1.0, 2);
+        let m = DMat4::from_translation(DVec3::new(tx, ty, tz))
+            * DMat4::from_axis_angle(DVec3::new(ax, ay, 1.0).normalize(), angle);
+        let b = a.map_vertices(|p| m.transform_point3(p)).unwrap();
+        let ab = intersect_meshes(&a, &b);
+        let ba = intersect_meshes(&b, &a);
+        prop_assert_eq!(&ab, &ba);
+        // Closed meshes meet in closed curves.
+        prop_assert!(ab.iter().all(|p| p.closed));
+    }
+}
+
+#[test]
+fn a_mesh_against_itself_has_no_curve() {
+    let a = icosphere(DVec3::ZERO, 1.0, 2);
+    assert!(intersect_meshes(&a, &a.clone()).is_empty());
+}
