@@ -35,14 +35,17 @@ fn run(l1: f64, l2: f64, r: f64, bend_deg: f64) -> Run {
         for (k, v) in [("L1", l1), ("L2", l2), ("R", r), ("BENDANG", bend_deg)] {
             it.set_global(k, Value::Real(v));
         }
-        it.load_file(SCRIPT).unwrap_or_else(|e| panic!("{}", e.message));
+        it.load_file(SCRIPT)
+            .unwrap_or_else(|e| panic!("{}", e.message));
         let outline = curve_of(&it.global("BENT"));
         let points = it
             .global("PTS")
             .iter()
             .map(|p| DVec3::from_array(it.point(p).unwrap()))
             .collect();
-        let centerline = it.eval_source("q", "(temple-centerline L1 L2 R theta base)").unwrap();
+        let centerline = it
+            .eval_source("q", "(temple-centerline L1 L2 R theta base)")
+            .unwrap();
         let centerline_length = centerline.iter().map(|c| curve_of(c).length()).sum();
         Run {
             outline,
@@ -102,12 +105,21 @@ fn the_outline_is_sound_over_a_grid_of_parameters() {
                 for p in &run.points {
                     let q = bend_point(*p, &run.params).unwrap();
                     let (_, on) = run.outline.closest_point(q);
-                    assert!(on.distance(q) < 1e-9, "{what}: misses {q} by {}", on.distance(q));
+                    assert!(
+                        on.distance(q) < 1e-9,
+                        "{what}: misses {q} by {}",
+                        on.distance(q)
+                    );
                 }
                 // No self-intersection: the two halves meet only at their two shared ends.
                 let (a, b) = halves(&run.outline);
                 let hits = intersect(&a, &b, 1e-9);
-                assert_eq!(hits.len(), 2, "{what}: halves meet at {:?}", hits.iter().map(|h| h.point).collect::<Vec<_>>());
+                assert_eq!(
+                    hits.len(),
+                    2,
+                    "{what}: halves meet at {:?}",
+                    hits.iter().map(|h| h.point).collect::<Vec<_>>()
+                );
                 let ends = [a.eval(0.0), a.eval(1.0)];
                 for h in &hits {
                     assert!(
@@ -138,7 +150,13 @@ fn the_outputs_pass_the_validators() {
         for s in set {
             cmd.arg("--set").arg(s);
         }
-        let o = cmd.arg("-o").arg(&dxf).arg("-o").arg(&svg).output().unwrap();
+        let o = cmd
+            .arg("-o")
+            .arg(&dxf)
+            .arg("-o")
+            .arg(&svg)
+            .output()
+            .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_lispcad"))
             .arg("run")
@@ -155,7 +173,8 @@ fn the_outputs_pass_the_validators() {
         assert!(cam_report.to_string().contains("POLYLINE"), "{cam_report}");
         dxfs.push(dxf);
     }
-    let reports = support::check_dxf_many(&dxfs.iter().map(|p| p.as_path()).collect::<Vec<_>>(), false);
+    let reports =
+        support::check_dxf_many(&dxfs.iter().map(|p| p.as_path()).collect::<Vec<_>>(), false);
     for r in reports {
         let s = r.to_string();
         for t in ["SPLINE", "LINE", "ARC", "TEXT", "CUT", "CENTER", "NOTES"] {

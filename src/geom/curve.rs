@@ -636,3 +636,10 @@ impl fmt::Display for Curve {
         }
     }
 }
+
+/// Every curve is a `ParamCurve` (so surfaces can take any curve as a profile or guide).
+impl crate::geom::traits::ParamCurve for Curve {
+    fn eval(&self, t: f64) -> DVec3 {
+        Curve::eval(self, t)
+    }
+}
