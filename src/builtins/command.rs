@@ -50,7 +50,8 @@ pub(crate) enum Input {
 impl Input {
     pub(crate) fn keyword(&self) -> Option<String> {
         match self {
-            Input::Word(w) => Some(w.trim().to_uppercase()),
+            // "_S": the underscore asks for the English keyword, as in AutoCAD.
+            Input::Word(w) => Some(w.trim().trim_start_matches('_').to_uppercase()),
             _ => None,
         }
     }
