@@ -115,9 +115,9 @@ pub(crate) fn unexpected(cmd: &str, want: &str, got: &Input) -> Exn {
 
 /// Adds an entity on the current layer, colour BYLAYER.
 pub(crate) fn add(it: &mut Interp, cmd: &str, kind: EntityKind) -> Result<u64, Exn> {
-    let d = it.ext::<Drawing>();
-    let layer = d.current_layer().to_string();
-    d.add(Entity::new(&layer, kind))
+    let layer = crate::builtins::entities::make::current_layer(it);
+    it.ext::<Drawing>()
+        .add(Entity::new(&layer, kind))
         .map_err(|e| cmd_err(cmd, e))
 }
 

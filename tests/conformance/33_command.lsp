@@ -143,3 +143,9 @@
 ;!! LINE: expected a point, "C" (close, after two segments), "U" or "", got "abc"
 (command "LINE" '(0 0) pause)
 ;!! command: PAUSE waits for the user, and there is none in a headless run
+;; CLAYER set by setvar is where commands draw.
+(command "LAYER" "N" "Via-setvar" "")
+(setvar "CLAYER" "Via-setvar")
+(command "LINE" '(0 0) '(1 0) "")
+(g 8)
+;=> "Via-setvar"
