@@ -743,7 +743,7 @@ mod tests {
         #[test]
         fn three_point_arc_passes_through_the_second_point(
             cx in -20.0..20.0f64, cy in -20.0..20.0f64, r in 0.5..30.0f64,
-            a0 in 0.0..6.28f64, d1 in 0.05..3.0f64, d2 in 0.05..3.0f64, ccw in any::<bool>(),
+            a0 in 0.0..TAU, d1 in 0.05..3.0f64, d2 in 0.05..3.0f64, ccw in any::<bool>(),
         ) {
             let s = if ccw { 1.0 } else { -1.0 };
             let c = DVec2::new(cx, cy);
