@@ -160,3 +160,5 @@
 ;=> nil
 (command "UCS" "OB" (entlast))
 ;!! UCS: only the World UCS exists in lispcad ("W"), got "OB"
+(command "PLINE" '(0 0) '(10 0) "A" '(5 0))
+;!! PLINE: the arc end point lies straight behind the tangent direction; no tangent arc reaches it

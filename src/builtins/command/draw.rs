@@ -6,7 +6,7 @@
 //! the chord, the included angle is 2φ, the bulge tan(φ/2), and the tangent at the arc's end is
 //! the chord direction turned by φ.
 
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
@@ -509,12 +509,23 @@ fn arc(it: &mut Interp, st: &mut ArcStep, input: &Input) -> Result<bool, Exn> {
     Ok(false)
 }
 
-/// The bulge of the arc leaving `a` along `tangent` and ending at `b`, and the tangent at `b`.
-fn tangent_arc(a: DVec2, b: DVec2, tangent: DVec2) -> (f64, DVec2) {
+/// The bulge of the arc leaving `a` along `tangent` and ending at `b`, and the tangent at `b`;
+/// None when `b` lies straight behind `a` (no finite arc is tangent there).
+fn tangent_arc(a: DVec2, b: DVec2, tangent: DVec2) -> Option<(f64, DVec2)> {
     let chord = b - a;
     let phi = tangent.perp_dot(chord).atan2(tangent.dot(chord));
+    if PI - phi.abs() < 1e-9 {
+        return None;
+    }
     let end = DVec2::from_angle(angle2(chord) + phi);
-    ((phi / 2.0).tan(), end)
+    Some(((phi / 2.0).tan(), end))
+}
+
+fn behind() -> Exn {
+    cmd_err(
+        "PLINE",
+        "the arc end point lies straight behind the tangent direction; no tangent arc reaches it",
+    )
 }
 
 /// The bulge of the arc a → s → b and the tangent at b.
@@ -565,7 +576,7 @@ fn pline(it: &mut Interp, pl: &mut Pline, input: &Input) -> Result<bool, Exn> {
                 return Ok(false);
             }
             if pl.arc_mode {
-                let (bulge, t) = tangent_arc(a, b, tangent);
+                let (bulge, t) = tangent_arc(a, b, tangent).ok_or_else(behind)?;
                 push_vertex(pl, *p, bulge, t);
             } else {
                 push_vertex(pl, *p, 0.0, (b - a).normalize());
@@ -616,7 +627,8 @@ fn pline(it: &mut Interp, pl: &mut Pline, input: &Input) -> Result<bool, Exn> {
                     }
                     if pl.arc_mode {
                         let a = last.unwrap_or_default().truncate();
-                        let (bulge, _) = tangent_arc(a, pl.pts[0].truncate(), tangent);
+                        let (bulge, _) =
+                            tangent_arc(a, pl.pts[0].truncate(), tangent).ok_or_else(behind)?;
                         if let Some(b) = pl.bulges.last_mut() {
                             *b = bulge;
                         }
@@ -733,7 +745,7 @@ mod tests {
             let a = DVec2::new(ax, ay);
             let t = DVec2::from_angle(t_ang);
             let b = a + DVec2::from_angle(t_ang + chord_turn) * len;
-            let (bulge, end_t) = tangent_arc(a, b, t);
+            let (bulge, end_t) = tangent_arc(a, b, t).expect("not straight behind");
             let (t0, t1) = arc_tangents(a, b, bulge);
             prop_assert!((t0 - t).length() < 1e-9, "start tangent {t0} vs {t}");
             prop_assert!((t1 - end_t).length() < 1e-9, "end tangent {t1} vs {end_t}");
