@@ -477,3 +477,34 @@ fn nurbs_circle_overlaps_the_circle_and_a_spline_pierces_a_circle_plane() {
     assert_eq!(h.len(), 1, "{h:?}");
     assert!(close(h[0].point, v(0.0, 1.0), 1e-12));
 }
+
+#[test]
+fn spline_pair_grazing_with_close_roots_and_touching() {
+    // y = (x − ½)² against y = c − (x − ½)²: roots at ½ ± √(c/2).
+    let c = 2.0 * 3.5e-6f64 * 3.5e-6;
+    let a = quad(vec![[v(0.0, 0.25), v(0.5, -0.25), v(1.0, 0.25)]]);
+    let b = Curve::bspline(
+        vec![v(0.0, c - 0.25), v(0.5, c + 0.25), v(1.0, c - 0.25)],
+        2,
+        None,
+        None,
+    )
+    .unwrap();
+    let h = both(&a, &b);
+    assert_eq!(h.len(), 2, "{h:?}");
+    assert!(
+        (h[0].point.x - (0.5 - 3.5e-6)).abs() < 1e-9
+            && (h[1].point.x - (0.5 + 3.5e-6)).abs() < 1e-9,
+        "{h:?}"
+    );
+    let b = Curve::bspline(
+        vec![v(0.0, -0.25), v(0.5, 0.25), v(1.0, -0.25)],
+        2,
+        None,
+        None,
+    )
+    .unwrap();
+    let h = both(&a, &b);
+    assert_eq!(kinds(&h), ["TANGENT"], "{h:?}");
+    assert!(close(h[0].point, v(0.5, 0.0), 1e-9));
+}
