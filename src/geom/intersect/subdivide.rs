@@ -60,6 +60,7 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
     };
     let start = out.len();
     recurse(&ctx, a, (0.0, 1.0), b, (0.0, 1.0), 0, out);
+    merge_overlaps(a, out, start, tol);
     // Remove duplicates found from neighbouring box pairs.
     let mut i = start;
     while i < out.len() {
@@ -70,6 +71,54 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
             i += 1;
         }
     }
+}
+
+/// Join the shared stretches found by neighbouring sub-pieces into maximal overlap pieces
+/// (each the sub-curve of `a` over the joined range) and drop point hits inside them.
+fn merge_overlaps(a: &Bez, out: &mut LHits, start: usize, tol: f64) {
+    let mut ranges: smallvec::SmallVec<[(f64, f64, f64, f64); 4]> = smallvec::SmallVec::new();
+    for h in &out[start..] {
+        if let LKind::Overlap(_, se, ue) = &h.kind {
+            ranges.push((h.s, *se, h.u, *ue));
+        }
+    }
+    if ranges.is_empty() {
+        return;
+    }
+    ranges.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut merged: smallvec::SmallVec<[(f64, f64, f64, f64); 4]> = smallvec::SmallVec::new();
+    for r in ranges {
+        match merged.last_mut() {
+            Some(m) if r.0 <= m.1 + 1e-12 => {
+                if r.1 > m.1 {
+                    m.1 = r.1;
+                    m.3 = r.3;
+                }
+            }
+            _ => merged.push(r),
+        }
+    }
+    let inside = |s: f64| merged.iter().any(|m| s >= m.0 - 1e-12 && s <= m.1 + 1e-12);
+    let mut kept: LHits = out
+        .drain(start..)
+        .filter(|h| !matches!(h.kind, LKind::Overlap(..)) && !inside(h.s))
+        .collect();
+    for (s0, s1, u0, u1) in merged {
+        if (a.eval(s1) - a.eval(s0)).length() <= tol {
+            // A stretch shorter than tol is a touch point.
+            kept.push(LHit::new(s0, u0, a.eval(s0), LKind::Tangent));
+            continue;
+        }
+        let piece = Piece::Bez(a.subsegment(s0, s1));
+        kept.push(LHit::new(
+            s0,
+            u0,
+            a.eval(s0),
+            LKind::Overlap(Box::new(piece), s1, u1),
+        ));
+    }
+    kept.sort_by(|x, y| x.s.total_cmp(&y.s));
+    out.extend(kept);
 }
 
 fn coincident(a: &Bez, b: &Bez, tol: f64) -> bool {
@@ -256,6 +305,22 @@ fn graze(ctx: &Ctx, n: DVec3, ra: (f64, f64), rb: (f64, f64), out: &mut LHits) {
         gs[i] = g;
         us[i] = nu;
         u = nu;
+    }
+    // The whole sub-piece within tol of B: a shared stretch (merged with its neighbours by
+    // `merge_overlaps`).
+    if gs.iter().all(|g| g.abs() <= ctx.tol) {
+        let p0 = ctx.a.eval(ra.0);
+        let p1 = ctx.a.eval(ra.1);
+        let (q0, q1) = (ctx.b.eval(us[0]), ctx.b.eval(us[K]));
+        if (p0 - q0).length() <= ctx.tol && (p1 - q1).length() <= ctx.tol {
+            out.push(LHit::new(
+                ra.0,
+                us[0],
+                p0,
+                LKind::Overlap(Box::new(Piece::Bez(ctx.a.clone())), ra.1, us[K]),
+            ));
+            return;
+        }
     }
     let push = |s: f64, u0: f64, tangent: bool, out: &mut LHits| {
         let (_, u) = gap(s, u0);
