@@ -553,6 +553,33 @@ impl Curve {
     }
 }
 
+impl ParamCurve for Curve {
+    fn eval(&self, t: f64) -> DVec3 {
+        Curve::eval(self, t)
+    }
+}
+impl ParamCurveDeriv for Curve {
+    fn deriv(&self, t: f64) -> DVec3 {
+        Curve::deriv(self, t)
+    }
+}
+impl ParamCurveArclen for Curve {
+    /// Lines and arcs are exact; spline pieces use adaptive Gauss–Legendre to 1e-13·scale.
+    fn arclen(&self, _accuracy: f64) -> f64 {
+        self.length()
+    }
+}
+impl ParamCurveNearest for Curve {
+    fn nearest(&self, p: DVec3, _accuracy: f64) -> (f64, DVec3) {
+        self.closest_point(p)
+    }
+}
+impl ParamCurveBbox for Curve {
+    fn bbox(&self) -> (DVec3, DVec3) {
+        Curve::bbox(self)
+    }
+}
+
 /// The scale factor of `lin` on the plane (u, v) with normal n, or an error when `lin` is not
 /// a similarity there.
 fn similarity_scale(lin: DMat3, u: DVec3, v: DVec3, n: DVec3) -> Result<f64> {
