@@ -148,13 +148,21 @@ impl BSpline {
         let u = u.clamp(a, b);
         let p = self.degree;
         let k = self.find_span(u);
-        let mut d: Vec<DVec4> = (0..=p)
-            .map(|j| {
-                let i = k - p + j;
-                let w = self.weight(i);
-                (self.ctrl[i] * w).extend(w)
-            })
-            .collect();
+        // De Boor's triangle lives on the stack for the usual degrees (this is called per sample
+        // by extents and flattening, so a heap allocation here dominated their cost).
+        let mut stack = [DVec4::ZERO; 8];
+        let mut heap = Vec::new();
+        let d: &mut [DVec4] = if p < stack.len() {
+            &mut stack[..=p]
+        } else {
+            heap.resize(p + 1, DVec4::ZERO);
+            &mut heap
+        };
+        for (j, slot) in d.iter_mut().enumerate() {
+            let i = k - p + j;
+            let w = self.weight(i);
+            *slot = (self.ctrl[i] * w).extend(w);
+        }
         for r in 1..=p {
             for j in (r..=p).rev() {
                 let i = k - p + j;

@@ -1,11 +1,15 @@
-//! Atomic file replacement: write a temporary file in the target's directory, fsync it, then
-//! rename it over the target. A reader never sees a half-written file, and a failed write
-//! leaves nothing behind (the temporary file is removed when dropped).
+//! Atomic file replacement: write a temporary file in the target's directory, then rename it
+//! over the target. A reader never sees a half-written file, and a failed write leaves nothing
+//! behind (the temporary file is removed when dropped).
+//!
+//! No fsync: the guarantee is atomicity (whole file or none), not durability across a power
+//! cut. Batch runs write thousands of files, and an fsync per file made them wait on the disk
+//! for most of their wall time.
 
 use std::io::Write;
 use std::path::Path;
 
-/// Write `bytes` to `path` atomically (same-directory temporary file, fsync, rename).
+/// Write `bytes` to `path` atomically (same-directory temporary file, then rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
@@ -23,12 +27,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         tmp.as_file()
             .set_permissions(std::fs::Permissions::from_mode(0o644))?;
     }
-    tmp.as_file().sync_all()?;
     tmp.persist(path).map_err(|e| e.error)?;
-    // Make the rename itself durable where the platform allows opening a directory.
-    if let Ok(d) = std::fs::File::open(dir) {
-        let _ = d.sync_all();
-    }
     Ok(())
 }
 

@@ -319,13 +319,7 @@ impl EntityKind {
                     }
                 }
             }
-            EntityKind::Spline { curve, .. } => {
-                let (a, b) = curve.domain();
-                let n = 64 * (curve.ctrl.len() - curve.degree);
-                for i in 0..=n {
-                    out.push(curve.eval_u(a + (b - a) * i as f64 / n as f64));
-                }
-            }
+            EntityKind::Spline { curve, .. } => spline_extent_points(curve, out),
             EntityKind::Face3d { corners } => out.extend(corners.iter().copied()),
             EntityKind::Text { insert, .. } => out.push(*insert),
             EntityKind::Mesh { vertices, .. } => out.extend(vertices.iter().copied()),
@@ -344,6 +338,48 @@ fn check_bulges(n: usize, bulges: &[f64]) -> Result<(), DrawingError> {
         return Err(DrawingError::NonFinite("bulge"));
     }
     Ok(())
+}
+
+/// Points whose bounding box is the spline's: per Bézier piece its ends plus, for non-rational
+/// quadratics, the exact axis extrema (derivative linear in t); other pieces are sampled.
+fn spline_extent_points(curve: &BSpline, out: &mut Vec<DVec3>) {
+    for (pts, w) in curve.to_beziers() {
+        let rational = w.iter().any(|x| *x != w[0]);
+        out.push(pts[0]);
+        out.push(pts[pts.len() - 1]);
+        if pts.len() == 3 && !rational {
+            let (p0, p1, p2) = (pts[0], pts[1], pts[2]);
+            let den = p0 - 2.0 * p1 + p2;
+            for axis in 0..3 {
+                if den[axis] != 0.0 {
+                    let t = (p0[axis] - p1[axis]) / den[axis];
+                    if t > 0.0 && t < 1.0 {
+                        let u = 1.0 - t;
+                        out.push(p0 * (u * u) + p1 * (2.0 * u * t) + p2 * (t * t));
+                    }
+                }
+            }
+        } else {
+            for i in 1..32 {
+                out.push(bezier_point(&pts, &w, i as f64 / 32.0));
+            }
+        }
+    }
+}
+
+/// A rational Bézier point by de Casteljau in homogeneous coordinates.
+fn bezier_point(pts: &[DVec3], w: &[f64], t: f64) -> DVec3 {
+    let mut h: Vec<glam::DVec4> = pts
+        .iter()
+        .zip(w)
+        .map(|(p, w)| (*p * *w).extend(*w))
+        .collect();
+    for r in 1..h.len() {
+        for j in 0..h.len() - r {
+            h[j] = h[j] * (1.0 - t) + h[j + 1] * t;
+        }
+    }
+    h[0].truncate() / h[0].w
 }
 
 /// The CCW sweep from `start` to `end` in (0, 2π] (an arc with equal angles is a full turn,

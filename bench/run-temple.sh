@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# The main-job benchmark (issue 5): 1000 temple variants to DXF + SVG with lispcad (batch,
+# -j 1 and -j 2) and with the same temple in Python + ezdxf. Prints wall and CPU times and
+# the ratios. Usage: bench/run-temple.sh [ROWS.csv]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+table=${1:-bench/temple/variants.csv}
+rows=$(( $(wc -l < "$table") - 1 ))
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+cargo build --release -q
+[ -x .venv/bin/python ] || bash .ci/setup
+py=.venv/bin/python
+
+# Wall and CPU (user+sys) seconds of a command, via bash's `times` in a subshell.
+measure() {
+  local t0 t1
+  t0=$(date +%s.%N)
+  ( "$@" >/dev/null 2>&1; times ) > "$out/times" 2>&1
+  t1=$(date +%s.%N)
+  local cpu
+  cpu=$(tail -1 "$out/times" | awk '{ for (i=1;i<=2;i++) { split($i,a,"m"); sub("s","",a[2]); s+=a[1]*60+a[2] } print s }')
+  echo "$(echo "$t1 - $t0" | bc -l) $cpu"
+}
+
+read -r lc1_wall lc1_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
+  -o "$out/j1/t-{row}.dxf" -o "$out/j1/t-{row}.svg" -j 1)
+read -r lc2_wall lc2_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
+  -o "$out/j2/t-{row}.dxf" -o "$out/j2/t-{row}.svg" -j 2)
+read -r py_wall py_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" -o "$out/py")
+
+cmp -s <(cd "$out/j1" && cat $(ls | sort)) <(cd "$out/j2" && cat $(ls | sort)) \
+  && same="identical" || same="DIFFERENT"
+
+printf '%d variants, DXF + SVG each (outputs of -j 1 and -j 2: %s)\n\n' "$rows" "$same"
+printf '| run | wall s | CPU s | CPU ms/variant |\n|---|---|---|---|\n'
+for r in "lispcad -j 1:$lc1_wall:$lc1_cpu" "lispcad -j 2:$lc2_wall:$lc2_cpu" "Python+ezdxf:$py_wall:$py_cpu"; do
+  IFS=: read -r name w c <<< "$r"
+  printf '| %s | %.2f | %.2f | %.3f |\n' "$name" "$w" "$c" "$(echo "$c * 1000 / $rows" | bc -l)"
+done
+printf '\nPython/lispcad (CPU, -j 1): %.1fx   (wall, -j 1): %.1fx\n' \
+  "$(echo "$py_cpu / $lc1_cpu" | bc -l)" "$(echo "$py_wall / $lc1_wall" | bc -l)"
+printf 'speed-up -j 1 -> -j 2 (wall): %.2fx\n' "$(echo "$lc1_wall / $lc2_wall" | bc -l)"
