@@ -341,27 +341,56 @@ fn check_bulges(n: usize, bulges: &[f64]) -> Result<(), DrawingError> {
 }
 
 /// Points whose bounding box is the spline's: per Bézier piece its ends plus, for non-rational
-/// quadratics, the exact axis extrema (derivative linear in t); other pieces are sampled.
+/// quadratics and cubics, the exact axis extrema (roots of the derivative); other pieces are
+/// sampled densely.
 fn spline_extent_points(curve: &BSpline, out: &mut Vec<DVec3>) {
     for (pts, w) in curve.to_beziers() {
         let rational = w.iter().any(|x| *x != w[0]);
         out.push(pts[0]);
         out.push(pts[pts.len() - 1]);
-        if pts.len() == 3 && !rational {
-            let (p0, p1, p2) = (pts[0], pts[1], pts[2]);
-            let den = p0 - 2.0 * p1 + p2;
-            for axis in 0..3 {
-                if den[axis] != 0.0 {
-                    let t = (p0[axis] - p1[axis]) / den[axis];
-                    if t > 0.0 && t < 1.0 {
-                        let u = 1.0 - t;
-                        out.push(p0 * (u * u) + p1 * (2.0 * u * t) + p2 * (t * t));
+        let mut at = |t: f64| {
+            if t > 0.0 && t < 1.0 {
+                out.push(bezier_point(&pts, &w, t));
+            }
+        };
+        match (pts.len(), rational) {
+            (3, false) => {
+                let den = pts[0] - 2.0 * pts[1] + pts[2];
+                for axis in 0..3 {
+                    if den[axis] != 0.0 {
+                        at((pts[0][axis] - pts[1][axis]) / den[axis]);
                     }
                 }
             }
-        } else {
-            for i in 1..32 {
-                out.push(bezier_point(&pts, &w, i as f64 / 32.0));
+            (4, false) => {
+                // B'(t)/3 = (a - 2b + c) t² + 2 (b - a) t + a, with a, b, c the control deltas.
+                let (a, b, c) = (pts[1] - pts[0], pts[2] - pts[1], pts[3] - pts[2]);
+                for axis in 0..3 {
+                    let (qa, qb, qc) = (
+                        a[axis] - 2.0 * b[axis] + c[axis],
+                        2.0 * (b[axis] - a[axis]),
+                        a[axis],
+                    );
+                    if qa.abs() < 1e-300 {
+                        if qb != 0.0 {
+                            at(-qc / qb);
+                        }
+                        continue;
+                    }
+                    let disc = qb * qb - 4.0 * qa * qc;
+                    if disc >= 0.0 {
+                        let q = -0.5 * (qb + qb.signum() * disc.sqrt());
+                        if q != 0.0 {
+                            at(qc / q);
+                        }
+                        at(q / qa);
+                    }
+                }
+            }
+            _ => {
+                for i in 1..64 {
+                    at(i as f64 / 64.0);
+                }
             }
         }
     }
