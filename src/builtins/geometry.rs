@@ -306,7 +306,7 @@ fn intersect_fn(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(Value::list(
         hits.into_iter()
             .map(|h| match h.kind {
-                HitKind::Overlap(c) => curve_value(c),
+                HitKind::Overlap(c) => curve_value(*c),
                 _ => point3(h.point),
             })
             .collect::<Vec<_>>(),
@@ -327,7 +327,7 @@ fn intersect_info(it: &mut Interp, a: &[Value]) -> LResult {
             Value::cons(Value::Sym(it.intern("KIND")), Value::Sym(it.intern(kind))),
         ];
         if let HitKind::Overlap(c) = h.kind {
-            fields.push(Value::cons(Value::Sym(it.intern("CURVE")), curve_value(c)));
+            fields.push(Value::cons(Value::Sym(it.intern("CURVE")), curve_value(*c)));
         }
         out.push(Value::list(fields));
     }

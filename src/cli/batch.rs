@@ -358,7 +358,10 @@ impl Job<'_> {
                 }
             }
             let (syms, parsed) = slot.as_ref().expect("parsed above");
-            let mut it = super::run::configured_interp(self.common);
+            let mut it = match super::run::configured_interp(self.common) {
+                Ok(it) => it,
+                Err(m) => return Outcome::Failed(m),
+            };
             it.syms = syms.clone();
             it.sync_cells();
             it.add_source(self.name, self.text);

@@ -24,8 +24,14 @@ pub struct WatchArgs {
 
 /// One run; returns the files the script read (itself and what it loaded).
 fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
-    let mut it = super::run::configured_interp(common);
     let mut watched = vec![args.file.clone()];
+    let mut it = match super::run::configured_interp(common) {
+        Ok(it) => it,
+        Err(m) => {
+            eprintln!("error: {m}");
+            return watched;
+        }
+    };
     if let Err(m) = super::run::apply_sets(&mut it, &args.set) {
         eprintln!("error: {m}");
         return watched;
