@@ -263,3 +263,44 @@ fn getangle_and_getorient_follow_the_reference_table() {
         ["nil", "0.0", "1.5708", "3.14159", "4.71239", "1.5708", "3.14159", "4.71239", "0.0"]
     );
 }
+
+/// Every batch row gets the whole answer list; without one a row fails instead of waiting.
+#[test]
+fn batch_rows_each_read_the_answers() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path();
+    std::fs::write(p.join("t.csv"), "L1\n1\n2\n").unwrap();
+    std::fs::write(p.join("a.txt"), "10\n").unwrap();
+    std::fs::write(
+        p.join("s.lsp"),
+        "(setq f (open (strcat \"r\" (itoa L1) \".txt\") \"w\")) (princ (* L1 (getreal)) f) (close f)\n",
+    )
+    .unwrap();
+    let o = lispcad(
+        p,
+        &[
+            "batch",
+            "s.lsp",
+            "--vary",
+            "t.csv",
+            "-o",
+            "out/{L1}.svg",
+            "--answers",
+            "a.txt",
+        ],
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert_eq!(std::fs::read_to_string(p.join("r1.txt")).unwrap(), "10.0");
+    assert_eq!(std::fs::read_to_string(p.join("r2.txt")).unwrap(), "20.0");
+    let o = lispcad(
+        p,
+        &["batch", "s.lsp", "--vary", "t.csv", "-o", "out/{L1}.svg"],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("getreal: no input available"));
+}

@@ -41,6 +41,8 @@ pub struct InputState {
     pub answers: Option<VecDeque<String>>,
     /// Ask on the terminal when there is no answer list (the interactive REPL).
     pub terminal: bool,
+    /// Never ask the terminal, even when stdin is one (parallel batch rows).
+    pub no_terminal: bool,
     pending: Option<Initget>,
     /// The rest of a console line `read-char` has started (with its newline).
     chars: VecDeque<char>,
@@ -164,7 +166,7 @@ fn next_answer(it: &mut Interp, func: &str, prompt: Option<&str>) -> Result<Stri
             .pop_front()
             .ok_or_else(|| err(format!("{func}: no answers left in the --answers file")));
     }
-    if !st.terminal && !std::io::stdin().is_terminal() {
+    if st.no_terminal || !st.terminal && !std::io::stdin().is_terminal() {
         return Err(err(format!(
             "{func}: no input available (use --answers FILE)"
         )));
