@@ -39,8 +39,8 @@ fn values(forms: &str, answers: &str) -> Vec<String> {
 fn points_absolute_relative_and_polar() {
     let got = values(
         "(setq p (getpoint \"Base: \")) (getpoint p \"Next: \") (getpoint '(10 10) \"@\") \
-         (getpoint \"x\") (getpoint) (getpoint) (getpoint)",
-        "1,2\n@3,4\n@-1,0.5,2\n5,6,7\n@1,1\n2<0\n\n",
+         (getpoint \"x\") (getpoint) (getpoint) (getpoint) (getpoint) (getpoint) (getpoint)",
+        "1,2\n@3,4\n@-1,0.5,2\n5,6,7\n@1,1\n2<0\n\n#7,8\n*1, 2 ,3\n@\n",
     );
     assert_eq!(
         got,
@@ -53,6 +53,10 @@ fn points_absolute_relative_and_polar() {
             "(6.0 7.0 7.0)",
             "(2.0 0.0 0.0)",
             "nil",
+            "(7.0 8.0 0.0)",
+            "(1.0 2.0 3.0)",
+            // "@" alone: the last point
+            "(1.0 2.0 3.0)",
         ]
     );
 }

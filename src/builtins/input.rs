@@ -6,7 +6,8 @@
 //! is an error naming `--answers`. AutoCAD re-prompts on an answer that `initget` forbids; a
 //! batch run has no one to ask again, so there such an answer is an error.
 //!
-//! Answer syntax is AutoCAD's command line: a point `x,y` or `x,y,z`, relative `@dx,dy[,dz]`
+//! Answer syntax is AutoCAD's command line: a point `x,y` or `x,y,z` (`#` or `*` before it
+//! marks absolute/world input), relative `@dx,dy[,dz]`
 //! (to the base point when given, else LASTPOINT), polar `d<a` / `@d<a` (a in degrees); a
 //! number as text; an empty line is Enter (nil).
 
@@ -298,7 +299,10 @@ fn parse_real(t: &str) -> Option<f64> {
 
 /// A point typed at the command line, relative forms resolved against `base` (or LASTPOINT).
 fn parse_point(it: &mut Interp, t: &str, base: Option<DVec3>) -> Option<DVec3> {
+    // "#x,y" (absolute under dynamic input) and "*x,y" (world coordinates) are absolute
+    // points; headless, the UCS is the world, so both prefixes just mark absolute input.
     let t = t.trim();
+    let t = t.strip_prefix(['#', '*']).unwrap_or(t).trim_start();
     let (rel, body) = match t.strip_prefix('@') {
         Some(b) => (true, b.trim()),
         None => (false, t),
