@@ -308,3 +308,22 @@ fn batch_rows_each_read_the_answers() {
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("getreal: no input available"));
 }
+
+#[test]
+fn getfiled_reads_a_file_name() {
+    let got = values(
+        "(getfiled \"Save\" \"\" \"dxf\" 1) (getfiled \"Save\" \"def.svg\" \"svg\" 1) \
+         (getfiled \"Open\" \"\" \"dxf\" 0) (getfiled \"Open\" \"\" \"\" 0) (getfiled \"Open\" \"\" \"dxf\" 0)",
+        "out\n\nx.dxf\nplain\n\n",
+    );
+    assert_eq!(
+        got,
+        [
+            "\"out.dxf\"",
+            "\"def.svg\"",
+            "\"x.dxf\"",
+            "\"plain\"",
+            "nil"
+        ]
+    );
+}

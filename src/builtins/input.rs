@@ -32,6 +32,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("getdist", "(getdist [base] [prompt])", "Asks for a distance: a number, or a point whose distance from base (or from a second point) is taken.", 0, 2, getdist),
     builtin!("getangle", "(getangle [base] [prompt])", "Asks for an angle in degrees (or a point: the angle from base); radians relative to ANGBASE.", 0, 2, getangle),
     builtin!("getorient", "(getorient [base] [prompt])", "Like getangle but absolute: radians from east, counter-clockwise, whatever ANGBASE/ANGDIR.", 0, 2, getorient),
+    builtin!("getfiled", "(getfiled title default ext flags)", "Asks for a file name (the dialog's answer, headless from --answers or the terminal); nil on Enter (cancel); ext is added when the name has none.", 4, 4, getfiled),
     builtin!("getkword", "(getkword [prompt])", "Asks for one of the keywords given to initget; returns the keyword as initget spelt it.", 0, 1, getkword),
 ];
 
@@ -539,6 +540,39 @@ fn getkword(it: &mut Interp, a: &[Value]) -> LResult {
         Answer::Enter => Ok(Value::Nil),
         Answer::Keyword(k) => Ok(Value::str(&k)),
         Answer::Text(t) => other_input("getkword", &ig, &t, "invalid option keyword"),
+    }
+}
+
+fn getfiled(it: &mut Interp, a: &[Value]) -> LResult {
+    let title = it.string(&a[0])?.to_string();
+    let default = match &a[1] {
+        Value::Nil => String::new(),
+        v => it.string(v)?.to_string(),
+    };
+    let ext = match &a[2] {
+        Value::Nil => String::new(),
+        v => it.string(v)?.to_string(),
+    };
+    it.int(&a[3])?;
+    it.ext::<InputState>().pending = None;
+    let raw = next_answer(it, "getfiled", Some(&format!("{title}: ")))?;
+    let name = raw.trim();
+    let name = if name.is_empty() {
+        // Enter accepts the default when there is one, like OK in the dialog; else cancel.
+        if default.is_empty() {
+            return Ok(Value::Nil);
+        }
+        default.as_str()
+    } else {
+        name
+    };
+    // The dialog appends the filter's extension to a bare name ("" or "*" filter none).
+    let ext = ext.trim_start_matches('.');
+    let has_ext = std::path::Path::new(name).extension().is_some();
+    if !has_ext && !ext.is_empty() && ext != "*" && !ext.contains(';') {
+        Ok(Value::str(&format!("{name}.{ext}")))
+    } else {
+        Ok(Value::str(name))
     }
 }
 
