@@ -97,6 +97,20 @@ fn main() {
         stats.intersecting_pairs,
         stats.irregular_pairs
     );
+    // Independent check of the exact pair count: a plain-f64 Möller–Trumbore edge/triangle
+    // test over every box-overlapping pair (boxes are conservative, so no true pair is missed).
+    let truth = a
+        .bvh()
+        .overlapping_pairs(b.bvh())
+        .iter()
+        .filter(|&&(ta, tb)| {
+            let pa = a.corners_of(ta as usize);
+            let pb = b.corners_of(tb as usize);
+            (0..3).any(|i| segment_hits_triangle(pa[i], pa[(i + 1) % 3], pb))
+                || (0..3).any(|i| segment_hits_triangle(pb[i], pb[(i + 1) % 3], pa))
+        })
+        .count();
+    println!("moller_trumbore_pairs {truth}");
     let (per_plane_bvh, _) = sec(&a);
     println!("section_bvh_ms_per_plane {:.3}", per_plane_bvh * 1e3);
     let t = Instant::now();
@@ -121,4 +135,28 @@ fn cpu_seconds() -> f64 {
     let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
     // Fields 14 and 15 of stat (utime, stime) are at 11 and 12 after the command name.
     (ticks(11) + ticks(12)) / 100.0
+}
+
+fn segment_hits_triangle(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
+    let d = q - p;
+    let e1 = t[1] - t[0];
+    let e2 = t[2] - t[0];
+    let h = d.cross(e2);
+    let a = e1.dot(h);
+    if a.abs() < 1e-300 {
+        return false;
+    }
+    let f = 1.0 / a;
+    let s = p - t[0];
+    let u = f * s.dot(h);
+    if !(0.0..=1.0).contains(&u) {
+        return false;
+    }
+    let qq = s.cross(e1);
+    let v = f * d.dot(qq);
+    if v < 0.0 || u + v > 1.0 {
+        return false;
+    }
+    let w = f * e2.dot(qq);
+    (0.0..=1.0).contains(&w)
 }

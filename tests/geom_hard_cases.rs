@@ -477,3 +477,61 @@ fn nurbs_circle_overlaps_the_circle_and_a_spline_pierces_a_circle_plane() {
     assert_eq!(h.len(), 1, "{h:?}");
     assert!(close(h[0].point, v(0.0, 1.0), 1e-12));
 }
+
+#[test]
+fn spline_pair_grazing_with_close_roots_and_touching() {
+    // y = (x − ½)² against y = c − (x − ½)²: roots at ½ ± √(c/2).
+    let c = 2.0 * 3.5e-6f64 * 3.5e-6;
+    let a = quad(vec![[v(0.0, 0.25), v(0.5, -0.25), v(1.0, 0.25)]]);
+    let b = Curve::bspline(
+        vec![v(0.0, c - 0.25), v(0.5, c + 0.25), v(1.0, c - 0.25)],
+        2,
+        None,
+        None,
+    )
+    .unwrap();
+    let h = both(&a, &b);
+    assert_eq!(h.len(), 2, "{h:?}");
+    assert!(
+        (h[0].point.x - (0.5 - 3.5e-6)).abs() < 1e-9
+            && (h[1].point.x - (0.5 + 3.5e-6)).abs() < 1e-9,
+        "{h:?}"
+    );
+    let b = Curve::bspline(
+        vec![v(0.0, -0.25), v(0.5, 0.25), v(1.0, -0.25)],
+        2,
+        None,
+        None,
+    )
+    .unwrap();
+    let h = both(&a, &b);
+    assert_eq!(kinds(&h), ["TANGENT"], "{h:?}");
+    assert!(close(h[0].point, v(0.5, 0.0), 1e-9));
+}
+
+#[test]
+fn spline_and_a_piece_of_itself_overlap() {
+    let ctrl = vec![v(0.0, 0.0), v(1.0, 2.0), v(2.0, -1.0), v(3.0, 1.0)];
+    let a = Curve::bspline(ctrl.clone(), 3, None, None).unwrap();
+    // The same cubic restricted to [0.25, 0.75] (de Casteljau by hand via the curve).
+    let Curve::BSpline(bs) = &a else {
+        unreachable!()
+    };
+    let piece = {
+        let spans = a.spans();
+        let lispcad::geom::piece::Piece::Bez(b) = &spans[0].piece else {
+            unreachable!()
+        };
+        b.subsegment(0.25, 0.75)
+    };
+    let _ = bs;
+    let b = Curve::bspline(piece.points().collect(), 3, None, None).unwrap();
+    let h = both(&a, &b);
+    assert_eq!(kinds(&h), ["OVERLAP"], "{h:?}");
+    let o = h[0].overlap().unwrap();
+    assert!(
+        close(o.eval(0.0), a.eval(0.25), 1e-9) && close(o.eval(1.0), a.eval(0.75), 1e-9),
+        "{h:?}"
+    );
+    assert!((h[0].t1 - 0.25).abs() < 1e-9 && h[0].t2.abs() < 1e-9);
+}

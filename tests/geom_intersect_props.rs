@@ -21,6 +21,24 @@ fn unit() -> impl Strategy<Value = DVec3> {
 fn any_curve() -> impl Strategy<Value = Curve> {
     prop_oneof![
         (pt2(), pt2()).prop_filter_map("line", |(a, b)| Curve::line(a, b).ok()),
+        (pt(), pt()).prop_filter_map("3d line", |(a, b)| Curve::line(a, b).ok()),
+        (pt(), 0.5..8.0f64, unit(), 0.0..6.0f64, 0.1..6.2f64).prop_filter_map(
+            "3d arc",
+            |(c, r, n, a, s)| Curve::arc(c, r, a, a + s, Some(n)).ok()
+        ),
+        (prop::collection::vec(pt(), 4..7), 2usize..4).prop_filter_map("3d bspline", |(p, d)| {
+            BSpline::new(d, p, None, None).ok().map(Curve::BSpline)
+        }),
+        (
+            prop::collection::vec(pt2(), 3..6),
+            prop::collection::vec(0.2..3.0f64, 6)
+        )
+            .prop_filter_map("nurbs", |(p, w)| {
+                let n = p.len();
+                BSpline::new(2, p, None, Some(w[..n].to_vec()))
+                    .ok()
+                    .map(Curve::BSpline)
+            }),
         (pt2(), 0.5..8.0f64).prop_filter_map("circle", |(c, r)| Curve::circle(c, r, None).ok()),
         (pt(), 0.5..8.0f64, unit()).prop_filter_map("3d circle", |(c, r, n)| Curve::circle(
             c,

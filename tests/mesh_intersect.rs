@@ -154,3 +154,80 @@ proptest! {
         prop_assert_eq!(r1, r2);
     }
 }
+
+/// Möller–Trumbore segment/triangle test in plain f64, independent of the library's predicates.
+fn segment_hits_triangle(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
+    let d = q - p;
+    let e1 = t[1] - t[0];
+    let e2 = t[2] - t[0];
+    let h = d.cross(e2);
+    let a = e1.dot(h);
+    if a.abs() < 1e-300 {
+        return false;
+    }
+    let f = 1.0 / a;
+    let s = p - t[0];
+    let u = f * s.dot(h);
+    if !(0.0..=1.0).contains(&u) {
+        return false;
+    }
+    let qq = s.cross(e1);
+    let v = f * d.dot(qq);
+    if v < 0.0 || u + v > 1.0 {
+        return false;
+    }
+    let w = f * e2.dot(qq);
+    (0.0..=1.0).contains(&w)
+}
+
+#[test]
+fn exactly_the_truly_intersecting_pairs() {
+    let a = icosphere(DVec3::ZERO, 1.0, 3);
+    let m = DMat4::from_translation(DVec3::new(0.5, 0.3, 0.2))
+        * DMat4::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.3);
+    let b = a.map_vertices(|p| m.transform_point3(p)).unwrap();
+    let mut truth = 0;
+    for ta in 0..a.len() {
+        let pa = a.corners_of(ta);
+        for tb in 0..b.len() {
+            let pb = b.corners_of(tb);
+            let hit = (0..3).any(|i| segment_hits_triangle(pa[i], pa[(i + 1) % 3], pb))
+                || (0..3).any(|i| segment_hits_triangle(pb[i], pb[(i + 1) % 3], pa));
+            truth += hit as usize;
+        }
+    }
+    let (r, stats) = intersect_meshes_with_stats(&a, &b);
+    assert_eq!(stats.intersecting_pairs, truth);
+    assert!(stats.box_pairs > truth);
+    assert_eq!(r.len(), 1);
+    assert_eq!(
+        r[0].points.len(),
+        truth,
+        "one curve point per intersecting pair on a closed loop"
+    );
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+    #[test]
+    fn swapping_the_arguments_gives_the_same_curves(
+        ax in -1.0f64..1.0, ay in -1.0f64..1.0, angle in 0.0f64..3.0,
+        tx in -1.5f64..1.5, ty in -1.0f64..1.0, tz in -1.0f64..1.0,
+    ) {
+        let a = icosphere(DVec3::ZERO, 1.0, 2);
+        let m = DMat4::from_translation(DVec3::new(tx, ty, tz))
+            * DMat4::from_axis_angle(DVec3::new(ax, ay, 1.0).normalize(), angle);
+        let b = a.map_vertices(|p| m.transform_point3(p)).unwrap();
+        let ab = intersect_meshes(&a, &b);
+        let ba = intersect_meshes(&b, &a);
+        prop_assert_eq!(&ab, &ba);
+        // Closed meshes meet in closed curves.
+        prop_assert!(ab.iter().all(|p| p.closed));
+    }
+}
+
+#[test]
+fn a_mesh_against_itself_has_no_curve() {
+    let a = icosphere(DVec3::ZERO, 1.0, 2);
+    assert!(intersect_meshes(&a, &a.clone()).is_empty());
+}

@@ -155,3 +155,22 @@ fn streamed_and_in_memory_binary_reads_agree() {
     std::fs::write(&p, &bytes[..bytes.len() - 7]).unwrap();
     assert!(read_stl(&p, 0.0).is_err());
 }
+
+#[test]
+fn transforms_keep_orientation_and_edges_are_unique() {
+    use lispcad::geom::DMat4;
+    let m = square();
+    assert_eq!(m.edges(), vec![[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]]);
+    let mirrored = m
+        .transformed(&DMat4::from_scale(DVec3::new(-1.0, 1.0, 1.0)))
+        .unwrap();
+    for t in 0..mirrored.len() {
+        let [a, b, c] = mirrored.corners_of(t);
+        assert!((b - a).cross(c - a).z > 0.0, "mirror keeps the +z facing");
+    }
+    let moved = m
+        .transformed(&DMat4::from_translation(DVec3::new(1.0, 2.0, 3.0)))
+        .unwrap();
+    assert_eq!(moved.vertices()[2], DVec3::new(2.0, 3.0, 3.0));
+    assert_eq!(moved.area(), 1.0);
+}

@@ -128,3 +128,53 @@ proptest! {
         prop_assert_eq!(sorted_points(&r.kept), sorted_points(&r.removed));
     }
 }
+
+#[test]
+fn hole_inside_a_single_facet() {
+    use lispcad::geom::surface::{mesh_surface, Surface};
+    // Two big triangles; a thin cylinder pierces the middle of one: the cut is a loop that
+    // touches no facet edge (the case paper 001 avoids by refining).
+    let square = Mesh::new(
+        vec![
+            DVec3::ZERO,
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(2.0, 2.0, 0.0),
+            DVec3::new(0.0, 2.0, 0.0),
+        ],
+        vec![[0, 1, 2], [0, 2, 3]],
+    )
+    .unwrap();
+    let cyl = Surface::cylinder(DVec3::new(1.4, 0.5, -1.0), DVec3::Z, 0.2, 2.0).unwrap();
+    let cutter = mesh_surface(&cyl, 1e-3).unwrap();
+    let r = trim(&square, &cutter, DVec3::new(1.4, 0.5, 0.0)).unwrap();
+    assert_eq!(r.split_facets, 1);
+    let disc = std::f64::consts::PI * 0.04;
+    assert!(
+        r.kept.area() < disc && r.kept.area() > disc * 0.99,
+        "{}",
+        r.kept.area()
+    );
+    assert!((r.kept.area() + r.removed.area() - 4.0).abs() < 1e-12);
+    assert_eq!(r.kept.boundary().len(), 1);
+    assert_eq!(r.removed.boundary().len(), 2, "outer square and the hole");
+    assert_eq!(sorted_points(&r.kept), {
+        // The hole's points are the disc's boundary, bit for bit.
+        let mut hole: Vec<[u64; 3]> = r
+            .removed
+            .boundary()
+            .iter()
+            .filter(|l| {
+                l.points
+                    .iter()
+                    .all(|p| (p.x - 1.4).abs() < 0.3 && (p.y - 0.5).abs() < 0.3)
+            })
+            .flat_map(|l| l.points.clone())
+            .map(|p| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+            .collect();
+        hole.sort_unstable();
+        hole
+    });
+    // Keeping the outside gives the square with the hole.
+    let o = trim(&square, &cutter, DVec3::new(0.1, 1.9, 0.0)).unwrap();
+    assert!((o.kept.area() - r.removed.area()).abs() < 1e-12);
+}

@@ -132,6 +132,20 @@ fn cylinder_surface_section_is_exact() {
     let r = surface_section(&s, DVec3::ZERO, DVec3::new(1.0, 1.0, 0.0), 1e-3).unwrap();
     assert_eq!(r.len(), 1);
     assert!(r[0].closed);
+    assert!(r[0]
+        .points
+        .iter()
+        .all(|p| (p.length() - 1.0).abs() < 1e-15 && (p.x + p.y).abs() < 1e-15));
+    let r = surface_section(&s, DVec3::new(0.0, 0.0, 0.6), DVec3::Z, 1e-3).unwrap();
+    assert!(r[0]
+        .points
+        .iter()
+        .all(|p| ((p.x * p.x + p.y * p.y).sqrt() - 0.8).abs() < 1e-15 && p.z == 0.6));
+    assert!(
+        surface_section(&s, DVec3::new(0.0, 0.0, 1.5), DVec3::Z, 1e-3)
+            .unwrap()
+            .is_empty()
+    );
     assert!(surface_section(&s, DVec3::ZERO, DVec3::ZERO, 1e-3).is_err());
 }
 

@@ -107,6 +107,7 @@ def main():
         ("intersection pieces / closed", f"{lc['intersect'][1]} / {lc['intersect'][3]}", "-"),
         ("box pairs / plane-test pairs / true pairs",
          f"{lc['intersect'][7]} / {lc['intersect'][9]} / {lc['intersect'][11]}", "-"),
+        ("independent Möller–Trumbore pair count", lc["moller_trumbore_pairs"][0], "-"),
     ]
     w = max(len(r[0]) for r in rows)
     print(f"{'measure':<{w}} | {'lispcad':>22} | trimesh / manifold3d")

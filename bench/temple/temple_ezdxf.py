@@ -44,7 +44,8 @@ DEFAULTS = {
     "BASEY": 0.0,
 }
 TOL = 1e-6  # GEOMTOL x 1000
-SAMPLES = 16
+SAMPLES = 8  # per interval while refining
+VERIFY = 32  # per interval when verifying the result
 MAX_ROUNDS = 48
 MAX_ADDED = 4000
 
@@ -310,7 +311,13 @@ def cubic_roots_unit(c3, c2, c1, c0):
                 lo = u
             dv = df(u)
             nu = u - fu / dv if dv != 0 else -1
-            u = nu if lo < nu < hi else 0.5 * (lo + hi)
+            if lo < nu < hi:
+                step = abs(nu - u)
+                u = nu
+                if step <= 4 * sys.float_info.epsilon:
+                    break
+            else:
+                u = 0.5 * (lo + hi)
             if hi - lo <= 4 * sys.float_info.epsilon:
                 break
         out.append(u)
@@ -407,8 +414,34 @@ def kink_params(segs, bend):
     return sorted(out)
 
 
+def split_params(ta, tb, err, tol, kinks):
+    """Middle of the interval, or a short piece of half-width (tb-ta)*tol/(4 err) around a kink."""
+    first = bisect.bisect_right(kinks, ta)
+    h = tb - ta
+    if first < len(kinks) and kinks[first] < tb:
+        k = kinks[first]
+        delta = h * min(tol / (4 * err), 0.25)
+        margin = max(h * 1e-3, 1e-12)
+        cuts = [t for t in (k - delta, k + delta) if ta + margin < t < tb - margin]
+        if cuts:
+            return cuts
+    return [0.5 * (ta + tb)]
+
+
+def measure(segs, bend, kinks, ts, pieces, i, samples):
+    n = len(ts)
+    ta, tb = ts[i], ts[i + 1] if i + 1 < n else 1.0
+    first = bisect.bisect_right(kinks, ta)
+    inside = [k for k in kinks[first:] if k < tb]
+    err = 0.0
+    for t in [ta + (tb - ta) * k / (samples + 1) for k in range(1, samples + 1)] + inside:
+        e = bend.map(spline_eval(segs, t))
+        err = max(err, min(seg_distance(pieces[i][0], e), seg_distance(pieces[i][1], e)))
+    return err
+
+
 def bend_outline(segs, npts, bend, tol=TOL):
-    """Returns (segments, deviation, added points)."""
+    """Returns (segments, deviation, added points). Same loop as temple_refine.rs."""
     ts = [j / npts for j in range(npts)]
     bent = [bend.map(spline_eval(segs, t)) for t in ts]
     tans = [bent_tangent(segs, bend, t, (1.0, 0.0)) for t in ts]
@@ -416,42 +449,49 @@ def bend_outline(segs, npts, bend, tol=TOL):
     pieces = [None] * npts
     kinks = kink_params(segs, bend)
     added = 0
-    for _ in range(MAX_ROUNDS):
+    rnd = 0
+    while True:
+        rnd += 1
         n = len(ts)
-        errs = []
         for i in range(n):
-            if known[i] is None:
+            if pieces[i] is None:
                 ta, tb = ts[i], ts[i + 1] if i + 1 < n else 1.0
                 j = (i + 1) % n
                 pieces[i] = hermite_piece(segs, bend, ta, tb, bent[i], bent[j], tans[i], tans[j])
-                err = 0.0
-                first = bisect.bisect_right(kinks, ta)
-                inside = [k for k in kinks[first:] if k < tb]
-                for t in [ta + (tb - ta) * k / (SAMPLES + 1) for k in range(1, SAMPLES + 1)] + inside:
-                    e = bend.map(spline_eval(segs, t))
-                    err = max(err, min(seg_distance(pieces[i][0], e), seg_distance(pieces[i][1], e)))
-                known[i] = err
-            errs.append(known[i])
+        for i in range(n):
+            if known[i] is None:
+                known[i] = measure(segs, bend, kinks, ts, pieces, i, SAMPLES)
+        errs = list(known)
         dev = max(errs)
-        if dev <= tol or added >= MAX_ADDED:
-            break
+        capped = rnd >= MAX_ROUNDS or added >= MAX_ADDED
+        if dev <= tol or capped:
+            errs = [e if e <= 0.25 * tol else measure(segs, bend, kinks, ts, pieces, i, VERIFY)
+                    for i, e in enumerate(errs)]
+            dev = max(errs)
+            if dev <= tol or capped:
+                break
         nts, nbent, ntans, nknown, npieces = [], [], [], [], []
         for i in range(n):
             nts.append(ts[i])
             nbent.append(bent[i])
             ntans.append(tans[i])
             ta, tb = ts[i], ts[i + 1] if i + 1 < n else 1.0
-            if errs[i] > tol and tb - ta > 1e-12:
-                tm = 0.5 * (ta + tb)
-                nts.append(tm)
-                nbent.append(bend.map(spline_eval(segs, tm)))
-                ntans.append(bent_tangent(segs, bend, tm, sub(bent[(i + 1) % n], bent[i])))
-                nknown += [None, None]
-                npieces += [None, None]
-                added += 1
+            if errs[i] > tol and added < MAX_ADDED and tb - ta > 1e-12:
+                chord = sub(bent[(i + 1) % n], bent[i])
+                for tm in split_params(ta, tb, errs[i], tol, kinks):
+                    nts.append(tm)
+                    nbent.append(bend.map(spline_eval(segs, tm)))
+                    ntans.append(bent_tangent(segs, bend, tm, chord))
+                    nknown.append(None)
+                    npieces.append(None)
+                    added += 1
+                nknown.append(None)
+                npieces.append(None)
             else:
-                nknown.append(known[i])
+                nknown.append(errs[i])
                 npieces.append(pieces[i])
+        if len(nts) == n:
+            break
         ts, bent, tans, known, pieces = nts, nbent, ntans, nknown, npieces
     out = [s for pair in pieces for s in pair]
     return out, dev, added

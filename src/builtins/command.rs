@@ -4,7 +4,8 @@
 //! so a command may be spread over several `(command ...)` calls. Point input takes point lists
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
-//! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, and the
+//! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
+//! UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -22,9 +23,11 @@ use crate::output::{Drawing, Entity, EntityKind};
 mod draw;
 #[path = "command/layer.rs"]
 mod layer;
+#[path = "command/text.rs"]
+mod text;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT); \"\" is Enter, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
+    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT); \"\" is Enter, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
     builtin!("command-s", "(command-s [arg...])", "As command, but a command left unfinished at the end of the call is cancelled. Returns nil.", 0, MANY, command_s),
     builtin!("vl-cmdf", "(vl-cmdf [arg...])", "As command; returns T.", 0, MANY, vl_cmdf),
 ];
@@ -50,7 +53,8 @@ pub(crate) enum Input {
 impl Input {
     pub(crate) fn keyword(&self) -> Option<String> {
         match self {
-            Input::Word(w) => Some(w.trim().to_uppercase()),
+            // "_S": the underscore asks for the English keyword, as in AutoCAD.
+            Input::Word(w) => Some(w.trim().trim_start_matches('_').to_uppercase()),
             _ => None,
         }
     }
@@ -83,6 +87,9 @@ pub(crate) enum Pending {
     Draw(draw::DrawCmd),
     Layer(layer::LayerCmd),
     Erase(Vec<u64>),
+    Text(text::TextCmd),
+    /// UCS: only the World UCS exists headless.
+    Ucs,
     /// A display command with nothing to do headless: swallows the rest of the call.
     Ignore,
 }
@@ -114,9 +121,9 @@ pub(crate) fn unexpected(cmd: &str, want: &str, got: &Input) -> Exn {
 
 /// Adds an entity on the current layer, colour BYLAYER.
 pub(crate) fn add(it: &mut Interp, cmd: &str, kind: EntityKind) -> Result<u64, Exn> {
-    let d = it.ext::<Drawing>();
-    let layer = d.current_layer().to_string();
-    d.add(Entity::new(&layer, kind))
+    let layer = crate::builtins::entities::make::current_layer(it);
+    it.ext::<Drawing>()
+        .add(Entity::new(&layer, kind))
         .map_err(|e| cmd_err(cmd, e))
 }
 
@@ -202,6 +209,8 @@ fn start(name: &str) -> Result<Step, Exn> {
         .to_uppercase();
     const KNOWN: &[&str] = &[
         "LINE",
+        "TEXT",
+        "UCS",
         "CIRCLE",
         "ARC",
         "PLINE",
@@ -229,6 +238,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         "LA" => "LAYER",
         "E" => "ERASE",
         "PO" => "POINT",
+        "DT" | "DTEXT" => "TEXT",
         "Z" => "ZOOM",
         "P" => "PAN",
         "RE" => "REGEN",
@@ -244,11 +254,13 @@ fn start(name: &str) -> Result<Step, Exn> {
         }
         "LAYER" => Step::More(Pending::Layer(layer::LayerCmd::default())),
         "ERASE" => Step::More(Pending::Erase(Vec::new())),
+        "TEXT" => Step::More(Pending::Text(text::TextCmd::default())),
+        "UCS" => Step::More(Pending::Ucs),
         "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "UNDO" | "OSNAP"
         | "GRAPHSCR" | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT)"
             )));
         }
     })
@@ -322,6 +334,20 @@ fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> 
             Some(Pending::Erase(picked)) => erase(it, picked, &inp)?,
             Some(Pending::Layer(l)) => l.feed(it, &inp, raw)?,
             Some(Pending::Draw(d)) => d.feed(it, &inp)?,
+            Some(Pending::Text(t)) => t.feed(it, &inp, raw)?,
+            Some(Pending::Ucs) => match inp.keyword().as_deref() {
+                Some("W" | "WORLD") => Step::Done,
+                _ if matches!(inp, Input::Enter) => Step::Done,
+                _ => {
+                    return Err(cmd_err(
+                        "UCS",
+                        format!(
+                            "only the World UCS exists in lispcad (\"W\"), got {}",
+                            inp.describe()
+                        ),
+                    ))
+                }
+            },
         };
         match step {
             Step::More(p) => st.pending = Some(p),

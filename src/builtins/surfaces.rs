@@ -1,71 +1,82 @@
-//! Surfaces and meshes as Lisp values: `type` → MESH for the discrete surfaces of papers
-//! 001–003. Binds `geom::mesh` (reading, section, intersection, boundary, area).
+//! Surfaces and meshes as Lisp values (papers 001–003, SPEC §4): parametric surfaces
+//! (`type` → SURFACE) kept parametric where the closed forms of paper 002 apply, and discrete
+//! surfaces (`type` → MESH): indexed triangle meshes with shared vertices and adjacency.
+//! Operations that work on the discrete surface tessellate a parametric argument first, within
+//! the chord tolerance CHORDTOL.
 
 use std::fmt;
 use std::rc::Rc;
+use std::sync::Arc;
 
 use glam::{DMat4, DVec3};
 
 use crate::builtin;
-use crate::builtins::geometry::{curve_value, vec3};
+use crate::builtins::geometry::{curve, curve_value, geom_err, geomtol, point3, vec3};
+use crate::builtins::system::SysVars;
 use crate::geom::curve::Curve;
-use crate::geom::mesh::Mesh;
-use crate::geom::mesh::Polyline3;
+use crate::geom::mesh::{self, Mesh, Polyline3};
+use crate::geom::surface::{self, ArcData, CurveRef, Surface};
 use crate::lang::builtin::{bad_arg, Builtin};
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::value::Object;
 use crate::lang::{Interp, Value};
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!(
-        "mesh-read",
-        "(mesh-read \"file.stl\")",
-        "Reads a triangle mesh from STL (ASCII or binary) or OBJ, welding shared vertices.",
-        1,
-        1,
-        mesh_read
-    ),
-    builtin!(
-        "mesh-write",
-        "(mesh-write m \"file.obj\")",
-        "Writes a mesh as STL (binary) or OBJ, by extension; returns the file name.",
-        2,
-        2,
-        mesh_write
-    ),
-    builtin!(
-        "surface-section",
-        "(surface-section s plane-point plane-normal)",
-        "The plane section of a surface: a list of polylines (closed where the section closes).",
-        3,
-        3,
-        surface_section
-    ),
-    builtin!(
-        "surface-intersect",
-        "(surface-intersect s1 s2)",
-        "The intersection curves of two surfaces, chained into polylines.",
-        2,
-        2,
-        surface_intersect
-    ),
-    builtin!(
-        "surface-area",
-        "(surface-area s)",
-        "The area of a surface.",
-        1,
-        1,
-        surface_area
-    ),
-    builtin!(
-        "surface-boundary",
-        "(surface-boundary s)",
-        "The boundary loops of a surface as closed polylines.",
-        1,
-        1,
-        surface_boundary
-    ),
+    builtin!("ruled-surface", "(ruled-surface c1 c2)", "The ruled surface between two curves.", 2, 2, ruled_surface),
+    builtin!("revolve-surface", "(revolve-surface profile axis-point axis-dir angle)", "The surface of revolution of a profile curve about an axis, through angle radians.", 4, 4, revolve_surface),
+    builtin!("sweep-surface", "(sweep-surface profile path)", "A profile swept along a guide curve (rotation-minimising frame).", 2, 2, sweep_surface),
+    builtin!("boundary-surface", "(boundary-surface c1 c2 c3 c4)", "The Coons patch bounded by four curves in order around it.", 4, 4, boundary_surface),
+    builtin!("plane-surface", "(plane-surface closed-curve)", "The planar region inside a closed curve.", 1, 1, plane_surface),
+    builtin!("cylinder-surface", "(cylinder-surface base-center axis-dir radius height)", "A cylinder.", 4, 4, cylinder_surface),
+    builtin!("sphere-surface", "(sphere-surface center radius)", "A sphere.", 2, 2, sphere_surface),
+    builtin!("mesh-surface", "(mesh-surface s [chord-tol])", "The discrete surface: an indexed triangle mesh within chord-tol (default CHORDTOL).", 1, 2, mesh_surface),
+    builtin!("mesh-read", "(mesh-read \"file.stl\")", "Reads a triangle mesh from STL (ASCII or binary) or OBJ, welding shared vertices.", 1, 1, mesh_read),
+    builtin!("mesh-write", "(mesh-write m \"file.obj\")", "Writes a surface or mesh as STL (binary) or OBJ, by extension; returns the file name.", 2, 2, mesh_write),
+    builtin!("surface-section", "(surface-section s plane-point plane-normal)", "The plane section of a surface: a list of polylines (closed where the section closes).", 3, 3, surface_section),
+    builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines.", 2, 2, surface_intersect),
+    builtin!("trim-surface", "(trim-surface s cutter keep-point)", "The part of s, cut along its intersection with cutter, that holds the point nearest keep-point.", 3, 3, trim_surface),
+    builtin!("surface-corners", "(surface-corners s [angle])", "The boundary corners: where the boundary's tangent turns by more than angle (default 30 degrees, in radians).", 1, 2, surface_corners),
+    builtin!("extend-surface", "(extend-surface s distance [angle])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners).", 2, 3, extend_surface),
+    builtin!("surface-area", "(surface-area s)", "The area of a surface.", 1, 1, surface_area),
+    builtin!("surface-boundary", "(surface-boundary s)", "The boundary loops of a surface as closed polylines.", 1, 1, surface_boundary),
 ];
+
+/// A parametric surface: `type` → SURFACE.
+pub struct SurfaceValue(pub Surface);
+
+impl Object for SurfaceValue {
+    fn type_name(&self) -> &'static str {
+        "SURFACE"
+    }
+    fn print(&self, f: &mut dyn fmt::Write) -> fmt::Result {
+        let kind = match &self.0 {
+            Surface::Ruled(_) => "RULED",
+            Surface::Revolve(_) => "REVOLVED",
+            Surface::Sweep(_) => "SWEPT",
+            Surface::Coons(_) => "BOUNDARY",
+            Surface::Plane(_) => "PLANE",
+            Surface::Cylinder(c) => {
+                return write!(
+                    f,
+                    "#<SURFACE CYLINDER R{} H{}>",
+                    crate::geom::curve::fmt_g(c.radius),
+                    crate::geom::curve::fmt_g(c.height)
+                )
+            }
+            Surface::Sphere(s) => {
+                return write!(
+                    f,
+                    "#<SURFACE SPHERE R{}>",
+                    crate::geom::curve::fmt_g(s.radius)
+                )
+            }
+        };
+        write!(f, "#<SURFACE {kind}>")
+    }
+    fn as_any(&self) -> &dyn std::any::Any {
+        self
+    }
+}
 
 /// A discrete surface (indexed triangle mesh): `type` → MESH.
 pub struct MeshValue(pub Rc<Mesh>);
@@ -91,58 +102,233 @@ pub fn mesh_value(m: Mesh) -> Value {
     Value::obj(MeshValue(Rc::new(m)))
 }
 
-/// The mesh a surface-like value stands for.
+fn surface_value(s: Surface) -> Value {
+    Value::obj(SurfaceValue(s))
+}
+
+fn mesh_err(e: impl fmt::Display) -> Exn {
+    err(e.to_string())
+}
+
+/// The chord tolerance for tessellating parametric surfaces (CHORDTOL).
+fn chord_tol(it: &mut Interp) -> f64 {
+    it.ext::<SysVars>().real("CHORDTOL")
+}
+
+/// A surface or mesh argument.
+enum Surf {
+    Param(Surface),
+    Discrete(Rc<Mesh>),
+}
+
+fn surf(it: &Interp, v: &Value) -> Result<Surf, Exn> {
+    if let Some(s) = v.as_obj::<SurfaceValue>() {
+        return Ok(Surf::Param(s.0.clone()));
+    }
+    if let Some(m) = v.as_obj::<MeshValue>() {
+        return Ok(Surf::Discrete(m.0.clone()));
+    }
+    Err(bad_arg(it, "surfacep", v))
+}
+
+/// The discrete surface of a surface-like value (a parametric one tessellated).
+fn discrete(it: &mut Interp, v: &Value) -> Result<Rc<Mesh>, Exn> {
+    match surf(it, v)? {
+        Surf::Discrete(m) => Ok(m),
+        Surf::Param(s) => {
+            let tol = chord_tol(it);
+            Ok(Rc::new(surface::mesh_surface(&s, tol).map_err(mesh_err)?))
+        }
+    }
+}
+
+/// The mesh a surface-like value stands for (parametric ones tessellated at CHORDTOL = 0.01);
+/// for drawing and bounding boxes.
 pub fn mesh_of(v: &Value) -> Option<Rc<Mesh>> {
-    v.as_obj::<MeshValue>().map(|m| m.0.clone())
+    if let Some(m) = v.as_obj::<MeshValue>() {
+        return Some(m.0.clone());
+    }
+    let s = v.as_obj::<SurfaceValue>()?;
+    surface::mesh_surface(&s.0, 0.01).ok().map(Rc::new)
 }
 
 pub fn is_surface(v: &Value) -> bool {
-    mesh_of(v).is_some()
-}
-
-fn mesh_arg(it: &Interp, v: &Value) -> Result<Rc<Mesh>, Exn> {
-    mesh_of(v).ok_or_else(|| bad_arg(it, "surfacep", v))
+    v.as_obj::<MeshValue>().is_some() || v.as_obj::<SurfaceValue>().is_some()
 }
 
 pub fn bbox_of(v: &Value) -> Option<(DVec3, DVec3)> {
-    let m = mesh_of(v)?;
-    let b = m.bounds()?;
+    if !is_surface(v) {
+        return None;
+    }
+    let b = mesh_of(v)?.bounds()?;
     Some((b.min, b.max))
 }
 
-/// A transformed copy of a surface value; None when `v` is not one.
+/// A transformed copy of a surface-like value (a parametric surface becomes its mesh); None
+/// when `v` is not one.
 pub fn transform(v: &Value, m: &DMat4) -> Option<LResult> {
-    let mesh = mesh_of(v)?;
-    Some(
-        mesh.map_vertices(|p| m.transform_point3(p))
-            .map(mesh_value)
-            .map_err(|e| err(e.to_string())),
-    )
+    if !is_surface(v) {
+        return None;
+    }
+    let Some(mesh) = mesh_of(v) else {
+        return Some(Err(err("the surface cannot be tessellated")));
+    };
+    Some(mesh.transformed(m).map(mesh_value).map_err(mesh_err))
 }
 
-/// `(intersect curve surface)`: wired to the discrete-surface hit search (issue 6).
+fn curve_ref(it: &Interp, v: &Value) -> Result<CurveRef, Exn> {
+    Ok(Arc::new(curve(it, v)?.clone()))
+}
+
+/// `(intersect curve surface [near])`: closed forms for lines and circles/arcs against the
+/// parametric kinds paper 002 covers; any curve against a mesh through its hierarchy.
 pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
-    crate::builtins::geometry::curve(it, &a[0])?;
-    mesh_arg(it, &a[1])?;
-    Err(err(
-        "intersect: curve/surface intersection is not available in this build yet",
-    ))
+    let c = curve(it, &a[0])?.clone();
+    let s = surf(it, &a[1])?;
+    let tol = geomtol(it);
+    let ctol = chord_tol(it);
+    let mut pts: Vec<DVec3> = match (&c, &s) {
+        (Curve::Line(l), Surf::Param(s)) => surface::segment_surface_hits(l.p0, l.p1, s, tol)
+            .map_err(mesh_err)?
+            .into_iter()
+            .map(|(_, p)| p)
+            .collect(),
+        (Curve::Circle(ci), Surf::Param(s)) => {
+            let arc = ArcData::circle(ci.center(), ci.radius(), ci.normal());
+            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+        }
+        (Curve::Arc(ar), Surf::Param(s)) => {
+            let arc = ArcData {
+                center: ar.center(),
+                radius: ar.radius(),
+                normal: ar.normal(),
+                start_angle: ar.start_angle(),
+                end_angle: ar.end_angle(),
+            };
+            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+        }
+        (_, Surf::Param(s)) => surface::curve_surface_hits(&c, s, ctol)
+            .map_err(mesh_err)?
+            .into_iter()
+            .map(|h| h.point)
+            .collect(),
+        (Curve::Line(l), Surf::Discrete(m)) => surface::polyline_mesh_hits(&[l.p0, l.p1], m)
+            .into_iter()
+            .map(|h| h.point)
+            .collect(),
+        (_, Surf::Discrete(m)) => surface::curve_mesh_hits(&c, m, ctol.min(1e-3))
+            .into_iter()
+            .map(|h| h.point)
+            .collect(),
+    };
+    if let Some(near) = a.get(2).filter(|v| v.truthy()) {
+        let near = vec3(it, near)?;
+        pts.sort_by(|p, q| p.distance(near).total_cmp(&q.distance(near)));
+        return Ok(pts.first().map_or(Value::Nil, |p| point3(*p)));
+    }
+    Ok(Value::list(pts.into_iter().map(point3).collect::<Vec<_>>()))
 }
 
-fn polylines(pls: Vec<Polyline3>) -> Result<Value, Exn> {
+/// Polylines as PLINE curves (closed ones closed).
+fn polylines(pls: Vec<Polyline3>) -> LResult {
     let mut out = Vec::with_capacity(pls.len());
     for p in pls {
         let mut pts = p.points;
-        if p.closed && pts.len() > 1 && pts.first() == pts.last() {
+        if pts.len() > 1 && pts.first() == pts.last() {
             pts.pop();
         }
+        // Chaining can leave points closer than a polyline segment may be: drop repeats.
+        pts.dedup_by(|a, b| a.distance(*b) <= 1e-12 * (1.0 + a.length()));
+        let closed = p.closed && pts.len() >= 3;
         if pts.len() < 2 {
             continue;
         }
-        let c = Curve::pline(pts, p.closed, None).map_err(crate::builtins::geometry::geom_err)?;
-        out.push(curve_value(c));
+        out.push(curve_value(
+            Curve::pline(pts, closed, None).map_err(geom_err)?,
+        ));
     }
     Ok(Value::list(out))
+}
+
+fn ruled_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(surface_value(Surface::ruled(
+        curve_ref(it, &a[0])?,
+        curve_ref(it, &a[1])?,
+    )))
+}
+
+fn revolve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = Surface::revolve(
+        curve_ref(it, &a[0])?,
+        vec3(it, &a[1])?,
+        vec3(it, &a[2])?,
+        it.num(&a[3])?,
+    )
+    .map_err(mesh_err)?;
+    Ok(surface_value(s))
+}
+
+fn sweep_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = Surface::sweep(curve_ref(it, &a[0])?, curve_ref(it, &a[1])?).map_err(mesh_err)?;
+    Ok(surface_value(s))
+}
+
+fn boundary_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let cs = [
+        curve_ref(it, &a[0])?,
+        curve_ref(it, &a[1])?,
+        curve_ref(it, &a[2])?,
+        curve_ref(it, &a[3])?,
+    ];
+    Ok(surface_value(Surface::boundary(cs).map_err(mesh_err)?))
+}
+
+fn plane_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let c = curve(it, &a[0])?;
+    if !c.is_closed() {
+        return Err(err("plane-surface: the boundary curve must be closed"));
+    }
+    let mut pts = c.points(geomtol(it).max(1e-6)).map_err(geom_err)?;
+    if pts.len() > 1
+        && pts
+            .first()
+            .zip(pts.last())
+            .is_some_and(|(p, q)| p.distance(*q) < 1e-12)
+    {
+        pts.pop();
+    }
+    Ok(surface_value(Surface::plane(pts).map_err(mesh_err)?))
+}
+
+fn cylinder_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = Surface::cylinder(
+        vec3(it, &a[0])?,
+        vec3(it, &a[1])?,
+        it.num(&a[2])?,
+        it.num(&a[3])?,
+    )
+    .map_err(mesh_err)?;
+    Ok(surface_value(s))
+}
+
+fn sphere_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = Surface::sphere(vec3(it, &a[0])?, it.num(&a[1])?).map_err(mesh_err)?;
+    Ok(surface_value(s))
+}
+
+fn mesh_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    match surf(it, &a[0])? {
+        Surf::Discrete(_) => Ok(a[0].clone()),
+        Surf::Param(s) => {
+            let tol = match a.get(1) {
+                None | Some(Value::Nil) => chord_tol(it),
+                Some(t) => it.num(t)?,
+            };
+            Ok(mesh_value(
+                surface::mesh_surface(&s, tol).map_err(mesh_err)?,
+            ))
+        }
+    }
 }
 
 fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
@@ -150,41 +336,93 @@ fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
     let path = it
         .resolve_path(&name)
         .ok_or_else(|| err(format!("mesh-read: cannot find \"{name}\"")))?;
-    let m = crate::geom::mesh::read_mesh(&path).map_err(|e| err(e.to_string()))?;
-    Ok(mesh_value(m))
+    Ok(mesh_value(mesh::read_mesh(&path).map_err(mesh_err)?))
 }
 
 fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {
-    let mesh = mesh_arg(it, &a[0])?;
+    let m = discrete(it, &a[0])?;
     let name = it.string(&a[1])?.to_string();
-    let path = std::path::PathBuf::from(&name);
+    let path = match &it.base_dir {
+        Some(b) if std::path::Path::new(&name).is_relative() => b.join(&name),
+        _ => std::path::PathBuf::from(&name),
+    };
     if !it.ext::<crate::builtins::io::FsPolicy>().may_write(&path) {
         return Err(err(format!(
             "file access refused: {name} is outside the script and output directories (use --allow-fs)"
         )));
     }
-    crate::geom::mesh::write_mesh(&mesh, &path).map_err(|e| err(e.to_string()))?;
+    mesh::write_mesh(&m, &path).map_err(mesh_err)?;
     Ok(a[1].clone())
 }
 
 fn surface_section(it: &mut Interp, a: &[Value]) -> LResult {
-    let mesh = mesh_arg(it, &a[0])?;
     let p = vec3(it, &a[1])?;
     let n = vec3(it, &a[2])?;
-    let pls = crate::geom::mesh::section(&mesh, p, n).map_err(|e| err(e.to_string()))?;
-    polylines(pls)
+    match surf(it, &a[0])? {
+        Surf::Param(s) => {
+            let tol = chord_tol(it);
+            polylines(surface::surface_section(&s, p, n, tol).map_err(mesh_err)?)
+        }
+        Surf::Discrete(m) => polylines(mesh::section(&m, p, n).map_err(mesh_err)?),
+    }
 }
 
 fn surface_intersect(it: &mut Interp, a: &[Value]) -> LResult {
-    let m1 = mesh_arg(it, &a[0])?;
-    let m2 = mesh_arg(it, &a[1])?;
-    polylines(crate::geom::mesh::intersect_meshes(&m1, &m2))
+    if let (Surf::Param(s1), Surf::Param(s2)) = (surf(it, &a[0])?, surf(it, &a[1])?) {
+        let tol = chord_tol(it);
+        return polylines(surface::surface_intersect(&s1, &s2, tol).map_err(mesh_err)?);
+    }
+    let (m1, m2) = (discrete(it, &a[0])?, discrete(it, &a[1])?);
+    polylines(mesh::intersect_meshes(&m1, &m2))
+}
+
+fn trim_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let m = discrete(it, &a[0])?;
+    let cutter = discrete(it, &a[1])?;
+    let keep = vec3(it, &a[2])?;
+    let t = mesh::trim(&m, &cutter, keep).map_err(mesh_err)?;
+    Ok(mesh_value(t.kept))
+}
+
+fn corner_angle(it: &Interp, a: &[Value], i: usize) -> Result<f64, Exn> {
+    match a.get(i) {
+        None | Some(Value::Nil) => Ok(30f64.to_radians()),
+        Some(v) => it.num(v),
+    }
+}
+
+fn surface_corners(it: &mut Interp, a: &[Value]) -> LResult {
+    let m = discrete(it, &a[0])?;
+    let angle = corner_angle(it, a, 1)?;
+    let cs = mesh::corners(&m, angle).map_err(mesh_err)?;
+    Ok(Value::list(cs.into_iter().map(point3).collect::<Vec<_>>()))
+}
+
+fn extend_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let m = discrete(it, &a[0])?;
+    let d = it.num(&a[1])?;
+    let angle = corner_angle(it, a, 2)?;
+    Ok(mesh_value(mesh::extend(&m, d, angle).map_err(mesh_err)?))
 }
 
 fn surface_area(it: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::Real(mesh_arg(it, &a[0])?.area()))
+    match surf(it, &a[0])? {
+        Surf::Param(s) => {
+            let tol = chord_tol(it);
+            Ok(Value::Real(
+                surface::surface_area(&s, tol).map_err(mesh_err)?,
+            ))
+        }
+        Surf::Discrete(m) => Ok(Value::Real(m.area())),
+    }
 }
 
 fn surface_boundary(it: &mut Interp, a: &[Value]) -> LResult {
-    polylines(mesh_arg(it, &a[0])?.boundary())
+    match surf(it, &a[0])? {
+        Surf::Param(s) => {
+            let tol = chord_tol(it);
+            polylines(surface::surface_boundary(&s, tol).map_err(mesh_err)?)
+        }
+        Surf::Discrete(m) => polylines(m.boundary()),
+    }
 }

@@ -215,6 +215,7 @@ impl Default for SysVars {
         put("BENDDEV", Value::Real(0.0));
         put("DXFPROFILE", Value::str("CAD"));
         put("CAMTOL", Value::Real(0.01));
+        put("CHORDTOL", Value::Real(0.01));
         put("CLAYER", Value::str("0"));
         put("TEXTSIZE", Value::Real(2.5));
         put(

@@ -15,15 +15,32 @@ pub type Coeffs = SmallVec<[f64; 16]>;
 
 /// Value at `t` by de Casteljau.
 pub fn eval(c: &[f64], t: f64) -> f64 {
-    let mut b: Coeffs = SmallVec::from_slice(c);
-    let n = b.len();
+    eval_deriv(c, t).0
+}
+
+/// Value and first derivative at `t` from one de Casteljau pass (the derivative is
+/// n·(b1 − b0) of the last-but-one level).
+pub fn eval_deriv(c: &[f64], t: f64) -> (f64, f64) {
+    let n = c.len();
+    if n == 1 {
+        return (c[0], 0.0);
+    }
+    let mut buf = [0.0f64; 24];
+    let mut heap;
+    let b: &mut [f64] = if n <= buf.len() {
+        buf[..n].copy_from_slice(c);
+        &mut buf[..n]
+    } else {
+        heap = c.to_vec();
+        &mut heap
+    };
     let u = 1.0 - t;
-    for r in 1..n {
+    for r in 1..n - 1 {
         for j in 0..n - r {
             b[j] = b[j] * u + b[j + 1] * t;
         }
     }
-    b[0]
+    (b[0] * u + b[1] * t, (n - 1) as f64 * (b[1] - b[0]))
 }
 
 /// The coefficients of the two halves split at `t`.
@@ -101,21 +118,19 @@ fn sign_changes(c: &[f64]) -> usize {
 }
 
 /// The single root of `c` in [0, 1] when c(0) and c(1) have opposite signs and c has one
-/// sign change there: Newton's method kept inside a shrinking bracket, with a bisection step
-/// whenever Newton leaves the bracket or the bracket stops halving.
+/// sign change there: Newton's method kept inside a shrinking bracket, falling back to a
+/// bisection step whenever Newton leaves the bracket or stops contracting.
 fn solve_bracketed(c: &[f64]) -> f64 {
-    let d = deriv(c);
     let (mut a, mut b) = (0.0f64, 1.0f64);
     let neg_at_a = c[0] < 0.0;
     let (f0, f1) = (c[0], c[c.len() - 1]);
-    let mut t = (f0 / (f0 - f1)).clamp(0.0, 1.0);
+    let mut t = f0 / (f0 - f1);
     if !(t > 0.0 && t < 1.0) {
         t = 0.5;
     }
-    let mut width = 1.0;
-    let mut stall = 0;
+    let mut last_step = f64::INFINITY;
     for _ in 0..200 {
-        let ft = eval(c, t);
+        let (ft, dt) = eval_deriv(c, t);
         if ft == 0.0 {
             return t;
         }
@@ -127,19 +142,13 @@ fn solve_bracketed(c: &[f64]) -> f64 {
         if b - a <= 2.0 * f64::EPSILON * b.max(1e-300) {
             return t;
         }
-        if b - a > 0.5 * width {
-            stall += 1;
-        } else {
-            stall = 0;
-            width = b - a;
-        }
-        let dt = eval(&d, t);
         let nt = t - ft / dt;
-        let next = if dt != 0.0 && nt > a && nt < b && stall < 3 {
+        let step = (nt - t).abs();
+        let next = if dt != 0.0 && nt > a && nt < b && step < 0.5 * last_step {
+            last_step = step;
             nt
         } else {
-            stall = 0;
-            width = b - a;
+            last_step = f64::INFINITY;
             0.5 * (a + b)
         };
         if (next - t).abs() <= f64::EPSILON * t.abs().max(1e-300) {

@@ -66,6 +66,9 @@ impl From<BSpline> for Curve {
 const LEN_ACC: f64 = 1e-13;
 
 fn bspline_spans(s: &BSpline) -> Vec<Span> {
+    if let Some(spans) = decompose_clamped(s) {
+        return spans;
+    }
     let (a, b) = s.domain();
     let mut breaks: Vec<f64> = s
         .knots
@@ -85,6 +88,73 @@ fn bspline_spans(s: &BSpline) -> Vec<Span> {
             t1: (w[1] - a) / (b - a),
         })
         .collect()
+}
+
+/// Bézier decomposition of a B-spline with a clamped knot vector (end knots of multiplicity
+/// p + 1) in one sweep, without re-allocating per inserted knot: Piegl & Tiller, The NURBS
+/// Book, algorithm A5.6 (DecomposeCurve), in homogeneous coordinates.
+fn decompose_clamped(s: &BSpline) -> Option<Vec<Span>> {
+    use glam::DVec4;
+    use smallvec::SmallVec;
+    let p = s.degree;
+    let u = &s.knots;
+    let n = s.ctrl.len() - 1;
+    let m = n + p + 1;
+    if p > 8 || u[..=p].iter().any(|k| *k != u[0]) || u[m - p..].iter().any(|k| *k != u[m]) {
+        return None;
+    }
+    let w = |i: usize| s.weights.as_ref().map_or(1.0, |w| w[i]);
+    let pw = |i: usize| (s.ctrl[i] * w(i)).extend(w(i));
+    let (lo, hi) = (u[p], u[m - p]);
+    let span_t = |x: f64| (x - lo) / (hi - lo);
+    let rational = s.weights.is_some();
+    let mut out = Vec::new();
+    let mut q: SmallVec<[DVec4; 9]> = (0..=p).map(pw).collect();
+    let mut next: SmallVec<[DVec4; 9]> = SmallVec::from_elem(DVec4::ZERO, p + 1);
+    let mut alphas = [0.0f64; 9];
+    let (mut a, mut b) = (p, p + 1);
+    while b < m {
+        let i = b;
+        while b < m && u[b + 1] == u[b] {
+            b += 1;
+        }
+        let mult = b - i + 1;
+        if mult < p {
+            let numer = u[b] - u[a];
+            for j in ((mult + 1)..=p).rev() {
+                alphas[j - mult - 1] = numer / (u[a + j] - u[a]);
+            }
+            let r = p - mult;
+            for j in 1..=r {
+                let save = r - j;
+                let st = mult + j;
+                for k in (st..=p).rev() {
+                    let al = alphas[k - st];
+                    q[k] = q[k] * al + q[k - 1] * (1.0 - al);
+                }
+                if b < m {
+                    next[save] = q[p];
+                }
+            }
+        }
+        out.push(Span {
+            piece: Piece::Bez(Bez {
+                h: q.iter().copied().collect(),
+                rational,
+            }),
+            t0: span_t(u[a]),
+            t1: span_t(u[b]),
+        });
+        if b < m {
+            for k in (p - mult.min(p))..=p {
+                next[k] = pw(b - p + k);
+            }
+            std::mem::swap(&mut q, &mut next);
+            a = b;
+            b += 1;
+        }
+    }
+    Some(out)
 }
 
 impl Curve {
@@ -483,6 +553,33 @@ impl Curve {
     }
 }
 
+impl ParamCurve for Curve {
+    fn eval(&self, t: f64) -> DVec3 {
+        Curve::eval(self, t)
+    }
+}
+impl ParamCurveDeriv for Curve {
+    fn deriv(&self, t: f64) -> DVec3 {
+        Curve::deriv(self, t)
+    }
+}
+impl ParamCurveArclen for Curve {
+    /// Lines and arcs are exact; spline pieces use adaptive Gauss–Legendre to 1e-13·scale.
+    fn arclen(&self, _accuracy: f64) -> f64 {
+        self.length()
+    }
+}
+impl ParamCurveNearest for Curve {
+    fn nearest(&self, p: DVec3, _accuracy: f64) -> (f64, DVec3) {
+        self.closest_point(p)
+    }
+}
+impl ParamCurveBbox for Curve {
+    fn bbox(&self) -> (DVec3, DVec3) {
+        Curve::bbox(self)
+    }
+}
+
 /// The scale factor of `lin` on the plane (u, v) with normal n, or an error when `lin` is not
 /// a similarity there.
 fn similarity_scale(lin: DMat3, u: DVec3, v: DVec3, n: DVec3) -> Result<f64> {
@@ -632,6 +729,54 @@ impl fmt::Display for Curve {
             ),
             Curve::BSpline(b) => {
                 write!(f, "#<BSPLINE degree {}, {} points>", b.degree, b.ctrl.len())
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_sweep_decomposition_matches_knot_insertion() {
+        let ctrl: Vec<DVec3> = (0..8)
+            .map(|i| DVec3::new(i as f64, ((i * 5) % 3) as f64, ((i * 7) % 4) as f64 * 0.5))
+            .collect();
+        let weights = vec![1.0, 2.0, 0.5, 1.0, 1.5, 1.0, 0.7, 1.2];
+        for p in 1..=4 {
+            for knots in [
+                None,
+                Some({
+                    // A repeated interior knot.
+                    let mut k = vec![0.0; p + 1];
+                    let inner = 8 - p - 1;
+                    for i in 0..inner {
+                        k.push(if i == 1 {
+                            0.25
+                        } else {
+                            (i as f64 + 1.0) / (inner + 1) as f64
+                        });
+                    }
+                    k.sort_by(f64::total_cmp);
+                    k.extend(std::iter::repeat_n(1.0, p + 1));
+                    k
+                }),
+            ] {
+                for w in [None, Some(weights.clone())] {
+                    let s = BSpline::new(p, ctrl.clone(), knots.clone(), w).unwrap();
+                    let fast = decompose_clamped(&s).unwrap();
+                    for sp in &fast {
+                        for j in 0..=8 {
+                            let x = j as f64 / 8.0;
+                            let t = sp.t0 + (sp.t1 - sp.t0) * x;
+                            let d = (sp.piece.eval(x) - s.eval(t)).length();
+                            assert!(d < 1e-12, "p {p} span {}..{} x {x}: {d}", sp.t0, sp.t1);
+                        }
+                    }
+                    let (a, b) = (fast[0].t0, fast.last().unwrap().t1);
+                    assert!(a == 0.0 && b == 1.0);
+                }
             }
         }
     }

@@ -32,14 +32,23 @@ impl Polyline {
     /// A checked polyline. `bulges`: one per vertex (the segment starting there; the last one
     /// is used only when closed), or `None` for all zero. `normal` (default +Z) orients bulges.
     /// Errors: fewer than 2 vertices, NaN/inf, coincident consecutive vertices, wrong bulge
-    /// count, a bulged segment not perpendicular to the normal.
+    /// count, a bulged segment not perpendicular to the normal. A closed polyline given with
+    /// its first point repeated at the end has the repeat dropped (with its bulge).
     pub fn new(
-        vertices: Vec<DVec3>,
-        bulges: Option<Vec<f64>>,
+        mut vertices: Vec<DVec3>,
+        mut bulges: Option<Vec<f64>>,
         closed: bool,
         normal: Option<DVec3>,
     ) -> Result<Polyline> {
         let normal = check_normal(normal.unwrap_or(DVec3::Z))?;
+        if closed && vertices.len() > 2 && vertices.first() == vertices.last() {
+            vertices.pop();
+            if let Some(b) = &mut bulges {
+                if b.len() == vertices.len() + 1 {
+                    b.pop();
+                }
+            }
+        }
         if vertices.len() < 2 {
             return Err(invalid(
                 "points",

@@ -23,6 +23,36 @@ pub type Code = Box<dyn Fn(&mut Interp) -> LResult>;
 /// Argument vectors live on the Rust stack for the common arities.
 pub type Args = SmallVec<[Value; 4]>;
 
+/// An argument of a call, classified when compiled: variables and constants (most arguments
+/// in practice) are read in place instead of through a boxed closure call.
+pub enum Operand {
+    /// A symbol's value cell.
+    Var(usize),
+    /// A self-evaluating atom (number, string, nil, T).
+    Const(Value),
+    Code(Code),
+}
+
+impl Operand {
+    #[inline(always)]
+    pub fn eval(&self, it: &mut Interp) -> LResult {
+        match self {
+            Operand::Var(i) => Ok(it.values[*i].clone()),
+            Operand::Const(v) => Ok(v.clone()),
+            Operand::Code(c) => c(it),
+        }
+    }
+
+    /// Back to a closure, for the places that store plain code.
+    pub fn into_code(self) -> Code {
+        match self {
+            Operand::Var(i) => Box::new(move |it| Ok(it.values[i].clone())),
+            Operand::Const(v) => Box::new(move |_| Ok(v.clone())),
+            Operand::Code(c) => c,
+        }
+    }
+}
+
 /// A user function (from `defun`, `lambda`, or a quoted lambda list applied at run time).
 pub struct Lambda {
     pub name: Option<Sym>,
@@ -41,6 +71,9 @@ pub struct Compiler<'a> {
     spans: Option<&'a SpanMap>,
     syms: &'a super::symbols::SymbolTable,
     depth: usize,
+    /// Lowest stack address compilation may reach (0: only `MAX_DEPTH` applies). Set from the
+    /// interpreter's stack budget so `eval` of deep data deep in a recursion fails cleanly.
+    stack_floor: usize,
 }
 
 impl<'a> Compiler<'a> {
@@ -49,7 +82,13 @@ impl<'a> Compiler<'a> {
             spans,
             syms,
             depth: 0,
+            stack_floor: 0,
         }
+    }
+
+    pub fn with_stack_floor(mut self, floor: usize) -> Self {
+        self.stack_floor = floor;
+        self
     }
 
     fn span_of(&self, form: &Value) -> Option<Span> {
@@ -58,13 +97,28 @@ impl<'a> Compiler<'a> {
 
     pub fn compile(&mut self, form: &Value) -> Code {
         self.depth += 1;
-        let code = if self.depth > MAX_DEPTH {
+        let code = if self.depth > MAX_DEPTH || super::eval::stack_pointer() < self.stack_floor {
             fail(err("stack overflow: expression nested too deeply"), None)
         } else {
             self.compile_inner(form)
         };
         self.depth -= 1;
         code
+    }
+
+    /// A form as an operand: the same evaluation as `compile`, with variables and constants
+    /// left unboxed.
+    pub fn operand(&mut self, form: &Value) -> Operand {
+        match form {
+            Value::Sym(S_T) => Operand::Const(Value::T),
+            Value::Sym(s) => Operand::Var(s.idx()),
+            Value::Cons(_) => Operand::Code(self.compile(form)),
+            other => Operand::Const(other.clone()),
+        }
+    }
+
+    fn operands(&mut self, args: &Value) -> Vec<Operand> {
+        args.iter().map(|a| self.operand(a)).collect()
     }
 
     fn compile_inner(&mut self, form: &Value) -> Code {
@@ -216,11 +270,8 @@ impl<'a> Compiler<'a> {
                 Err(e) => fail(e, span),
             },
             _ => {
-                let args: Vec<Code> = rest.iter().map(|a| self.compile(a)).collect();
-                match super::fastpath::compile(head, self.syms.name(head), args, span) {
-                    Ok(code) => code,
-                    Err(args) => call_symbol(head, args.into_boxed_slice(), span),
-                }
+                let args = self.operands(rest);
+                super::fastpath::compile(head, self.syms.name(head), args, span)
             }
         }
     }
@@ -230,7 +281,7 @@ impl<'a> Compiler<'a> {
         if items.is_empty() {
             return arity_error(true, span);
         }
-        let mut pairs: Vec<(Sym, Code)> = Vec::new();
+        let mut pairs: Vec<(Sym, Operand)> = Vec::new();
         for chunk in items.chunks(2) {
             let target = match chunk[0] {
                 Value::Sym(s) if *s != S_T => *s,
@@ -242,25 +293,36 @@ impl<'a> Compiler<'a> {
             if chunk.len() < 2 {
                 return arity_error(true, span);
             }
-            pairs.push((target, self.compile(chunk[1])));
+            pairs.push((target, self.operand(chunk[1])));
         }
         if pairs.len() == 1 {
             let (s, code) = pairs.pop().expect("one pair");
             let i = s.idx();
-            return Box::new(move |it| {
-                let v = code(it)?;
-                it.values[i] = v.clone();
-                Ok(v)
-            });
+            return match code {
+                Operand::Code(code) => Box::new(move |it| {
+                    let v = code(it)?;
+                    it.values[i] = v.clone();
+                    Ok(v)
+                }),
+                other => Box::new(move |it| {
+                    let v = other.eval(it)?;
+                    it.values[i] = v.clone();
+                    Ok(v)
+                }),
+            };
         }
-        let pairs = pairs.into_boxed_slice();
+        // Every value but the last goes straight into its cell; the last is also the result.
+        let (last_sym, last_code) = pairs.pop().expect("several pairs");
+        let pairs: Box<[(usize, Operand)]> = pairs.into_iter().map(|(s, c)| (s.idx(), c)).collect();
+        let li = last_sym.idx();
         Box::new(move |it| {
-            let mut last = Value::Nil;
-            for (s, code) in pairs.iter() {
-                last = code(it)?;
-                it.values[s.idx()] = last.clone();
+            for (i, code) in pairs.iter() {
+                let v = code.eval(it)?;
+                it.values[*i] = v;
             }
-            Ok(last)
+            let v = last_code.eval(it)?;
+            it.values[li] = v.clone();
+            Ok(v)
         })
     }
 
@@ -444,47 +506,67 @@ fn eval_args(it: &mut Interp, args: &[Code]) -> Result<Args, Exn> {
 }
 
 /// `(f args...)` with `f` a symbol: the function is whatever the symbol's cell holds when the
-/// call runs. Calls of one to three arguments keep them in a fixed array (no vector at all on
-/// the builtin path).
-fn call_symbol(fsym: Sym, args: Box<[Code]>, span: Option<Span>) -> Code {
+/// call runs. Calls of up to four arguments keep them in a fixed array on the Rust stack, and
+/// a user function takes them from there by move.
+pub(super) fn call_symbol(fsym: Sym, args: Vec<Operand>, span: Option<Span>) -> Code {
     macro_rules! fixed {
         ($n:literal) => {{
-            let args: Box<[Code; $n]> = args.try_into().ok().expect("arity matches");
+            let args: Box<[Operand; $n]> = args
+                .into_boxed_slice()
+                .try_into()
+                .ok()
+                .expect("arity matches");
             Box::new(move |it: &mut Interp| {
                 check_defined(it, fsym, span)?;
                 let mut argv: [Value; $n] = Default::default();
                 for (slot, a) in argv.iter_mut().zip(args.iter()) {
-                    *slot = a(it)?;
+                    *slot = a.eval(it)?;
                 }
-                dispatch(it, fsym, &argv, span)
+                dispatch(it, fsym, &mut argv, span)
             }) as Code
         }};
     }
     match args.len() {
+        0 => Box::new(move |it: &mut Interp| {
+            check_defined(it, fsym, span)?;
+            dispatch(it, fsym, &mut [], span)
+        }),
         1 => fixed!(1),
         2 => fixed!(2),
         3 => fixed!(3),
-        _ => Box::new(move |it| {
-            check_defined(it, fsym, span)?;
-            let argv = eval_args(it, &args)?;
-            dispatch(it, fsym, &argv, span)
-        }),
+        4 => fixed!(4),
+        _ => {
+            let args = args.into_boxed_slice();
+            Box::new(move |it| {
+                check_defined(it, fsym, span)?;
+                let mut argv = Args::new();
+                for a in args.iter() {
+                    argv.push(a.eval(it)?);
+                }
+                dispatch(it, fsym, &mut argv, span)
+            })
+        }
     }
 }
 
 #[inline]
 fn check_defined(it: &Interp, fsym: Sym, span: Option<Span>) -> Result<(), Exn> {
     if it.values[fsym.idx()].is_nil() {
-        return Err(with_span(
-            err(format!("no function definition: {}", it.syms.name(fsym))),
-            span,
-        ));
+        return Err(undefined(it, fsym, span));
     }
     Ok(())
 }
 
+#[cold]
+fn undefined(it: &Interp, fsym: Sym, span: Option<Span>) -> Exn {
+    with_span(
+        err(format!("no function definition: {}", it.syms.name(fsym))),
+        span,
+    )
+}
+
 #[inline]
-fn dispatch(it: &mut Interp, fsym: Sym, argv: &[Value], span: Option<Span>) -> LResult {
+fn dispatch(it: &mut Interp, fsym: Sym, argv: &mut [Value], span: Option<Span>) -> LResult {
     match &it.values[fsym.idx()] {
         Value::Subr(b) => {
             let b = *b;
@@ -494,13 +576,14 @@ fn dispatch(it: &mut Interp, fsym: Sym, argv: &[Value], span: Option<Span>) -> L
             }
         }
         Value::Func(l) => {
+            // The clone keeps the function alive if its body redefines its own name.
             let l = l.clone();
-            it.call_lambda(&l, argv.iter().cloned().collect())
+            it.enter_lambda(&l, argv)
                 .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
         }
         other => {
             let f = other.clone();
-            it.apply_args(&f, argv.iter().cloned().collect())
+            it.apply_args(&f, argv.iter_mut().map(std::mem::take).collect())
                 .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
         }
     }
@@ -519,14 +602,21 @@ impl Interp {
     /// Compile a form read at run time (`eval`, quoted lambdas): no source spans.
     pub fn compile_value(&mut self, form: &Value) -> Code {
         self.sync_cells();
-        Compiler::new(None, &self.syms).compile(form)
+        Compiler::new(None, &self.syms)
+            .with_stack_floor(self.stack_floor())
+            .compile(form)
     }
 
     /// Calls a user function with dynamic (shallow) binding: parameters and locals get their
     /// new values in the symbols' own cells, the old values go on the save stack and come back
     /// on return, error or not. Before unwinding on an error, `*error*` is offered the error
     /// while every binding is still in place, as AutoLISP does.
-    pub fn call_lambda(&mut self, l: &Lambda, args: Args) -> LResult {
+    pub fn call_lambda(&mut self, l: &Lambda, mut args: Args) -> LResult {
+        self.enter_lambda(l, &mut args)
+    }
+
+    /// `call_lambda` taking the arguments by move out of `args` (left nil).
+    pub fn enter_lambda(&mut self, l: &Lambda, args: &mut [Value]) -> LResult {
         if args.len() != l.params.len() {
             return Err(err(if args.len() < l.params.len() {
                 "too few arguments"
@@ -537,8 +627,8 @@ impl Interp {
         self.tick()?;
         self.check_stack()?;
         let base = self.saves_len();
-        for (p, a) in l.params.iter().zip(args) {
-            self.bind(*p, a);
+        for (p, a) in l.params.iter().zip(args.iter_mut()) {
+            self.bind(*p, std::mem::take(a));
         }
         for p in l.locals.iter() {
             self.bind(*p, Value::Nil);
@@ -630,7 +720,11 @@ impl Interp {
             return Err(err(format!("bad function: {}", self.prin1_string(f))));
         }
         self.sync_cells();
-        let l = Rc::new(Compiler::new(None, &self.syms).lambda(None, &def)?);
+        let l = Rc::new(
+            Compiler::new(None, &self.syms)
+                .with_stack_floor(self.stack_floor())
+                .lambda(None, &def)?,
+        );
         if self.lambda_cache.len() > 4096 {
             self.lambda_cache.clear();
         }

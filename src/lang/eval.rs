@@ -27,7 +27,7 @@ thread_local! {
 }
 
 #[inline(always)]
-fn stack_pointer() -> usize {
+pub(super) fn stack_pointer() -> usize {
     let marker = 0u8;
     std::hint::black_box(&marker) as *const u8 as usize
 }
@@ -183,14 +183,16 @@ impl Interp {
     /// Fails cleanly before the Rust stack runs out.
     #[inline]
     pub fn check_stack(&self) -> Result<(), Exn> {
-        let used = self.stack_top.saturating_sub(stack_pointer());
-        if used > self.stack_budget {
-            Err(abort(
-                "stack overflow: recursion deeper than the evaluator's stack allows",
-            ))
+        if stack_pointer() < self.stack_floor() {
+            Err(stack_overflow())
         } else {
             Ok(())
         }
+    }
+
+    /// The stack address below which `check_stack` fails.
+    pub(super) fn stack_floor(&self) -> usize {
+        self.stack_top.saturating_sub(self.stack_budget)
     }
 
     #[inline]
@@ -255,7 +257,9 @@ impl Interp {
         self.sync_cells();
         let mut last = Value::Nil;
         for (form, _span) in &parsed.forms {
-            let code = Compiler::new(Some(&parsed.spans), &self.syms).compile(form);
+            let code = Compiler::new(Some(&parsed.spans), &self.syms)
+                .with_stack_floor(self.stack_floor())
+                .compile(form);
             last = self.run_toplevel(&code)?;
         }
         Ok(last)
@@ -358,6 +362,11 @@ impl Interp {
 
 const CHECK_EVERY: u64 = 4096;
 
+#[cold]
+fn stack_overflow() -> Exn {
+    abort("stack overflow: recursion deeper than the evaluator's stack allows")
+}
+
 /// A reader error as a Lisp error pointing at the source.
 pub fn read_error(e: ReadError, src: u32) -> Exn {
     let mut le = LispError::new(ErrorKind::Error, e.message);
@@ -378,4 +387,132 @@ pub fn mark_eval_thread(stack_size: usize) {
             stack_size.saturating_sub(STACK_MARGIN),
         )))
     });
+}
+
+#[cfg(test)]
+mod tests {
+    //! Limits: hostile programs end in clean errors, never in a Rust stack overflow. These run
+    //! on the evaluation thread `with_eval_stack` gives the CLI, in debug and release alike.
+    use super::*;
+
+    /// Runs each source in one fresh interpreter (output discarded); the printed value or
+    /// "ERR: message" of each.
+    fn run_all(srcs: &'static [&'static str], max_steps: Option<u64>) -> Vec<String> {
+        with_eval_stack(move || {
+            let mut it = Interp::new();
+            it.out = Box::new(std::io::sink());
+            it.set_max_steps(max_steps);
+            srcs.iter()
+                .map(|s| match it.eval_source("test", s) {
+                    Ok(v) => it.prin1_string(&v),
+                    Err(e) => format!("ERR: {}", e.message),
+                })
+                .collect()
+        })
+    }
+
+    const DEF_F: &str = "(defun f (n) (if (= n 0) 0 (1+ (f (1- n)))))";
+
+    #[test]
+    fn hundred_thousand_nested_calls_work_and_a_million_fail_cleanly() {
+        let r = run_all(&[DEF_F, "(f 100000)", "(f 1000000)", "(f 10)"], None);
+        assert_eq!(r[1], "100000");
+        assert!(r[2].starts_with("ERR: stack overflow"), "{}", r[2]);
+        // The interpreter is usable after the overflow: bindings were unwound.
+        assert_eq!(r[3], "10");
+    }
+
+    #[test]
+    fn recursion_through_builtins_fails_cleanly() {
+        let r = run_all(
+            &[
+                "(defun g (n) (if (> n 0) (apply 'g (list (1- n))) 0))",
+                "(g 1000000)",
+                "(defun h (n) (if (> n 0) (eval (list 'h (1- n))) 0))",
+                "(h 1000000)",
+                "(defun m (n) (if (> n 0) (car (mapcar 'm (list (1- n)))) 0))",
+                "(m 1000000)",
+                "(defun k (n) (if (> n 0) ((lambda (x) (k x)) (1- n)) 0))",
+                "(k 1000000)",
+                "(m 1000)",
+            ],
+            None,
+        );
+        for i in [1, 3, 5, 7] {
+            assert!(r[i].starts_with("ERR: stack overflow"), "{i}: {}", r[i]);
+        }
+        assert_eq!(r[8], "0");
+    }
+
+    #[test]
+    fn deeply_nested_data_prints_compares_and_drops() {
+        let r = run_all(
+            &[
+                "(setq a nil b nil) (repeat 1000000 (setq a (list a) b (list b))) 'ok",
+                "(equal a b)",
+                "(equal a (list b))",
+                "(strlen (vl-prin1-to-string a))",
+                "(eval a)",
+                "(setq a nil b nil)",
+            ],
+            None,
+        );
+        assert_eq!(r[0], "OK");
+        assert_eq!(r[1], "T");
+        assert_eq!(r[2], "nil");
+        assert!(r[3].parse::<usize>().is_ok(), "{}", r[3]);
+        assert!(r[4].starts_with("ERR:"), "{}", r[4]);
+        assert_eq!(r[5], "nil");
+    }
+
+    #[test]
+    fn max_steps_stops_runaway_loops() {
+        let r = run_all(
+            &[
+                "(while t nil)",
+                "(repeat 100000000 nil)",
+                "(defun r () (r)) (r)",
+                "(foreach x '(1 2 3) x)",
+            ],
+            Some(10_000),
+        );
+        for (i, msg) in r.iter().take(3).enumerate() {
+            assert!(
+                msg.starts_with("ERR: evaluation budget exceeded"),
+                "{i}: {msg}"
+            );
+        }
+        // The budget counts from `set_max_steps`: once spent, it stays spent.
+        assert!(
+            r[3].starts_with("ERR: evaluation budget exceeded"),
+            "{}",
+            r[3]
+        );
+    }
+
+    #[test]
+    fn interrupt_flag_stops_a_loop() {
+        let r = with_eval_stack(|| {
+            let mut it = Interp::new();
+            it.interrupt.store(true, Ordering::Relaxed);
+            match it.eval_source("test", "(while t nil)") {
+                Ok(_) => "finished".to_string(),
+                Err(e) => e.message,
+            }
+        });
+        assert_eq!(r, "interrupted");
+    }
+
+    #[test]
+    fn reader_nesting_is_bounded() {
+        let r = with_eval_stack(|| {
+            let mut it = Interp::new();
+            let src = "(".repeat(100_000) + &")".repeat(100_000);
+            match it.eval_source("test", &src) {
+                Ok(_) => "finished".to_string(),
+                Err(e) => e.message,
+            }
+        });
+        assert!(r.contains("nested deeper"), "{r}");
+    }
 }

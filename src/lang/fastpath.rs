@@ -3,12 +3,12 @@
 //! after one pointer comparison showing the symbol still holds the builtin (AutoLISP lets a
 //! program redefine `+`; then the ordinary call path runs). Anything unusual — a non-number,
 //! division by zero — also falls back to the builtin itself, so errors and results are the
-//! library's own.
+//! library's own. `cons`, `car` and `cdr` get the same treatment.
 
 use std::sync::OnceLock;
 
 use super::builtin::Builtin;
-use super::compile::Code;
+use super::compile::{call_symbol, Code, Operand};
 use super::error::{Exn, LResult, Span};
 use super::eval::Interp;
 use super::value::{Sym, Value};
@@ -43,6 +43,9 @@ fn builtin(name: &str) -> &'static Builtin {
 struct Known {
     bins: Vec<(&'static str, Bin, &'static Builtin)>,
     uns: Vec<(&'static str, Un, &'static Builtin)>,
+    cons: &'static Builtin,
+    car: &'static Builtin,
+    cdr: &'static Builtin,
 }
 
 fn known() -> &'static Known {
@@ -70,6 +73,9 @@ fn known() -> &'static Known {
         Known {
             bins: bins.iter().map(|(n, b)| (*n, *b, builtin(n))).collect(),
             uns: uns.iter().map(|(n, u)| (*n, *u, builtin(n))).collect(),
+            cons: builtin("cons"),
+            car: builtin("car"),
+            cdr: builtin("cdr"),
         }
     })
 }
@@ -153,13 +159,140 @@ fn fallback(it: &mut Interp, fsym: Sym, args: &[Value], span: Option<Span>) -> L
     it.apply(&f, args).map_err(with_span)
 }
 
-/// Inline code for `(head args...)` when head names a fast-path builtin and the arity fits.
-pub fn compile(
+/// An operand whose evaluation is known when compiling, so the closures below are
+/// monomorphised per operand shape and a variable or constant costs no indirect call.
+trait Opnd: 'static {
+    fn get(&self, it: &mut Interp) -> LResult;
+}
+
+struct OVar(usize);
+struct OConst(Value);
+struct OCode(Code);
+
+impl Opnd for OVar {
+    #[inline(always)]
+    fn get(&self, it: &mut Interp) -> LResult {
+        Ok(it.values[self.0].clone())
+    }
+}
+
+impl Opnd for OConst {
+    #[inline(always)]
+    fn get(&self, _: &mut Interp) -> LResult {
+        Ok(self.0.clone())
+    }
+}
+
+impl Opnd for OCode {
+    #[inline(always)]
+    fn get(&self, it: &mut Interp) -> LResult {
+        (self.0)(it)
+    }
+}
+
+/// Runs `$body` with `$x` bound to the operand as its concrete `Opnd` type.
+macro_rules! with_opnd {
+    ($o:expr, $x:ident => $body:expr) => {
+        match $o {
+            Operand::Var(i) => {
+                let $x = OVar(i);
+                $body
+            }
+            Operand::Const(v) => {
+                let $x = OConst(v);
+                $body
+            }
+            Operand::Code(c) => {
+                let $x = OCode(c);
+                $body
+            }
+        }
+    };
+}
+
+#[inline(always)]
+fn holds(it: &Interp, fi: usize, b: &'static Builtin) -> bool {
+    matches!(&it.values[fi], Value::Subr(f) if std::ptr::eq(*f, b))
+}
+
+fn bin_code<X: Opnd, Y: Opnd>(
     head: Sym,
-    name: &str,
-    mut args: Vec<Code>,
+    op: Bin,
+    b: &'static Builtin,
+    x: X,
+    y: Y,
     span: Option<Span>,
-) -> Result<Code, Vec<Code>> {
+) -> Code {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        let yv = y.get(it)?;
+        if holds(it, fi, b) {
+            if let Some(v) = bin_numbers(op, &xv, &yv) {
+                return Ok(v);
+            }
+        }
+        fallback(it, head, &[xv, yv], span)
+    })
+}
+
+fn un_code<X: Opnd>(head: Sym, op: Un, b: &'static Builtin, x: X, span: Option<Span>) -> Code {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        if holds(it, fi, b) {
+            if let Some(v) = un_number(op, &xv) {
+                return Ok(v);
+            }
+        }
+        fallback(it, head, &[xv], span)
+    })
+}
+
+/// `(cons a b)` builds the cell from the evaluated arguments without copying them again.
+fn cons_code<X: Opnd, Y: Opnd>(
+    head: Sym,
+    b: &'static Builtin,
+    x: X,
+    y: Y,
+    span: Option<Span>,
+) -> Code {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        let yv = y.get(it)?;
+        if holds(it, fi, b) {
+            return Ok(Value::cons(xv, yv));
+        }
+        fallback(it, head, &[xv, yv], span)
+    })
+}
+
+/// `(car l)` / `(cdr l)` on a list; anything else goes to the builtin for its error.
+fn carcdr_code<X: Opnd>(
+    head: Sym,
+    cdr: bool,
+    b: &'static Builtin,
+    x: X,
+    span: Option<Span>,
+) -> Code {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        if holds(it, fi, b) {
+            match &xv {
+                Value::Nil => return Ok(Value::Nil),
+                Value::Cons(c) => return Ok(if cdr { c.cdr.clone() } else { c.car.clone() }),
+                _ => {}
+            }
+        }
+        fallback(it, head, &[xv], span)
+    })
+}
+
+/// Inline code for `(head args...)` when head names a fast-path builtin and the arity fits;
+/// otherwise the ordinary call.
+pub fn compile(head: Sym, name: &str, mut args: Vec<Operand>, span: Option<Span>) -> Code {
     let k = known();
     let lname = name.to_ascii_lowercase();
     if args.len() == 2 {
@@ -167,38 +300,30 @@ pub fn compile(
             let (op, b) = (*op, *b);
             let y = args.pop().expect("two args");
             let x = args.pop().expect("two args");
-            let fi = head.idx();
-            return Ok(Box::new(move |it| {
-                let xv = x(it)?;
-                let yv = y(it)?;
-                if let Value::Subr(f) = &it.values[fi] {
-                    if std::ptr::eq(*f, b) {
-                        if let Some(v) = bin_numbers(op, &xv, &yv) {
-                            return Ok(v);
-                        }
-                    }
-                }
-                fallback(it, head, &[xv, yv], span)
-            }));
+            return with_opnd!(x, x => with_opnd!(y, y => bin_code(head, op, b, x, y, span)));
+        }
+        if lname == "cons" {
+            let y = args.pop().expect("two args");
+            let x = args.pop().expect("two args");
+            let b = k.cons;
+            return with_opnd!(x, x => with_opnd!(y, y => cons_code(head, b, x, y, span)));
         }
     }
     if args.len() == 1 {
         if let Some((_, op, b)) = k.uns.iter().find(|(n, _, _)| *n == lname) {
             let (op, b) = (*op, *b);
             let x = args.pop().expect("one arg");
-            let fi = head.idx();
-            return Ok(Box::new(move |it| {
-                let xv = x(it)?;
-                if let Value::Subr(f) = &it.values[fi] {
-                    if std::ptr::eq(*f, b) {
-                        if let Some(v) = un_number(op, &xv) {
-                            return Ok(v);
-                        }
-                    }
-                }
-                fallback(it, head, &[xv], span)
-            }));
+            return with_opnd!(x, x => un_code(head, op, b, x, span));
+        }
+        if lname == "car" || lname == "cdr" {
+            let x = args.pop().expect("one arg");
+            let (cdr, b) = if lname == "cdr" {
+                (true, k.cdr)
+            } else {
+                (false, k.car)
+            };
+            return with_opnd!(x, x => carcdr_code(head, cdr, b, x, span));
         }
     }
-    Err(args)
+    call_symbol(head, args, span)
 }

@@ -221,34 +221,56 @@ impl Value {
     }
 
     /// `equal` with a numeric fuzz: structural, numbers compared within `fuzz`
-    /// (an integer and a real compare by value). Iterative along cdrs.
+    /// (an integer and a real compare by value). Iterative along cdrs and, with an explicit
+    /// work list, through cars too: a list nested a million levels deep compares without
+    /// recursion. The work list only allocates when a car is itself a cons.
     pub fn equal(&self, other: &Value, fuzz: f64) -> bool {
+        let mut pending: Vec<(&Value, &Value)> = Vec::new();
         let (mut a, mut b) = (self, other);
         loop {
-            match (a, b) {
+            let same = match (a, b) {
                 (Value::Cons(x), Value::Cons(y)) => {
                     if Rc::ptr_eq(x, y) {
-                        return true;
+                        true
+                    } else if matches!(x.car, Value::Cons(_)) && matches!(y.car, Value::Cons(_)) {
+                        pending.push((&x.cdr, &y.cdr));
+                        a = &x.car;
+                        b = &y.car;
+                        continue;
+                    } else if !x.car.atom_equal(&y.car, fuzz) {
+                        false
+                    } else {
+                        a = &x.cdr;
+                        b = &y.cdr;
+                        continue;
                     }
-                    if !x.car.equal(&y.car, fuzz) {
-                        return false;
-                    }
-                    a = &x.cdr;
-                    b = &y.cdr;
                 }
-                (Value::Str(x), Value::Str(y)) => return x == y,
-                (Value::Obj(x), Value::Obj(y)) => {
-                    return Rc::ptr_eq(x, y) || x.equal(y.as_ref().as_ref());
-                }
-                _ => {
-                    if let (Some(x), Some(y)) = (a.as_f64(), b.as_f64()) {
-                        return if fuzz > 0.0 {
-                            (x - y).abs() <= fuzz
-                        } else {
-                            x == y
-                        };
+                _ => a.atom_equal(b, fuzz),
+            };
+            if !same {
+                return false;
+            }
+            match pending.pop() {
+                Some((x, y)) => (a, b) = (x, y),
+                None => return true,
+            }
+        }
+    }
+
+    /// `equal` when at most one side is a cons (then they differ).
+    fn atom_equal(&self, other: &Value, fuzz: f64) -> bool {
+        match (self, other) {
+            (Value::Str(x), Value::Str(y)) => x == y,
+            (Value::Obj(x), Value::Obj(y)) => Rc::ptr_eq(x, y) || x.equal(y.as_ref().as_ref()),
+            _ => {
+                if let (Some(x), Some(y)) = (self.as_f64(), other.as_f64()) {
+                    if fuzz > 0.0 {
+                        (x - y).abs() <= fuzz
+                    } else {
+                        x == y
                     }
-                    return a.is_eq(b);
+                } else {
+                    self.is_eq(other)
                 }
             }
         }
@@ -273,38 +295,47 @@ impl<'a> Iterator for ListIter<'a> {
     }
 }
 
+/// Nesting (through cars) beyond which `Debug` writes "(...)" instead of recursing.
+const MAX_DEBUG_DEPTH: usize = 200;
+
 impl fmt::Debug for Value {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Value::Nil => write!(f, "nil"),
-            Value::Int(i) => write!(f, "{i}"),
-            Value::Real(r) => write!(f, "{r:?}"),
-            Value::Str(s) => write!(f, "{s:?}"),
-            Value::Sym(s) => write!(f, "#sym{}", s.0),
-            Value::Cons(_) => {
-                write!(f, "(")?;
-                let mut first = true;
-                let mut cur = self;
-                while let Value::Cons(c) = cur {
-                    if !first {
-                        write!(f, " ")?;
-                    }
-                    first = false;
-                    write!(f, "{:?}", c.car)?;
-                    cur = &c.cdr;
+        debug_to(self, f, 0)
+    }
+}
+
+fn debug_to(v: &Value, f: &mut fmt::Formatter<'_>, depth: usize) -> fmt::Result {
+    match v {
+        Value::Nil => write!(f, "nil"),
+        Value::Int(i) => write!(f, "{i}"),
+        Value::Real(r) => write!(f, "{r:?}"),
+        Value::Str(s) => write!(f, "{s:?}"),
+        Value::Sym(s) => write!(f, "#sym{}", s.0),
+        Value::Cons(_) if depth >= MAX_DEBUG_DEPTH => write!(f, "(...)"),
+        Value::Cons(_) => {
+            write!(f, "(")?;
+            let mut first = true;
+            let mut cur = v;
+            while let Value::Cons(c) = cur {
+                if !first {
+                    write!(f, " ")?;
                 }
-                if !cur.is_nil() {
-                    write!(f, " . {cur:?}")?;
-                }
-                write!(f, ")")
+                first = false;
+                debug_to(&c.car, f, depth + 1)?;
+                cur = &c.cdr;
             }
-            Value::Subr(b) => write!(f, "#<SUBR {}>", b.name),
-            Value::Func(_) => write!(f, "#<USUBR>"),
-            Value::Obj(o) => {
-                let mut s = String::new();
-                o.print(&mut s)?;
-                f.write_str(&s)
+            if !cur.is_nil() {
+                write!(f, " . ")?;
+                debug_to(cur, f, depth + 1)?;
             }
+            write!(f, ")")
+        }
+        Value::Subr(b) => write!(f, "#<SUBR {}>", b.name),
+        Value::Func(_) => write!(f, "#<USUBR>"),
+        Value::Obj(o) => {
+            let mut s = String::new();
+            o.print(&mut s)?;
+            f.write_str(&s)
         }
     }
 }
@@ -331,6 +362,45 @@ mod tests {
             n = Value::cons(n, Value::Nil);
         }
         drop(n);
+    }
+
+    /// `(((...)))` a million levels deep through the car, ending in `x`.
+    fn nested(depth: usize, x: Value) -> Value {
+        let mut n = Value::list([x]);
+        for _ in 0..depth {
+            n = Value::cons(n, Value::Nil);
+        }
+        n
+    }
+
+    #[test]
+    fn equal_on_deep_nesting_does_not_recurse() {
+        let a = nested(1_000_000, Value::Int(1));
+        let b = nested(1_000_000, Value::Real(1.0));
+        let c = nested(1_000_000, Value::Int(2));
+        assert!(a.equal(&b, 0.0));
+        assert!(!a.equal(&c, 0.0));
+        assert!(!a.equal(&nested(999_999, Value::Int(1)), 0.0));
+        let s = format!("{a:?}");
+        assert!(s.starts_with("((((") && s.contains("(...)"), "{}", &s[..50]);
+    }
+
+    #[test]
+    fn equal_compares_cars_and_tails() {
+        let l = |v: Vec<Value>| Value::list(v);
+        let a = l(vec![l(vec![Value::Int(1), Value::str("a")]), Value::Int(3)]);
+        let b = l(vec![l(vec![Value::Int(1), Value::str("a")]), Value::Int(3)]);
+        let c = l(vec![l(vec![Value::Int(1), Value::str("b")]), Value::Int(3)]);
+        let d = l(vec![l(vec![Value::Int(1), Value::str("a")]), Value::Int(4)]);
+        let e = l(vec![Value::Int(1), Value::Int(3)]);
+        assert!(a.equal(&b, 0.0));
+        assert!(!a.equal(&c, 0.0));
+        assert!(!a.equal(&d, 0.0));
+        assert!(!a.equal(&e, 0.0));
+        assert!(!e.equal(&a, 0.0));
+        let dotted = Value::cons(Value::Int(1), Value::Int(2));
+        assert!(dotted.equal(&Value::cons(Value::Int(1), Value::Real(2.0)), 0.0));
+        assert!(!dotted.equal(&Value::list([Value::Int(1), Value::Int(2)]), 0.0));
     }
 
     #[test]

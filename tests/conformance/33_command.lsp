@@ -138,8 +138,27 @@
 (command "ZOOM" "E")
 ;=> nil
 (command "FOO")
-;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT)
+;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT)
 (command "LINE" '(0 0) "abc")
 ;!! LINE: expected a point, "C" (close, after two segments), "U" or "", got "abc"
 (command "LINE" '(0 0) pause)
 ;!! command: PAUSE waits for the user, and there is none in a headless run
+;; CLAYER set by setvar is where commands draw.
+(command "LAYER" "N" "Via-setvar" "")
+(setvar "CLAYER" "Via-setvar")
+(command "LINE" '(0 0) '(1 0) "")
+(g 8)
+;=> "Via-setvar"
+;; TEXT: point, height, rotation (degrees), the string as typed; UCS World.
+(command "TEXT" "1,2" 3.5 90 "12")
+(list (g 10) (g 40) (g 50) (g 1))
+;=> ((1.0 2.0 0.0) 3.5 1.5708 "12")
+(command "_.TEXT" "_J" "_MC" '(0 0) "" "" "Hi")
+(list (g 40) (g 50) (g 1))
+;=> (2.5 0.0 "Hi")
+(command "UCS" "_W")
+;=> nil
+(command "UCS" "OB" (entlast))
+;!! UCS: only the World UCS exists in lispcad ("W"), got "OB"
+(command "PLINE" '(0 0) '(10 0) "A" '(5 0))
+;!! PLINE: the arc end point lies straight behind the tangent direction; no tangent arc reaches it

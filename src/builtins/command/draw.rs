@@ -6,7 +6,7 @@
 //! the chord, the included angle is 2φ, the bulge tan(φ/2), and the tangent at the arc's end is
 //! the chord direction turned by φ.
 
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
@@ -509,12 +509,23 @@ fn arc(it: &mut Interp, st: &mut ArcStep, input: &Input) -> Result<bool, Exn> {
     Ok(false)
 }
 
-/// The bulge of the arc leaving `a` along `tangent` and ending at `b`, and the tangent at `b`.
-fn tangent_arc(a: DVec2, b: DVec2, tangent: DVec2) -> (f64, DVec2) {
+/// The bulge of the arc leaving `a` along `tangent` and ending at `b`, and the tangent at `b`;
+/// None when `b` lies straight behind `a` (no finite arc is tangent there).
+fn tangent_arc(a: DVec2, b: DVec2, tangent: DVec2) -> Option<(f64, DVec2)> {
     let chord = b - a;
     let phi = tangent.perp_dot(chord).atan2(tangent.dot(chord));
+    if PI - phi.abs() < 1e-9 {
+        return None;
+    }
     let end = DVec2::from_angle(angle2(chord) + phi);
-    ((phi / 2.0).tan(), end)
+    Some(((phi / 2.0).tan(), end))
+}
+
+fn behind() -> Exn {
+    cmd_err(
+        "PLINE",
+        "the arc end point lies straight behind the tangent direction; no tangent arc reaches it",
+    )
 }
 
 /// The bulge of the arc a → s → b and the tangent at b.
@@ -565,7 +576,7 @@ fn pline(it: &mut Interp, pl: &mut Pline, input: &Input) -> Result<bool, Exn> {
                 return Ok(false);
             }
             if pl.arc_mode {
-                let (bulge, t) = tangent_arc(a, b, tangent);
+                let (bulge, t) = tangent_arc(a, b, tangent).ok_or_else(behind)?;
                 push_vertex(pl, *p, bulge, t);
             } else {
                 push_vertex(pl, *p, 0.0, (b - a).normalize());
@@ -616,7 +627,8 @@ fn pline(it: &mut Interp, pl: &mut Pline, input: &Input) -> Result<bool, Exn> {
                     }
                     if pl.arc_mode {
                         let a = last.unwrap_or_default().truncate();
-                        let (bulge, _) = tangent_arc(a, pl.pts[0].truncate(), tangent);
+                        let (bulge, _) =
+                            tangent_arc(a, pl.pts[0].truncate(), tangent).ok_or_else(behind)?;
                         if let Some(b) = pl.bulges.last_mut() {
                             *b = bulge;
                         }
@@ -703,4 +715,73 @@ fn make_spline(it: &mut Interp, pts: &[DVec3], closed: bool) -> Result<(), Exn> 
         },
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::output::drawing::bulge_arc;
+    use proptest::prelude::*;
+
+    /// The unit tangent of a bulge arc at its start and end (direction of travel).
+    fn arc_tangents(a: DVec2, b: DVec2, bulge: f64) -> (DVec2, DVec2) {
+        let (_, _, a0, a1) = bulge_arc(a, b, bulge).expect("a proper arc");
+        let s = if bulge > 0.0 { 1.0 } else { -1.0 };
+        let t = |ang: f64| DVec2::new(-ang.sin(), ang.cos()) * s;
+        (t(a0), t(a1))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        /// A PLINE arc leaves its vertex along the incoming tangent and reports its true end
+        /// tangent, so consecutive arcs are tangent-continuous.
+        #[test]
+        fn tangent_arcs_are_tangent_continuous(
+            ax in -50.0..50.0f64, ay in -50.0..50.0f64,
+            len in 0.5..40.0f64, chord_turn in -3.1..3.1f64, t_ang in -3.2..3.2f64,
+        ) {
+            prop_assume!(chord_turn.abs() > 1e-3);
+            let a = DVec2::new(ax, ay);
+            let t = DVec2::from_angle(t_ang);
+            let b = a + DVec2::from_angle(t_ang + chord_turn) * len;
+            let (bulge, end_t) = tangent_arc(a, b, t).expect("not straight behind");
+            let (t0, t1) = arc_tangents(a, b, bulge);
+            prop_assert!((t0 - t).length() < 1e-9, "start tangent {t0} vs {t}");
+            prop_assert!((t1 - end_t).length() < 1e-9, "end tangent {t1} vs {end_t}");
+        }
+
+        /// The "S" (second point) arc passes through its second point.
+        #[test]
+        fn three_point_arc_passes_through_the_second_point(
+            cx in -20.0..20.0f64, cy in -20.0..20.0f64, r in 0.5..30.0f64,
+            a0 in 0.0..TAU, d1 in 0.05..3.0f64, d2 in 0.05..3.0f64, ccw in any::<bool>(),
+        ) {
+            let s = if ccw { 1.0 } else { -1.0 };
+            let c = DVec2::new(cx, cy);
+            let at = |ang: f64| c + DVec2::from_angle(ang) * r;
+            let (a, m, b) = (at(a0), at(a0 + s * d1), at(a0 + s * (d1 + d2)));
+            let (bulge, _) = three_point_arc(a, m, b).expect("not collinear");
+            let (cc, rr, _, _) = bulge_arc(a, b, bulge).expect("a proper arc");
+            prop_assert!((cc - c).length() < 1e-6 * r.max(1.0), "centre {cc} vs {c}");
+            prop_assert!((rr - r).abs() < 1e-6 * r.max(1.0));
+            prop_assert!((4.0 * bulge.atan() - s * (d1 + d2)).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn point_strings_follow_the_command_line() {
+        let last = DVec3::new(1.0, 2.0, 3.0);
+        let p = |s: &str| super::super::parse_point_str(s, last);
+        assert_eq!(p("4,5"), Some(DVec3::new(4.0, 5.0, 0.0)));
+        assert_eq!(p(" 4 , 5 , 6 "), Some(DVec3::new(4.0, 5.0, 6.0)));
+        assert_eq!(p("@1,1"), Some(DVec3::new(2.0, 3.0, 3.0)));
+        assert_eq!(p("@"), Some(last));
+        let q = p("@2<90").unwrap();
+        assert!((q - DVec3::new(1.0, 4.0, 3.0)).length() < 1e-15);
+        assert_eq!(p("abc"), None);
+        assert_eq!(p("1,2,3,4"), None);
+        assert_eq!(p("5"), None);
+        assert_eq!(p("1,nan"), None);
+    }
 }

@@ -68,8 +68,9 @@ const UNSUPPORTED: &[&str] = &[
     "DICTIONARY",
 ];
 
-/// The layer entmake uses when the list has no 8 group: CLAYER if that layer exists.
-fn current_layer(it: &mut Interp) -> String {
+/// The layer new entities go on (entmake without an 8 group, command): CLAYER if that layer
+/// exists (`setvar` may have changed it), else the drawing's current layer.
+pub fn current_layer(it: &mut Interp) -> String {
     let clayer = it
         .ext::<SysVars>()
         .get("CLAYER")

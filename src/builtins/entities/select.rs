@@ -20,6 +20,8 @@ enum Filter {
         code: i32,
         op: String,
         value: Value,
+        /// The upper-cased wild-card pattern of a string test, compiled once.
+        pattern: Option<WcPattern>,
     },
     And(Vec<Filter>),
     Or(Vec<Filter>),
@@ -88,6 +90,7 @@ fn parse_seq(g: &[(i32, Value)], pos: &mut usize, close: Option<&str>) -> Result
             code: *code,
             op: std::mem::replace(&mut op, "=".to_string()),
             value: v.clone(),
+            pattern: v.as_str().map(|p| WcPattern::new(&p.to_uppercase())),
         });
     }
     match close {
@@ -110,11 +113,18 @@ fn compare(op: &str, a: f64, b: f64) -> bool {
 }
 
 /// One group of the entity against one test value.
-fn test_value(it: &Interp, code: i32, op: &str, want: &Value, got: &Value) -> bool {
+fn test_value(
+    it: &Interp,
+    code: i32,
+    op: &str,
+    want: &Value,
+    pattern: Option<&WcPattern>,
+    got: &Value,
+) -> bool {
     match (want, got) {
-        (Value::Str(w), Value::Str(g)) => {
+        (Value::Str(_), Value::Str(g)) => {
             // Names compare case-insensitively: match upper against upper.
-            WcPattern::new(&w.to_uppercase()).matches(&g.to_uppercase())
+            pattern.is_some_and(|p| p.matches(&g.to_uppercase()))
         }
         (Value::Cons(_), Value::Cons(_)) => {
             let (Ok(w), Ok(g)) = (point_of(it, code, want), point_of(it, code, got)) else {
@@ -137,21 +147,35 @@ fn test_value(it: &Interp, code: i32, op: &str, want: &Value, got: &Value) -> bo
 
 fn eval(it: &Interp, f: &Filter, groups: &Groups) -> bool {
     match f {
-        Filter::Test { code, op, value } => {
+        Filter::Test {
+            code,
+            op,
+            value,
+            pattern,
+        } => {
             let mut any = false;
             for v in groups.all(*code) {
                 any = true;
-                if test_value(it, *code, op, value, v) {
+                if test_value(it, *code, op, value, pattern.as_ref(), v) {
                     return true;
                 }
             }
             // BYLAYER entities have no 62 group; (62 . 256) selects them.
-            !any && *code == 62 && test_value(it, 62, op, value, &Value::Int(256))
+            !any && *code == 62 && test_value(it, 62, op, value, None, &Value::Int(256))
         }
         Filter::And(v) => v.iter().all(|f| eval(it, f, groups)),
         Filter::Or(v) => v.iter().any(|f| eval(it, f, groups)),
         Filter::Xor(v) => eval(it, &v[0], groups) != eval(it, &v[1], groups),
         Filter::Not(f) => !eval(it, f, groups),
+    }
+}
+
+/// Whether every test of the filter is on the type, layer or colour.
+fn only_common_groups(f: &Filter) -> bool {
+    match f {
+        Filter::Test { code, .. } => matches!(code, 0 | 8 | 62),
+        Filter::And(v) | Filter::Or(v) | Filter::Xor(v) => v.iter().all(only_common_groups),
+        Filter::Not(f) => only_common_groups(f),
     }
 }
 
@@ -162,6 +186,23 @@ fn select(it: &mut Interp, filter: Option<&Filter>) -> Result<Vec<u64>, Exn> {
         return Ok(handles);
     };
     let mut out = Vec::new();
+    if only_common_groups(f) {
+        // The usual filters (type, layer, colour) need no full entget list per entity.
+        let rows: Vec<(u64, &'static str, String, Option<i16>)> = drawing(it)
+            .entities()
+            .map(|e| (e.handle, e.kind.type_name(), e.layer.clone(), e.color))
+            .collect();
+        for (handle, ty, layer, color) in rows {
+            let mut g = vec![(0, Value::str(ty)), (8, Value::Str(layer.into()))];
+            if let Some(c) = color {
+                g.push((62, Value::Int(c as i32)));
+            }
+            if eval(it, f, &Groups(g)) {
+                out.push(handle);
+            }
+        }
+        return Ok(out);
+    }
     for h in handles {
         let list = entity_list(it, Ename { handle: h, sub: 0 }).unwrap_or(Value::Nil);
         let g = Groups::parse(it, &list)?;

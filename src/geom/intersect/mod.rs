@@ -306,7 +306,9 @@ fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
 
 /// `(intersect a b)` / `(intersect-info a b)`: every hit of `a` and `b`, sorted by t1.
 /// `tol` (GEOMTOL, default 1e-9): points closer than it are one point, curves farther apart
-/// than it do not meet.
+/// than it do not meet; a non-finite or non-positive `tol` means GEOMTOL. Parameters are the
+/// curves' public t in [0, 1]; a hit at a closed curve's seam has t = 0. Swapping `a` and `b`
+/// gives the same points with t1 and t2 swapped (overlap pieces then run along the new `a`).
 pub fn intersect(a: &Curve, b: &Curve, tol: f64) -> Vec<Hit> {
     let mut out = Vec::new();
     intersect_into(a, b, tol, &mut out);

@@ -19,6 +19,10 @@ struct Ctx<'a> {
     b: &'a Bez,
     tol: f64,
     flat: f64,
+    /// Pieces below this size whose tangent cones still overlap are near-tangent.
+    graze: f64,
+    /// The common plane's normal when both pieces are coplanar.
+    plane: Option<DVec3>,
 }
 
 pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
@@ -51,9 +55,12 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
         b,
         tol,
         flat: (1e-9 * scale).max(tol),
+        graze: 1e-3 * scale,
+        plane: common_plane(a, b, tol),
     };
     let start = out.len();
     recurse(&ctx, a, (0.0, 1.0), b, (0.0, 1.0), 0, out);
+    merge_overlaps(a, out, start, tol);
     // Remove duplicates found from neighbouring box pairs.
     let mut i = start;
     while i < out.len() {
@@ -64,6 +71,54 @@ pub fn bez_bez(a: &Bez, b: &Bez, tol: f64, out: &mut LHits) {
             i += 1;
         }
     }
+}
+
+/// Join the shared stretches found by neighbouring sub-pieces into maximal overlap pieces
+/// (each the sub-curve of `a` over the joined range) and drop point hits inside them.
+fn merge_overlaps(a: &Bez, out: &mut LHits, start: usize, tol: f64) {
+    let mut ranges: smallvec::SmallVec<[(f64, f64, f64, f64); 4]> = smallvec::SmallVec::new();
+    for h in &out[start..] {
+        if let LKind::Overlap(_, se, ue) = &h.kind {
+            ranges.push((h.s, *se, h.u, *ue));
+        }
+    }
+    if ranges.is_empty() {
+        return;
+    }
+    ranges.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let mut merged: smallvec::SmallVec<[(f64, f64, f64, f64); 4]> = smallvec::SmallVec::new();
+    for r in ranges {
+        match merged.last_mut() {
+            Some(m) if r.0 <= m.1 + 1e-12 => {
+                if r.1 > m.1 {
+                    m.1 = r.1;
+                    m.3 = r.3;
+                }
+            }
+            _ => merged.push(r),
+        }
+    }
+    let inside = |s: f64| merged.iter().any(|m| s >= m.0 - 1e-12 && s <= m.1 + 1e-12);
+    let mut kept: LHits = out
+        .drain(start..)
+        .filter(|h| !matches!(h.kind, LKind::Overlap(..)) && !inside(h.s))
+        .collect();
+    for (s0, s1, u0, u1) in merged {
+        if (a.eval(s1) - a.eval(s0)).length() <= tol {
+            // A stretch shorter than tol is a touch point.
+            kept.push(LHit::new(s0, u0, a.eval(s0), LKind::Tangent));
+            continue;
+        }
+        let piece = Piece::Bez(a.subsegment(s0, s1));
+        kept.push(LHit::new(
+            s0,
+            u0,
+            a.eval(s0),
+            LKind::Overlap(Box::new(piece), s1, u1),
+        ));
+    }
+    kept.sort_by(|x, y| x.s.total_cmp(&y.s));
+    out.extend(kept);
 }
 
 fn coincident(a: &Bez, b: &Bez, tol: f64) -> bool {
@@ -149,6 +204,12 @@ fn recurse(
     }
     let (sa, sb) = (size(a), size(b));
     let tiny = sa <= ctx.flat && sb <= ctx.flat;
+    if let Some(n) = ctx.plane {
+        if sa.max(sb) <= ctx.graze && !cones_disjoint(a, b) {
+            graze(ctx, n, ra, rb, out);
+            return;
+        }
+    }
     if tiny || depth >= 60 || cones_disjoint(a, b) {
         // At most one intersection here (or tolerance-sized pieces): Newton from the chords.
         let (a0, a1) = (a.eval(0.0), a.eval(1.0));
@@ -181,6 +242,176 @@ fn recurse(
         let m = 0.5 * (rb.0 + rb.1);
         recurse(ctx, a, ra, &l, (rb.0, m), depth + 1, out);
         recurse(ctx, a, ra, &r, (m, rb.1), depth + 1, out);
+    }
+}
+
+/// The normal of the plane holding both pieces' control points (within `tol`), if any.
+fn common_plane(a: &Bez, b: &Bez, tol: f64) -> Option<DVec3> {
+    let pts: smallvec::SmallVec<[DVec3; 16]> = a.points().chain(b.points()).collect();
+    let o = pts[0];
+    // The widest pair of spanning directions from o gives a robust normal.
+    let far = pts.iter().copied().max_by(|p, q| {
+        (*p - o)
+            .length_squared()
+            .total_cmp(&(*q - o).length_squared())
+    })?;
+    let d1 = far - o;
+    let n = pts
+        .iter()
+        .map(|p| d1.cross(*p - o))
+        .max_by(|x, y| x.length_squared().total_cmp(&y.length_squared()))?
+        .try_normalize()?;
+    pts.iter()
+        .all(|p| (*p - o).dot(n).abs() <= tol)
+        .then_some(n)
+}
+
+/// Near-tangent coplanar sub-pieces: the signed gap g(s) from A(s) to B (along B's in-plane
+/// normal at the nearest point) is a smooth function of one variable. Sampled, its sign
+/// changes are crossings (bisection); a sampled local minimum of |g| is searched for its
+/// extremum (golden section), which either dips through zero — two crossings however close —
+/// or stays within `tol` of it — a tangency. This keeps a 7e-6 pair of roots apart where box
+/// subdivision alone would only see "within tolerance" everywhere.
+fn graze(ctx: &Ctx, n: DVec3, ra: (f64, f64), rb: (f64, f64), out: &mut LHits) {
+    let gap = |s: f64, u0: f64| -> (f64, f64) {
+        let p = ctx.a.eval(s);
+        let mut u = u0;
+        for _ in 0..30 {
+            let (q, d) = ctx.b.eval_deriv(u);
+            let dd = d.length_squared();
+            if dd == 0.0 {
+                break;
+            }
+            let step = (p - q).dot(d) / dd;
+            let nu = (u + step).clamp(0.0, 1.0);
+            if (nu - u).abs() < 1e-16 {
+                u = nu;
+                break;
+            }
+            u = nu;
+        }
+        let (q, d) = ctx.b.eval_deriv(u);
+        let side = n.cross(d).normalize_or_zero();
+        ((p - q).dot(side), u)
+    };
+    const K: usize = 16;
+    let mut ss = [0.0; K + 1];
+    let mut gs = [0.0; K + 1];
+    let mut us = [0.0; K + 1];
+    let mut u = 0.5 * (rb.0 + rb.1);
+    for i in 0..=K {
+        ss[i] = ra.0 + (ra.1 - ra.0) * i as f64 / K as f64;
+        let (g, nu) = gap(ss[i], u);
+        gs[i] = g;
+        us[i] = nu;
+        u = nu;
+    }
+    // The whole sub-piece within tol of B: a shared stretch (merged with its neighbours by
+    // `merge_overlaps`).
+    if gs.iter().all(|g| g.abs() <= ctx.tol) {
+        let p0 = ctx.a.eval(ra.0);
+        let p1 = ctx.a.eval(ra.1);
+        let (q0, q1) = (ctx.b.eval(us[0]), ctx.b.eval(us[K]));
+        if (p0 - q0).length() <= ctx.tol && (p1 - q1).length() <= ctx.tol {
+            out.push(LHit::new(
+                ra.0,
+                us[0],
+                p0,
+                LKind::Overlap(Box::new(Piece::Bez(ctx.a.clone())), ra.1, us[K]),
+            ));
+            return;
+        }
+    }
+    let push = |s: f64, u0: f64, tangent: bool, out: &mut LHits| {
+        let (_, u) = gap(s, u0);
+        let slack = 1e-9 * (rb.1 - rb.0);
+        if !(rb.0 - slack..=rb.1 + slack).contains(&u) {
+            return;
+        }
+        let (pa, pb) = (ctx.a.eval(s), ctx.b.eval(u));
+        if (pa - pb).length() > ctx.tol {
+            return;
+        }
+        let (ta, tb) = (ctx.a.deriv(s), ctx.b.deriv(u));
+        let parallel = ta.cross(tb).length() <= TANGENT_SIN * ta.length() * tb.length();
+        let kind = if tangent || parallel {
+            LKind::Tangent
+        } else {
+            LKind::Cross
+        };
+        out.push(LHit::new(s, u, (pa + pb) * 0.5, kind));
+    };
+    let root = |mut lo: f64, mut hi: f64, glo: f64, u0: f64| -> f64 {
+        for _ in 0..60 {
+            let m = 0.5 * (lo + hi);
+            let (gm, _) = gap(m, u0);
+            if (gm > 0.0) == (glo > 0.0) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+            if hi - lo <= 1e-16 {
+                break;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    for i in 0..=K {
+        if gs[i] == 0.0 {
+            // A sampled exact zero: a crossing if the gap changes sign across it.
+            let l = if i > 0 { gs[i - 1] } else { 0.0 };
+            let r = if i < K { gs[i + 1] } else { 0.0 };
+            push(ss[i], us[i], l * r >= 0.0, out);
+        } else if i < K && gs[i] * gs[i + 1] < 0.0 {
+            push(root(ss[i], ss[i + 1], gs[i], us[i]), us[i], false, out);
+        }
+    }
+    // Local minima of |g| without a sign change around them: look for the extremum.
+    for i in 0..=K {
+        let left = if i > 0 { gs[i - 1] } else { f64::INFINITY };
+        let right = if i < K { gs[i + 1] } else { f64::INFINITY };
+        let gi = gs[i];
+        if gi == 0.0 || !(gi.abs() <= left.abs() && gi.abs() <= right.abs()) {
+            continue;
+        }
+        if (i > 0 && left * gi < 0.0) || (i < K && right * gi < 0.0) {
+            continue;
+        }
+        let (mut lo, mut hi) = (ss[i.saturating_sub(1)], ss[(i + 1).min(K)]);
+        let sgn = gi.signum();
+        let f = |s: f64| sgn * gap(s, us[i]).0;
+        let phi = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut x1, mut x2) = (hi - phi * (hi - lo), lo + phi * (hi - lo));
+        let (mut f1, mut f2) = (f(x1), f(x2));
+        for _ in 0..100 {
+            if f1 < f2 {
+                hi = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = hi - phi * (hi - lo);
+                f1 = f(x1);
+            } else {
+                lo = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = lo + phi * (hi - lo);
+                f2 = f(x2);
+            }
+            if hi - lo <= 1e-16 {
+                break;
+            }
+        }
+        let se = 0.5 * (lo + hi);
+        let ge = f(se);
+        if ge < 0.0 {
+            // The gap dips through zero: a root on each side of the extremum.
+            let a0 = ss[i.saturating_sub(1)];
+            let a1 = ss[(i + 1).min(K)];
+            push(root(a0, se, gi, us[i]), us[i], false, out);
+            push(root(se, a1, -gi, us[i]), us[i], false, out);
+        } else if ge <= ctx.tol {
+            push(se, us[i], true, out);
+        }
     }
 }
 

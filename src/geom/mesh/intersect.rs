@@ -16,6 +16,10 @@
 //!    neighbouring pairs share it bit for bit and chaining is exact (paper 001 step 4). Touching
 //!    through vertices or along edges and coplanar facets fall under the tie-break (step 5).
 //!
+//! Known limit: where the meshes coincide with collinear shared edges (a region of overlap, not
+//! a curve) the translation tie-break cannot separate parallel edges and the result there may
+//! be fragments; a mesh against an identical copy gives no curve.
+//!
 //! The output is canonicalised by coordinates ([`chain_segments`]), so it does not depend on
 //! triangle or vertex order or on which mesh comes first.
 
@@ -87,6 +91,10 @@ pub(crate) struct Piece {
 
 /// The segments of every truly intersecting triangle pair (before chaining).
 pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
+    // A surface coincides with itself everywhere: a region, not a curve.
+    if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
+        return (Vec::new(), IntersectStats::default());
+    }
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
     // Which mesh the tie-break translates is chosen from the meshes' contents, not from the

@@ -176,6 +176,41 @@ impl Mesh {
         )
     }
 
+    /// The mesh under an affine map (move, rotate, scale, mirror). A map that reverses
+    /// orientation (negative determinant, e.g. a mirror) also reverses every triangle's winding,
+    /// so normals keep pointing to the same side of the surface.
+    pub fn transformed(&self, m: &glam::DMat4) -> Result<Mesh, MeshError> {
+        let vertices = self
+            .vertices
+            .iter()
+            .map(|&v| m.transform_point3(v))
+            .collect();
+        let triangles = if m.determinant() < 0.0 {
+            self.triangles.iter().map(|t| [t[0], t[2], t[1]]).collect()
+        } else {
+            self.triangles.clone()
+        };
+        Mesh::new(vertices, triangles)
+    }
+
+    /// Each undirected edge once, as vertex index pairs (lower index first), sorted — for
+    /// wireframe output.
+    pub fn edges(&self) -> Vec<[u32; 2]> {
+        let mut e: Vec<[u32; 2]> = self
+            .triangles
+            .iter()
+            .flat_map(|t| {
+                (0..3).map(move |i| {
+                    let (a, b) = (t[i], t[(i + 1) % 3]);
+                    [a.min(b), a.max(b)]
+                })
+            })
+            .collect();
+        e.sort_unstable();
+        e.dedup();
+        e
+    }
+
     /// Mesh with the triangles of `other` appended (vertices not merged).
     pub fn append(&self, other: &Mesh) -> Mesh {
         let off = self.vertices.len() as u32;

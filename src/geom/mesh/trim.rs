@@ -252,6 +252,7 @@ fn split_facet(
         }
     }
     let pos: HashMap<u32, DVec2> = nbrs.keys().map(|&k| (k, to2(verts[k as usize]))).collect();
+    bridge_inner_loops(&mut nbrs, &pos, &tri);
     for (k, n) in nbrs.iter_mut() {
         let o = pos[k];
         n.sort_by(|&u, &v| {
@@ -300,6 +301,100 @@ fn split_facet(
             }
         }
     }
+}
+
+/// Connects every part of the facet's graph that does not reach its boundary (a cut loop lying
+/// wholly inside the facet — paper 001 avoids it by refining the mesh) to the rest by a bridge
+/// edge that crosses nothing, nearest pairs first. The face tracer then walks the bridge twice
+/// (a keyhole polygon, as in ear clipping of polygons with holes), and the bridge is not a cut
+/// edge, so the flood fill crosses it.
+fn bridge_inner_loops(
+    nbrs: &mut HashMap<u32, Vec<u32>>,
+    pos: &HashMap<u32, DVec2>,
+    tri: &[u32; 3],
+) {
+    let mut reached: HashSet<u32> = HashSet::new();
+    let mut stack: Vec<u32> = tri
+        .iter()
+        .copied()
+        .filter(|v| nbrs.contains_key(v))
+        .collect();
+    while let Some(v) = stack.pop() {
+        if reached.insert(v) {
+            stack.extend(nbrs[&v].iter().copied().filter(|w| !reached.contains(w)));
+        }
+    }
+    let mut keys: Vec<u32> = nbrs.keys().copied().collect();
+    keys.sort_unstable();
+    for start in keys {
+        if reached.contains(&start) {
+            continue;
+        }
+        // This component.
+        let mut comp = Vec::new();
+        let mut seen: HashSet<u32> = HashSet::new();
+        let mut stack = vec![start];
+        while let Some(v) = stack.pop() {
+            if seen.insert(v) {
+                comp.push(v);
+                stack.extend(nbrs[&v].iter().copied().filter(|w| !seen.contains(w)));
+            }
+        }
+        let mut pairs: Vec<(f64, u32, u32)> = Vec::new();
+        for &v in &comp {
+            for &w in &reached {
+                pairs.push((pos[&v].distance_squared(pos[&w]), v, w));
+            }
+        }
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+        let edges: Vec<(u32, u32)> = nbrs
+            .iter()
+            .flat_map(|(&u, n)| n.iter().filter(move |&&w| u < w).map(move |&w| (u, w)))
+            .collect();
+        let bridge = pairs.into_iter().find(|&(_, v, w)| {
+            edges.iter().all(|&(a, b)| {
+                a == v
+                    || a == w
+                    || b == v
+                    || b == w
+                    || !segments_cross(pos[&v], pos[&w], pos[&a], pos[&b])
+            })
+        });
+        if let Some((_, v, w)) = bridge {
+            if let Some(n) = nbrs.get_mut(&v) {
+                n.push(w);
+            }
+            if let Some(n) = nbrs.get_mut(&w) {
+                n.push(v);
+            }
+        }
+        reached.extend(comp);
+    }
+}
+
+/// Whether the closed segments `ab` and `cd` share a point (exact orientation signs).
+fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+    use robust::{orient2d, Coord};
+    let o = |p: DVec2, q: DVec2, r: DVec2| {
+        orient2d(
+            Coord { x: p.x, y: p.y },
+            Coord { x: q.x, y: q.y },
+            Coord { x: r.x, y: r.y },
+        )
+    };
+    let (d1, d2, d3, d4) = (o(a, b, c), o(a, b, d), o(c, d, a), o(c, d, b));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+    {
+        return true;
+    }
+    let on = |p: DVec2, q: DVec2, r: DVec2| {
+        r.x >= p.x.min(q.x) && r.x <= p.x.max(q.x) && r.y >= p.y.min(q.y) && r.y <= p.y.max(q.y)
+    };
+    (d1 == 0.0 && on(a, b, c))
+        || (d2 == 0.0 && on(a, b, d))
+        || (d3 == 0.0 && on(c, d, a))
+        || (d4 == 0.0 && on(c, d, b))
 }
 
 /// The point of triangle `abc` closest to `p` (Ericson, Real-Time Collision Detection §5.1.5).

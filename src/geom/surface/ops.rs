@@ -12,8 +12,9 @@ use crate::geom::mesh::{intersect_meshes, section, Mesh, Polyline3};
 use crate::geom::ParamCurve;
 use glam::DVec3;
 
-/// Plane section of a surface. A cylinder is cut exactly ([`cylinder_section`]: circle,
-/// ellipse or rulings, sampled within `chord_tol`); other kinds through their mesh.
+/// Plane section of a surface. Exact (sampled within `chord_tol`) for a cylinder
+/// ([`cylinder_section`]: circle, ellipse or rulings), a sphere (a circle) and a surface of
+/// revolution cut across or through its axis; other kinds and planes through their mesh.
 pub fn surface_section(
     s: &Surface,
     plane_point: DVec3,
@@ -30,6 +31,39 @@ pub fn surface_section(
                 ));
             }
             Ok(cylinder_section(c, plane_point, plane_normal, tol))
+        }
+        Surface::Sphere(sp) => {
+            let n = plane_normal.normalize_or_zero();
+            if n == DVec3::ZERO || !plane_point.is_finite() {
+                return Err(SurfaceError::Invalid(
+                    "plane point and normal must be finite, the normal non-zero".into(),
+                ));
+            }
+            // Sphere ∩ plane: the circle about the centre's projection, radius √(r² − d²).
+            let d = n.dot(sp.center - plane_point);
+            let rad2 = sp.radius * sp.radius - d * d;
+            if rad2 < 0.0 {
+                return Ok(Vec::new());
+            }
+            let c = sp.center - n * d;
+            let rad = rad2.sqrt();
+            if rad <= tol {
+                return Ok(vec![Polyline3 {
+                    points: vec![c],
+                    closed: false,
+                }]);
+            }
+            let step = (2.0 * (1.0 - tol / rad).clamp(-1.0, 1.0).acos())
+                .clamp(1e-4, std::f64::consts::FRAC_PI_8);
+            let k = (std::f64::consts::TAU / step).ceil() as usize;
+            let arc = ArcData::circle(c, rad, n);
+            let points = (0..k)
+                .map(|i| arc.point(std::f64::consts::TAU * i as f64 / k as f64))
+                .collect();
+            Ok(vec![Polyline3 {
+                points,
+                closed: true,
+            }])
         }
         Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol) {
             Some(curves) => Ok(curves),

@@ -69,6 +69,10 @@ pub fn triangulate_polygon(points: &[DVec3], normal: DVec3) -> Vec<[u32; 3]> {
                     return false;
                 }
                 let p = p2[j as usize];
+                // A repeated corner (the two sides of a keyhole bridge) does not block.
+                if p == a || p == b || p == c {
+                    return false;
+                }
                 // Closed triangle test: a vertex on the ear's boundary blocks it too.
                 o2(a, b, p) >= 0.0 && o2(b, c, p) >= 0.0 && o2(c, a, p) >= 0.0
             });

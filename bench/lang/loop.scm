@@ -1,0 +1,10 @@
+;; 10,000,000 points on a circle: x = r cos a, y = r sin a; accumulate x*y (bench/lang/loop.lsp).
+(define r 2.0)
+(define step (/ (* 2 (acos -1.0)) 10000000.0))
+(let loop ((i 0) (acc 0.0))
+  (if (< i 10000000)
+      (let* ((a (* i step))
+             (x (* r (cos a)))
+             (y (* r (sin a))))
+        (loop (+ i 1) (+ acc (* x y))))
+      (begin (display acc) (newline))))
