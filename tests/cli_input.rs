@@ -327,3 +327,12 @@ fn getfiled_reads_a_file_name() {
         ]
     );
 }
+
+#[test]
+fn getdist_accepts_architectural_and_fractional_input() {
+    let got = values(
+        "(getdist) (getdist) (getdist) (getdist)",
+        "1'-6\"\n1 1/2\n3/4\n2,0\n4,0\n",
+    );
+    assert_eq!(got, ["18.0", "1.5", "0.75", "2.0"]);
+}

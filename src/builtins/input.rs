@@ -29,7 +29,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("getreal", "(getreal [prompt])", "Asks for a number; a real, a keyword, or nil on Enter.", 0, 1, getreal),
     builtin!("getint", "(getint [prompt])", "Asks for an integer in -32768..32767; an integer, a keyword, or nil on Enter.", 0, 1, getint),
     builtin!("getstring", "(getstring [allow-spaces] [prompt])", "Asks for text; without allow-spaces the answer ends at its first space; \"\" on Enter.", 0, 2, getstring),
-    builtin!("getdist", "(getdist [base] [prompt])", "Asks for a distance: a number, or a point whose distance from base (or from a second point) is taken.", 0, 2, getdist),
+    builtin!("getdist", "(getdist [base] [prompt])", "Asks for a distance: a number in any linear format (2.5, 1'-6\", 1 1/2), or a point whose distance from base (or from a second point) is taken.", 0, 2, getdist),
     builtin!("getangle", "(getangle [base] [prompt])", "Asks for an angle in degrees (or a point: the angle from base); radians relative to ANGBASE.", 0, 2, getangle),
     builtin!("getorient", "(getorient [base] [prompt])", "Like getangle but absolute: radians from east, counter-clockwise, whatever ANGBASE/ANGDIR.", 0, 2, getorient),
     builtin!("getfiled", "(getfiled title default ext flags)", "Asks for a file name (the dialog's answer, headless from --answers or the terminal); nil on Enter (cancel); ext is added when the name has none.", 4, 4, getfiled),
@@ -439,7 +439,7 @@ fn getdist(it: &mut Interp, a: &[Value]) -> LResult {
         Answer::Keyword(k) => return Ok(Value::str(&k)),
         Answer::Text(t) => t,
     };
-    let d = if let Some(x) = parse_real(&t) {
+    let d = if let Some(x) = parse_real(&t).or_else(|| unit_distance(it, &t)) {
         x
     } else if let Some(p) = parse_point(it, &t, base) {
         // A point: the distance from the base, or from this point to a second one.
@@ -463,6 +463,16 @@ fn getdist(it: &mut Interp, a: &[Value]) -> LResult {
     };
     check_sign("getdist", &ig, &t, d)?;
     Ok(Value::Real(d))
+}
+
+/// A distance typed in any of AutoCAD's linear formats (1'-6", 1 1/2, 3/4), as `distof` reads
+/// them.
+fn unit_distance(it: &mut Interp, text: &str) -> Option<f64> {
+    let distof = super::find("distof")?;
+    (distof.f)(it, &[Value::str(text)])
+        .ok()?
+        .as_f64()
+        .filter(|x| x.is_finite())
 }
 
 /// getangle and getorient: typed degrees or a point giving the direction from the base.
