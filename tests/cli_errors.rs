@@ -325,3 +325,15 @@ fn repeated_frames_are_collapsed_with_a_count() {
     assert!(a.is_some() && b.is_some() && c.is_some(), "{}", r.err);
     assert!(a < b && b < c, "{}", r.err);
 }
+
+#[test]
+fn errors_in_loaded_files_point_into_that_file() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("lf.lsp"), "(defun libf (x)\n  (/ x 0))\n").unwrap();
+    std::fs::write(dir.path().join("s.lsp"), "(load \"lf\")\n\n(libf 3)\n").unwrap();
+    let r = to_run(lispcad_in(dir.path(), &["run", "s.lsp"]));
+    assert_eq!(r.code, Some(1));
+    assert_eq!(r.message(), "divide by zero");
+    assert!(r.err.contains("lf.lsp:2:3]"), "{}", r.err);
+    assert!(r.err.contains("in (LIBF) called at s.lsp:3:1"), "{}", r.err);
+}

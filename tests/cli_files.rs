@@ -160,3 +160,49 @@ fn there_is_no_shell_escape() {
     assert!(err.contains("startapp is refused"), "{err}");
     assert!(!dir.path().join("pwned").exists());
 }
+
+#[test]
+fn vl_file_functions_respect_the_write_policy() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path();
+    std::fs::write(p.join("f1.txt"), "hello\n").unwrap();
+    std::fs::write(p.join("b.lsp"), "").unwrap();
+    let script = r#"
+(prin1 (list (vl-file-size "f1.txt") (vl-file-size ".") (vl-file-size "nope")))
+(prin1 (vl-directory-files "." "*.TXT" 1))
+(prin1 (list (vl-file-copy "f1.txt" "f2.txt") (vl-file-copy "f1.txt" "f2.txt")
+             (vl-file-copy "f1.txt" "f2.txt" T) (vl-file-size "f2.txt")))
+(prin1 (list (vl-file-rename "f2.txt" "f3.txt") (vl-file-rename "f2.txt" "f4.txt")
+             (vl-file-delete "f3.txt") (vl-file-delete "f3.txt")))
+(prin1 (list (vl-mkdir "d") (vl-file-directory-p "d") (vl-mkdir "d") (vl-file-directory-p "f1.txt")))
+(prin1 (vl-directory-files "." nil -1))
+(prin1 (findtrustedfile "b.lsp"))
+"#;
+    std::fs::write(p.join("s.lsp"), script).unwrap();
+    let (code, out, err) = run(p, &["run", "s.lsp"]);
+    assert_eq!(code, 0, "{err}");
+    let want_trusted = format!(
+        "{:?}",
+        p.canonicalize()
+            .unwrap()
+            .join("b.lsp")
+            .display()
+            .to_string()
+    );
+    assert_eq!(
+        out,
+        format!(
+            r#"(6 0 nil)("f1.txt")(6 nil 6 12)(T nil T nil)(T T nil nil)("." ".." "d"){want_trusted}"#
+        )
+    );
+    // Outside the script's directory: refused, and nothing is deleted.
+    let other = tempfile::tempdir().unwrap();
+    let victim = other.path().join("keep.txt");
+    std::fs::write(&victim, "x").unwrap();
+    let del = format!("(vl-file-delete {:?})", victim.display().to_string());
+    std::fs::write(p.join("d.lsp"), &del).unwrap();
+    let (code, _, err) = run(p, &["run", "d.lsp"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("file access refused"), "{err}");
+    assert!(victim.exists());
+}

@@ -39,8 +39,8 @@ fn values(forms: &str, answers: &str) -> Vec<String> {
 fn points_absolute_relative_and_polar() {
     let got = values(
         "(setq p (getpoint \"Base: \")) (getpoint p \"Next: \") (getpoint '(10 10) \"@\") \
-         (getpoint \"x\") (getpoint) (getpoint) (getpoint)",
-        "1,2\n@3,4\n@-1,0.5,2\n5,6,7\n@1,1\n2<0\n\n",
+         (getpoint \"x\") (getpoint) (getpoint) (getpoint) (getpoint) (getpoint) (getpoint)",
+        "1,2\n@3,4\n@-1,0.5,2\n5,6,7\n@1,1\n2<0\n\n#7,8\n*1, 2 ,3\n@\n",
     );
     assert_eq!(
         got,
@@ -53,6 +53,10 @@ fn points_absolute_relative_and_polar() {
             "(6.0 7.0 7.0)",
             "(2.0 0.0 0.0)",
             "nil",
+            "(7.0 8.0 0.0)",
+            "(1.0 2.0 3.0)",
+            // "@" alone: the last point
+            "(1.0 2.0 3.0)",
         ]
     );
 }
@@ -262,4 +266,73 @@ fn getangle_and_getorient_follow_the_reference_table() {
         got,
         ["nil", "0.0", "1.5708", "3.14159", "4.71239", "1.5708", "3.14159", "4.71239", "0.0"]
     );
+}
+
+/// Every batch row gets the whole answer list; without one a row fails instead of waiting.
+#[test]
+fn batch_rows_each_read_the_answers() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path();
+    std::fs::write(p.join("t.csv"), "L1\n1\n2\n").unwrap();
+    std::fs::write(p.join("a.txt"), "10\n").unwrap();
+    std::fs::write(
+        p.join("s.lsp"),
+        "(setq f (open (strcat \"r\" (itoa L1) \".txt\") \"w\")) (princ (* L1 (getreal)) f) (close f)\n",
+    )
+    .unwrap();
+    let o = lispcad(
+        p,
+        &[
+            "batch",
+            "s.lsp",
+            "--vary",
+            "t.csv",
+            "-o",
+            "out/{L1}.svg",
+            "--answers",
+            "a.txt",
+        ],
+    );
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert_eq!(std::fs::read_to_string(p.join("r1.txt")).unwrap(), "10.0");
+    assert_eq!(std::fs::read_to_string(p.join("r2.txt")).unwrap(), "20.0");
+    let o = lispcad(
+        p,
+        &["batch", "s.lsp", "--vary", "t.csv", "-o", "out/{L1}.svg"],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("getreal: no input available"));
+}
+
+#[test]
+fn getfiled_reads_a_file_name() {
+    let got = values(
+        "(getfiled \"Save\" \"\" \"dxf\" 1) (getfiled \"Save\" \"def.svg\" \"svg\" 1) \
+         (getfiled \"Open\" \"\" \"dxf\" 0) (getfiled \"Open\" \"\" \"\" 0) (getfiled \"Open\" \"\" \"dxf\" 0)",
+        "out\n\nx.dxf\nplain\n\n",
+    );
+    assert_eq!(
+        got,
+        [
+            "\"out.dxf\"",
+            "\"def.svg\"",
+            "\"x.dxf\"",
+            "\"plain\"",
+            "nil"
+        ]
+    );
+}
+
+#[test]
+fn getdist_accepts_architectural_and_fractional_input() {
+    let got = values(
+        "(getdist) (getdist) (getdist) (getdist)",
+        "1'-6\"\n1 1/2\n3/4\n2,0\n4,0\n",
+    );
+    assert_eq!(got, ["18.0", "1.5", "0.75", "2.0"]);
 }

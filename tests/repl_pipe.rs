@@ -175,3 +175,37 @@ fn interrupt_stops_a_running_evaluation_not_the_session() {
     assert_eq!(rest, "3\n");
     assert!(String::from_utf8_lossy(&o.stderr).contains("interrupted"));
 }
+
+#[test]
+fn max_steps_applies_to_each_entry() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, out, err) = repl_in(
+        dir.path(),
+        &["--max-steps", "5000"],
+        "(while t 1)\n(repeat 100 1)\n(progn (setq i 0) (repeat 3000 (setq i (1+ i))) i)\n",
+    );
+    assert_eq!(code, 0);
+    assert!(err.contains("--max-steps"), "{err}");
+    assert_eq!(lines(&out), ["1", "3000"]);
+}
+
+#[test]
+fn save_writes_the_drawing() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, out, err) = repl_in(
+        dir.path(),
+        &["--dxf-profile", "cam"],
+        "(draw (line '(0 0) '(10 5)))\n:save o.svg\n:save o.dxf\n:save o.txt\n",
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("wrote o.svg") && out.contains("wrote o.dxf"),
+        "{out}"
+    );
+    assert!(err.contains("o.txt"), "{err}");
+    let svg = std::fs::read_to_string(dir.path().join("o.svg")).unwrap();
+    assert!(svg.contains("<svg"), "{svg}");
+    let dxf = std::fs::read_to_string(dir.path().join("o.dxf")).unwrap();
+    // The CAM profile given on the command line is R12 (AC1009).
+    assert!(dxf.contains("AC1009"), "{dxf}");
+}

@@ -21,7 +21,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("polar", "(polar point angle distance)", "The point at angle (radians, in the XY plane) and distance from point; keeps the point's dimension and Z.", 3, 3, polar),
     builtin!("angle", "(angle p1 p2)", "The angle of the line p1->p2 in the XY plane, radians in [0, 2pi).", 2, 2, angle),
     builtin!("distance", "(distance p1 p2)", "The distance between two points; in the XY plane when either point is 2D.", 2, 2, distance),
-    builtin!("trans", "(trans point from to [disp])", "The point (or displacement when disp is non-nil) translated between coordinate systems: 0 WCS, 1 UCS, 2 DCS, 3 PSDCS, or an extrusion vector (OCS); always 3D.", 3, 4, trans),
+    builtin!("trans", "(trans point from to [disp])", "The point (or displacement when disp is non-nil) translated between coordinate systems: 0 WCS, 1 UCS, 2 DCS, 3 PSDCS, an extrusion vector or an entity name (OCS); always 3D.", 3, 4, trans),
 ];
 
 /// A point argument and whether it was given in 3D.
@@ -145,7 +145,7 @@ enum Cs {
     Ocs(DVec3, DVec3, DVec3),
 }
 
-fn coord_system(it: &Interp, v: &Value) -> Result<Cs, Exn> {
+fn coord_system(it: &mut Interp, v: &Value) -> Result<Cs, Exn> {
     match v {
         Value::Int(0..=3) => Ok(Cs::World),
         Value::Cons(_) => {
@@ -159,9 +159,28 @@ fn coord_system(it: &Interp, v: &Value) -> Result<Cs, Exn> {
             let (ax, ay) = arbitrary_axis(n);
             Ok(Cs::Ocs(ax, ay, n.normalize()))
         }
-        Value::Obj(o) if o.type_name() == "ENAME" => Err(err(
-            "trans: entity-name coordinate systems are not supported yet (give the extrusion vector)",
-        )),
+        // An entity's coordinate system is its OCS: the extrusion (group 210, default +Z).
+        Value::Obj(o) if o.type_name() == "ENAME" => {
+            let entget = super::find("entget").ok_or_else(|| err("trans: no entity support"))?;
+            let data = (entget.f)(it, std::slice::from_ref(v))?;
+            if data.is_nil() {
+                return Err(err(format!(
+                    "bad argument value: no entity {}",
+                    it.prin1_string(v)
+                )));
+            }
+            let n = data
+                .iter()
+                .find(|g| matches!(g.car(), Value::Int(210)))
+                .and_then(|g| {
+                    let xyz: Vec<f64> = g.cdr().iter().filter_map(|x| x.as_f64()).collect();
+                    (xyz.len() == 3).then(|| DVec3::new(xyz[0], xyz[1], xyz[2]))
+                })
+                .filter(|n| n.length_squared() > 0.0)
+                .unwrap_or(DVec3::Z);
+            let (ax, ay) = arbitrary_axis(n);
+            Ok(Cs::Ocs(ax, ay, n.normalize()))
+        }
         Value::Int(_) => Err(err(format!(
             "bad argument value: coordinate system code {} (0 WCS, 1 UCS, 2 DCS, 3 PSDCS)",
             it.prin1_string(v)

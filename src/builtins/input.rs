@@ -6,7 +6,8 @@
 //! is an error naming `--answers`. AutoCAD re-prompts on an answer that `initget` forbids; a
 //! batch run has no one to ask again, so there such an answer is an error.
 //!
-//! Answer syntax is AutoCAD's command line: a point `x,y` or `x,y,z`, relative `@dx,dy[,dz]`
+//! Answer syntax is AutoCAD's command line: a point `x,y` or `x,y,z` (`#` or `*` before it
+//! marks absolute/world input), relative `@dx,dy[,dz]`
 //! (to the base point when given, else LASTPOINT), polar `d<a` / `@d<a` (a in degrees); a
 //! number as text; an empty line is Enter (nil).
 
@@ -28,9 +29,10 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("getreal", "(getreal [prompt])", "Asks for a number; a real, a keyword, or nil on Enter.", 0, 1, getreal),
     builtin!("getint", "(getint [prompt])", "Asks for an integer in -32768..32767; an integer, a keyword, or nil on Enter.", 0, 1, getint),
     builtin!("getstring", "(getstring [allow-spaces] [prompt])", "Asks for text; without allow-spaces the answer ends at its first space; \"\" on Enter.", 0, 2, getstring),
-    builtin!("getdist", "(getdist [base] [prompt])", "Asks for a distance: a number, or a point whose distance from base (or from a second point) is taken.", 0, 2, getdist),
+    builtin!("getdist", "(getdist [base] [prompt])", "Asks for a distance: a number in any linear format (2.5, 1'-6\", 1 1/2), or a point whose distance from base (or from a second point) is taken.", 0, 2, getdist),
     builtin!("getangle", "(getangle [base] [prompt])", "Asks for an angle in degrees (or a point: the angle from base); radians relative to ANGBASE.", 0, 2, getangle),
     builtin!("getorient", "(getorient [base] [prompt])", "Like getangle but absolute: radians from east, counter-clockwise, whatever ANGBASE/ANGDIR.", 0, 2, getorient),
+    builtin!("getfiled", "(getfiled title default ext flags)", "Asks for a file name (the dialog's answer, headless from --answers or the terminal); nil on Enter (cancel); ext is added when the name has none.", 4, 4, getfiled),
     builtin!("getkword", "(getkword [prompt])", "Asks for one of the keywords given to initget; returns the keyword as initget spelt it.", 0, 1, getkword),
 ];
 
@@ -41,6 +43,8 @@ pub struct InputState {
     pub answers: Option<VecDeque<String>>,
     /// Ask on the terminal when there is no answer list (the interactive REPL).
     pub terminal: bool,
+    /// Never ask the terminal, even when stdin is one (parallel batch rows).
+    pub no_terminal: bool,
     pending: Option<Initget>,
     /// The rest of a console line `read-char` has started (with its newline).
     chars: VecDeque<char>,
@@ -164,7 +168,7 @@ fn next_answer(it: &mut Interp, func: &str, prompt: Option<&str>) -> Result<Stri
             .pop_front()
             .ok_or_else(|| err(format!("{func}: no answers left in the --answers file")));
     }
-    if !st.terminal && !std::io::stdin().is_terminal() {
+    if st.no_terminal || !st.terminal && !std::io::stdin().is_terminal() {
         return Err(err(format!(
             "{func}: no input available (use --answers FILE)"
         )));
@@ -296,7 +300,10 @@ fn parse_real(t: &str) -> Option<f64> {
 
 /// A point typed at the command line, relative forms resolved against `base` (or LASTPOINT).
 fn parse_point(it: &mut Interp, t: &str, base: Option<DVec3>) -> Option<DVec3> {
+    // "#x,y" (absolute under dynamic input) and "*x,y" (world coordinates) are absolute
+    // points; headless, the UCS is the world, so both prefixes just mark absolute input.
     let t = t.trim();
+    let t = t.strip_prefix(['#', '*']).unwrap_or(t).trim_start();
     let (rel, body) = match t.strip_prefix('@') {
         Some(b) => (true, b.trim()),
         None => (false, t),
@@ -432,7 +439,7 @@ fn getdist(it: &mut Interp, a: &[Value]) -> LResult {
         Answer::Keyword(k) => return Ok(Value::str(&k)),
         Answer::Text(t) => t,
     };
-    let d = if let Some(x) = parse_real(&t) {
+    let d = if let Some(x) = parse_real(&t).or_else(|| unit_distance(it, &t)) {
         x
     } else if let Some(p) = parse_point(it, &t, base) {
         // A point: the distance from the base, or from this point to a second one.
@@ -456,6 +463,16 @@ fn getdist(it: &mut Interp, a: &[Value]) -> LResult {
     };
     check_sign("getdist", &ig, &t, d)?;
     Ok(Value::Real(d))
+}
+
+/// A distance typed in any of AutoCAD's linear formats (1'-6", 1 1/2, 3/4), as `distof` reads
+/// them.
+fn unit_distance(it: &mut Interp, text: &str) -> Option<f64> {
+    let distof = super::find("distof")?;
+    (distof.f)(it, &[Value::str(text)])
+        .ok()?
+        .as_f64()
+        .filter(|x| x.is_finite())
 }
 
 /// getangle and getorient: typed degrees or a point giving the direction from the base.
@@ -533,6 +550,39 @@ fn getkword(it: &mut Interp, a: &[Value]) -> LResult {
         Answer::Enter => Ok(Value::Nil),
         Answer::Keyword(k) => Ok(Value::str(&k)),
         Answer::Text(t) => other_input("getkword", &ig, &t, "invalid option keyword"),
+    }
+}
+
+fn getfiled(it: &mut Interp, a: &[Value]) -> LResult {
+    let title = it.string(&a[0])?.to_string();
+    let default = match &a[1] {
+        Value::Nil => String::new(),
+        v => it.string(v)?.to_string(),
+    };
+    let ext = match &a[2] {
+        Value::Nil => String::new(),
+        v => it.string(v)?.to_string(),
+    };
+    it.int(&a[3])?;
+    it.ext::<InputState>().pending = None;
+    let raw = next_answer(it, "getfiled", Some(&format!("{title}: ")))?;
+    let name = raw.trim();
+    let name = if name.is_empty() {
+        // Enter accepts the default when there is one, like OK in the dialog; else cancel.
+        if default.is_empty() {
+            return Ok(Value::Nil);
+        }
+        default.as_str()
+    } else {
+        name
+    };
+    // The dialog appends the filter's extension to a bare name ("" or "*" filter none).
+    let ext = ext.trim_start_matches('.');
+    let has_ext = std::path::Path::new(name).extension().is_some();
+    if !has_ext && !ext.is_empty() && ext != "*" && !ext.contains(';') {
+        Ok(Value::str(&format!("{name}.{ext}")))
+    } else {
+        Ok(Value::str(name))
     }
 }
 

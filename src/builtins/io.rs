@@ -27,6 +27,17 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("read-char", "(read-char [file])", "The code of the next character of a file, nil at end of file; without a file, of the console input (10 ends a line).", 0, 1, read_char),
     builtin!("write-char", "(write-char code [file])", "Writes one character; returns its code.", 1, 2, write_char),
     builtin!("findfile", "(findfile name)", "The full path of a file found in the script's directory or the current one, or nil.", 1, 1, findfile),
+    builtin!("findtrustedfile", "(findtrustedfile name)", "Like findfile (every location is trusted headless).", 1, 1, findfile),
+    builtin!("vl-filename-base", "(vl-filename-base path)", "The file name without directory and extension.", 1, 1, filename_base),
+    builtin!("vl-filename-directory", "(vl-filename-directory path)", "The directory part of a path (\"\" when there is none).", 1, 1, filename_directory),
+    builtin!("vl-filename-extension", "(vl-filename-extension path)", "The extension with its dot, or nil.", 1, 1, filename_extension),
+    builtin!("vl-file-size", "(vl-file-size path)", "The size of a file in bytes (0 for a directory), or nil if it does not exist.", 1, 1, file_size),
+    builtin!("vl-file-directory-p", "(vl-file-directory-p path)", "T if the path is a directory.", 1, 1, file_directory_p),
+    builtin!("vl-directory-files", "(vl-directory-files [dir [pattern [what]]])", "The sorted names in dir matching the pattern (* and ?); what -1: directories only, 1: files only, else both.", 0, 3, directory_files),
+    builtin!("vl-file-delete", "(vl-file-delete path)", "Deletes a file (where writing is allowed); T, or nil on failure.", 1, 1, file_delete),
+    builtin!("vl-file-rename", "(vl-file-rename old new)", "Renames a file (both where writing is allowed, new must not exist); T, or nil on failure.", 2, 2, file_rename),
+    builtin!("vl-file-copy", "(vl-file-copy source dest [append])", "Copies (or appends) a file to dest (where writing is allowed); the bytes copied, or nil on failure.", 2, 3, file_copy),
+    builtin!("vl-mkdir", "(vl-mkdir dir)", "Creates a directory (where writing is allowed); T, or nil on failure.", 1, 1, mkdir),
 ];
 
 /// Which directories a script may write below.
@@ -276,4 +287,158 @@ fn findfile(it: &mut Interp, a: &[Value]) -> LResult {
         }
         None => Value::Nil,
     })
+}
+
+/// A path argument relative to the script's directory, as `open` resolves it.
+fn path_arg(it: &Interp, v: &Value) -> Result<PathBuf, crate::lang::Exn> {
+    let name = it.string(v)?;
+    Ok(match &it.base_dir {
+        Some(b) if Path::new(name).is_relative() => b.join(name),
+        _ => PathBuf::from(name),
+    })
+}
+
+/// The path if the write policy allows it, else AutoLISP-style failure (nil) is not enough:
+/// a refused write is an error naming --allow-fs, as `open` reports it.
+fn writable(it: &mut Interp, v: &Value) -> Result<PathBuf, crate::lang::Exn> {
+    let path = path_arg(it, v)?;
+    if it.ext::<FsPolicy>().may_write(&path) {
+        Ok(path)
+    } else {
+        Err(err(format!(
+            "file access refused: {} is outside the script and output directories (use --allow-fs)",
+            path.display()
+        )))
+    }
+}
+
+/// Splits "dir/base.ext" the way Visual LISP does: both separators, the last dot of the name.
+fn split_filename(p: &str) -> (&str, &str, Option<&str>) {
+    let cut = p.rfind(['/', '\\']).map_or(0, |i| i + 1);
+    let (dir, name) = p.split_at(cut);
+    let dir = dir.trim_end_matches(['/', '\\']);
+    match name.rfind('.') {
+        Some(i) if i > 0 => (dir, &name[..i], Some(&name[i..])),
+        _ => (dir, name, None),
+    }
+}
+
+fn filename_base(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::str(split_filename(it.string(&a[0])?).1))
+}
+
+fn filename_directory(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::str(split_filename(it.string(&a[0])?).0))
+}
+
+fn filename_extension(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(split_filename(it.string(&a[0])?)
+        .2
+        .map_or(Value::Nil, Value::str))
+}
+
+fn file_size(it: &mut Interp, a: &[Value]) -> LResult {
+    let p = path_arg(it, &a[0])?;
+    Ok(match std::fs::metadata(p) {
+        Ok(m) if m.is_dir() => Value::Int(0),
+        Ok(m) => Value::Int(i32::try_from(m.len()).unwrap_or(i32::MAX)),
+        Err(_) => Value::Nil,
+    })
+}
+
+fn file_directory_p(it: &mut Interp, a: &[Value]) -> LResult {
+    Ok(Value::bool(path_arg(it, &a[0])?.is_dir()))
+}
+
+/// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive.
+fn glob(pat: &[char], name: &[char]) -> bool {
+    match pat.split_first() {
+        None => name.is_empty(),
+        Some(('*', rest)) => (0..=name.len()).any(|k| glob(rest, &name[k..])),
+        Some((p, rest)) => match name.split_first() {
+            Some((c, tail)) => (*p == '?' || p.eq_ignore_ascii_case(c)) && glob(rest, tail),
+            None => false,
+        },
+    }
+}
+
+fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
+    let dir = match a.first() {
+        Some(v) if v.truthy() => path_arg(it, v)?,
+        _ => it.base_dir.clone().unwrap_or_else(|| PathBuf::from(".")),
+    };
+    let pattern: Vec<char> = match a.get(1) {
+        Some(v) if v.truthy() => it.string(v)?.chars().collect(),
+        _ => vec!['*'],
+    };
+    let what = match a.get(2) {
+        Some(v) if v.truthy() => it.int(v)?,
+        _ => 0,
+    };
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        return Ok(Value::Nil);
+    };
+    let mut names: Vec<String> = entries
+        .filter_map(Result::ok)
+        .filter(|e| {
+            let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
+            match what {
+                -1 => is_dir,
+                1 => !is_dir,
+                _ => true,
+            }
+        })
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| glob(&pattern, &n.chars().collect::<Vec<_>>()))
+        .collect();
+    // Directory listings include "." and ".." in AutoCAD when directories are asked for.
+    if what != 1 && glob(&pattern, &['.']) {
+        names.push(".".into());
+        names.push("..".into());
+    }
+    names.sort();
+    Ok(Value::list(names.iter().map(|n| Value::str(n))))
+}
+
+fn file_delete(it: &mut Interp, a: &[Value]) -> LResult {
+    let p = writable(it, &a[0])?;
+    Ok(Value::bool(p.is_file() && std::fs::remove_file(p).is_ok()))
+}
+
+fn file_rename(it: &mut Interp, a: &[Value]) -> LResult {
+    let from = writable(it, &a[0])?;
+    let to = writable(it, &a[1])?;
+    Ok(Value::bool(
+        from.exists() && !to.exists() && std::fs::rename(from, to).is_ok(),
+    ))
+}
+
+fn file_copy(it: &mut Interp, a: &[Value]) -> LResult {
+    let from = path_arg(it, &a[0])?;
+    let to = writable(it, &a[1])?;
+    let append = a.get(2).is_some_and(Value::truthy);
+    let Ok(data) = std::fs::read(&from) else {
+        return Ok(Value::Nil);
+    };
+    // AutoCAD refuses to overwrite: copying onto an existing file fails unless appending.
+    let opened = if append {
+        std::fs::OpenOptions::new()
+            .append(true)
+            .create(true)
+            .open(&to)
+    } else {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&to)
+    };
+    Ok(match opened.and_then(|mut f| f.write_all(&data)) {
+        Ok(()) => Value::Int(i32::try_from(data.len()).unwrap_or(i32::MAX)),
+        Err(_) => Value::Nil,
+    })
+}
+
+fn mkdir(it: &mut Interp, a: &[Value]) -> LResult {
+    let p = writable(it, &a[0])?;
+    Ok(Value::bool(std::fs::create_dir(p).is_ok()))
 }

@@ -42,6 +42,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("zerop", "(zerop number)", "T if the number is zero.", 1, 1, zerop),
     builtin!("minusp", "(minusp number)", "T if the number is negative.", 1, 1, minusp),
     builtin!("numberp", "(numberp x)", "T if x is an integer or a real.", 1, 1, numberp),
+    builtin!("cvunit", "(cvunit value from to)", "Converts a number (or a list of numbers) between units of length, angle, area or volume, e.g. \"inch\" \"mm\"; nil if unknown or incompatible.", 3, 3, cvunit),
 ];
 
 /// Folds integer-or-real arithmetic: stays integer (wrapping) until a real appears.
@@ -443,4 +444,112 @@ fn minusp(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn numberp(_: &mut Interp, a: &[Value]) -> LResult {
     Ok(Value::bool(a[0].as_f64().is_some()))
+}
+
+/// The units `cvunit` knows (a subset of AutoCAD's acad.unt): (names, dimension, factor to the
+/// base unit). Length in metres, angle in radians; area and volume are length² and length³.
+const UNITS: &[(&[&str], u8, f64)] = &[
+    (
+        &[
+            "millimeter",
+            "millimeters",
+            "millimetre",
+            "millimetres",
+            "mm",
+        ],
+        1,
+        1e-3,
+    ),
+    (
+        &[
+            "centimeter",
+            "centimeters",
+            "centimetre",
+            "centimetres",
+            "cm",
+        ],
+        1,
+        1e-2,
+    ),
+    (
+        &["decimeter", "decimeters", "decimetre", "decimetres", "dm"],
+        1,
+        0.1,
+    ),
+    (&["meter", "meters", "metre", "metres", "m"], 1, 1.0),
+    (
+        &["kilometer", "kilometers", "kilometre", "kilometres", "km"],
+        1,
+        1e3,
+    ),
+    (
+        &["micron", "microns", "micrometer", "micrometers", "um"],
+        1,
+        1e-6,
+    ),
+    (&["inch", "inches", "in"], 1, 0.0254),
+    (&["foot", "feet", "ft"], 1, 0.3048),
+    (&["yard", "yards", "yd"], 1, 0.9144),
+    (&["mile", "miles", "mi"], 1, 1609.344),
+    (&["mil", "mils"], 1, 0.0000254),
+    (&["point", "points", "pt"], 1, 0.0254 / 72.0),
+    (&["radian", "radians", "rad"], 2, 1.0),
+    (
+        &["degree", "degrees", "deg"],
+        2,
+        std::f64::consts::PI / 180.0,
+    ),
+    (
+        &["grad", "grads", "gradian", "gradians", "grd"],
+        2,
+        std::f64::consts::PI / 200.0,
+    ),
+    (
+        &["circle", "circles", "revolution", "revolutions", "rev"],
+        2,
+        std::f64::consts::TAU,
+    ),
+];
+
+/// (dimension, factor) of a unit name: "inch", "sq inch", "cu mm"; case-insensitive.
+fn unit(name: &str) -> Option<(u8, f64)> {
+    let n = name.trim().to_lowercase();
+    let (power, base) = if let Some(b) = n.strip_prefix("sq ").or(n.strip_prefix("square ")) {
+        (2, b.trim())
+    } else if let Some(b) = n.strip_prefix("cu ").or(n.strip_prefix("cubic ")) {
+        (3, b.trim())
+    } else {
+        (1, n.as_str())
+    };
+    let &(_, dim, f) = UNITS.iter().find(|(names, _, _)| names.contains(&base))?;
+    if power > 1 && dim != 1 {
+        return None;
+    }
+    // Area and volume are separate dimensions of length.
+    Some((
+        if power == 1 { dim } else { 10 + power },
+        f.powi(power as i32),
+    ))
+}
+
+fn cvunit(it: &mut Interp, a: &[Value]) -> LResult {
+    let from = it.string(&a[1])?.to_string();
+    let to = it.string(&a[2])?.to_string();
+    let (Some((d1, f1)), Some((d2, f2))) = (unit(&from), unit(&to)) else {
+        return Ok(Value::Nil);
+    };
+    if d1 != d2 {
+        return Ok(Value::Nil);
+    }
+    let k = f1 / f2;
+    match &a[0] {
+        Value::Cons(_) => {
+            let mut out = Vec::new();
+            for x in a[0].iter() {
+                out.push(Value::Real(it.num(x)? * k));
+            }
+            Ok(Value::list(out))
+        }
+        v => Ok(Value::Real(it.num(v)? * k)),
+    }
 }

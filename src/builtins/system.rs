@@ -73,6 +73,118 @@ pub static BUILTINS: &[Builtin] = &[
         MANY,
         setq_default
     ),
+    builtin!(
+        "graphscr",
+        "(graphscr)",
+        "Accepted for compatibility (no screen headless); returns nil.",
+        0,
+        0,
+        noop
+    ),
+    builtin!(
+        "textscr",
+        "(textscr)",
+        "Accepted for compatibility (no screen headless); returns nil.",
+        0,
+        0,
+        noop
+    ),
+    builtin!(
+        "textpage",
+        "(textpage)",
+        "Accepted for compatibility (no screen headless); returns nil.",
+        0,
+        0,
+        noop
+    ),
+    builtin!(
+        "redraw",
+        "(redraw [ename [mode]])",
+        "Accepted for compatibility (no screen headless); returns nil.",
+        0,
+        2,
+        noop
+    ),
+    builtin!(
+        "setfunhelp",
+        "(setfunhelp c:name [file topic command])",
+        "Accepted for compatibility (no help files headless); returns nil.",
+        1,
+        4,
+        noop
+    ),
+    builtin!(
+        "vl-acad-defun",
+        "(vl-acad-defun 'function)",
+        "Accepted for compatibility (every function is visible); returns nil.",
+        1,
+        1,
+        noop
+    ),
+    builtin!(
+        "vl-acad-undefun",
+        "(vl-acad-undefun 'function)",
+        "Accepted for compatibility; returns nil.",
+        1,
+        1,
+        noop
+    ),
+    builtin!(
+        "acad-push-dbmod",
+        "(acad-push-dbmod)",
+        "Accepted for compatibility; returns nil.",
+        0,
+        0,
+        noop
+    ),
+    builtin!(
+        "acad-pop-dbmod",
+        "(acad-pop-dbmod)",
+        "Accepted for compatibility; returns nil.",
+        0,
+        0,
+        noop
+    ),
+    builtin!(
+        "trace",
+        "(trace function...)",
+        "Accepted for compatibility (no tracing headless); returns the last function name.",
+        0,
+        MANY,
+        last_arg
+    ),
+    builtin!(
+        "untrace",
+        "(untrace function...)",
+        "Accepted for compatibility; returns the last function name.",
+        0,
+        MANY,
+        last_arg
+    ),
+    builtin!(
+        "vl-doc-set",
+        "(vl-doc-set 'sym value)",
+        "Sets a symbol in the document namespace (the one namespace headless); returns the value.",
+        2,
+        2,
+        doc_set
+    ),
+    builtin!(
+        "vl-doc-ref",
+        "(vl-doc-ref 'sym)",
+        "The value of a symbol in the document namespace (the one namespace headless).",
+        1,
+        1,
+        doc_ref
+    ),
+    builtin!(
+        "vl-propagate",
+        "(vl-propagate 'sym)",
+        "Copies a symbol's value to every document (there is one headless); returns nil.",
+        1,
+        1,
+        noop
+    ),
 ];
 
 /// The system variable table of one interpreter.
@@ -299,6 +411,23 @@ fn ver(_: &mut Interp, _: &[Value]) -> LResult {
 
 fn noop(_: &mut Interp, _: &[Value]) -> LResult {
     Ok(Value::Nil)
+}
+
+fn last_arg(_: &mut Interp, a: &[Value]) -> LResult {
+    Ok(a.last().cloned().unwrap_or(Value::Nil))
+}
+
+fn doc_set(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.symbol(&a[0])?;
+    let name = it.syms.name(s).to_string();
+    it.set_global(&name, a[1].clone());
+    Ok(a[1].clone())
+}
+
+fn doc_ref(it: &mut Interp, a: &[Value]) -> LResult {
+    let s = it.symbol(&a[0])?;
+    let name = it.syms.name(s).to_string();
+    Ok(it.global(&name))
 }
 
 fn getenv(it: &mut Interp, a: &[Value]) -> LResult {

@@ -362,6 +362,8 @@ impl Job<'_> {
                 Ok(it) => it,
                 Err(m) => return Outcome::Failed(m),
             };
+            // Rows run in parallel: none of them may wait on the terminal.
+            it.ext::<crate::builtins::input::InputState>().no_terminal = true;
             it.syms = syms.clone();
             it.sync_cells();
             it.add_source(self.name, self.text);

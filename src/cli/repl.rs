@@ -112,6 +112,7 @@ pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
             return super::EXIT_USAGE;
         }
     };
+    it.ext::<ReplOptions>().0 = common.clone();
     for f in files {
         if let Err(e) = it.load_file(&f.display().to_string()) {
             diag::print_error(&it, &e);
@@ -196,6 +197,15 @@ fn piped(it: &mut Interp) -> i32 {
     EXIT_OK
 }
 
+/// The command-line options the REPL was started with: each entry gets the `--max-steps`
+/// budget afresh, and `:save`/`:preview` write with the given DXF profile and tolerances.
+#[derive(Default)]
+struct ReplOptions(Common);
+
+fn options(it: &mut Interp) -> Common {
+    it.ext::<ReplOptions>().0.clone()
+}
+
 /// The file `:preview` rewrites after every evaluation.
 #[derive(Default)]
 struct Preview(Option<PathBuf>);
@@ -204,9 +214,8 @@ fn refresh_preview(it: &mut Interp) {
     let Some(path) = it.ext::<Preview>().0.clone() else {
         return;
     };
-    if let Err(msg) =
-        crate::builtins::write_outputs(it, std::slice::from_ref(&path), &Common::default())
-    {
+    let common = options(it);
+    if let Err(msg) = crate::builtins::write_outputs(it, std::slice::from_ref(&path), &common) {
         eprintln!("preview: {msg}");
     }
 }
@@ -219,7 +228,8 @@ fn entry(it: &mut Interp, text: &str) -> bool {
     }
     it.interrupt
         .store(false, std::sync::atomic::Ordering::Relaxed);
-    it.set_max_steps(None);
+    let budget = options(it).max_steps;
+    it.set_max_steps(budget);
     let r = it.eval_source("<repl>", text);
     it.flush_out();
     match r {
@@ -265,7 +275,7 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
             Err(e) => eprintln!("{}", diag::render_error(it, &e)),
         },
         "save" => {
-            let common = Common::default();
+            let common = options(it);
             match crate::builtins::write_outputs(it, &[PathBuf::from(arg)], &common) {
                 Ok(()) => println!("wrote {arg}"),
                 Err(msg) => eprintln!("error: {msg}"),

@@ -152,3 +152,12 @@
 ;!! bad argument value: extrusion vector (0 0 0) is zero
 (trans "p" 0 1)
 ;!! bad argument type: 2D/3D point: "p"
+;; an entity name is its OCS (group 210, +Z when absent)
+(progn (entmake '((0 . "CIRCLE") (10 1.0 2.0 3.0) (40 . 1.0) (210 0.0 0.0 -1.0))) (setq oc (entlast)) nil)
+;=> nil
+(trans '(1 2 3) oc 0)
+;=> (-1.0 2.0 -3.0)
+(trans '(-1 2 -3) 0 oc)
+;=> (1.0 2.0 3.0)
+(progn (entmake '((0 . "LINE") (10 0 0 0) (11 1 1 0))) (trans '(1 2 3) 0 (entlast)))
+;=> (1.0 2.0 3.0)
