@@ -159,7 +159,6 @@ fn layer(it: &mut Interp, a: &[Value]) -> LResult {
         }
     };
     drawing(it).use_layer(&name, color).map_err(draw_err)?;
-    it.ext::<SysVars>().put("CLAYER", Value::str(&name));
     Ok(a[0].clone())
 }
 
@@ -213,7 +212,6 @@ fn save(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn clear_drawing(it: &mut Interp, _: &[Value]) -> LResult {
     drawing(it).clear();
-    it.ext::<SysVars>().put("CLAYER", Value::str("0"));
     Ok(Value::Nil)
 }
 

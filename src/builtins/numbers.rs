@@ -385,21 +385,15 @@ fn chain(it: &Interp, a: &[Value], ok: fn(std::cmp::Ordering) -> bool) -> LResul
     Ok(Value::T)
 }
 
-fn num_eq(it: &mut Interp, a: &[Value]) -> LResult {
-    // (= 1 "1") is nil, not an error.
+fn num_eq(_: &mut Interp, a: &[Value]) -> LResult {
+    // Numbers compare by value, strings by content; anything else as `eq` does, as in
+    // AutoCAD: (= 1 "1") and (= '(1) '(1)) are nil, (= 'a 'a) is T, none is an error.
     for w in a.windows(2) {
         let same = match (&w[0], &w[1]) {
             (Value::Str(p), Value::Str(q)) => p == q,
             (p, q) => match (p.as_f64(), q.as_f64()) {
                 (Some(x), Some(y)) => x == y,
-                _ if p.as_str().is_some() || q.as_str().is_some() => false,
-                _ => {
-                    return Err(bad_arg(
-                        it,
-                        "numberp",
-                        if p.as_f64().is_none() { p } else { q },
-                    ))
-                }
+                _ => p.is_eq(q),
             },
         };
         if !same {

@@ -216,7 +216,6 @@ impl Default for SysVars {
         put("DXFPROFILE", Value::str("CAD"));
         put("CAMTOL", Value::Real(0.01));
         put("CHORDTOL", Value::Real(0.01));
-        put("CLAYER", Value::str("0"));
         put("TEXTSIZE", Value::Real(2.5));
         put(
             "VIEWDIR",
@@ -292,6 +291,13 @@ fn getvar(it: &mut Interp, a: &[Value]) -> LResult {
     if name == "CDATE" {
         return Ok(Value::Real(date_now()));
     }
+    if name == "CLAYER" {
+        let layer = it
+            .ext::<crate::output::Drawing>()
+            .current_layer()
+            .to_string();
+        return Ok(Value::str(&layer));
+    }
     Ok(it
         .ext::<SysVars>()
         .get(&name)
@@ -305,6 +311,16 @@ fn setvar(it: &mut Interp, a: &[Value]) -> LResult {
     let rejected = || err(format!("AutoCAD variable setting rejected: {shown}"));
     if READ_ONLY.contains(&name.as_str()) {
         return Err(rejected());
+    }
+    if name == "CLAYER" {
+        // The current layer is the drawing's: it must exist, as in AutoCAD.
+        let layer = it.string(&a[1])?.to_string();
+        let d = it.ext::<crate::output::Drawing>();
+        if d.layer(&layer).is_none() {
+            return Err(rejected());
+        }
+        d.use_layer(&layer, None).map_err(|e| err(e.to_string()))?;
+        return Ok(a[1].clone());
     }
     let vars = it.ext::<SysVars>();
     let Some(old) = vars.get(&name) else {

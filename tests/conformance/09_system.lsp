@@ -30,3 +30,14 @@
 ;=> "CAR"
 (numberp (vl-position "CAR" (atoms-family 1)))
 ;=> T
+(getvar "CLAYER")
+;=> "0"
+(layer "PARTS" 3)
+(getvar "CLAYER")
+;=> "PARTS"
+(setvar "CLAYER" "0")
+;=> "0"
+(getvar "CLAYER")
+;=> "0"
+(setvar "CLAYER" "NO-SUCH-LAYER")
+;!! AutoCAD variable setting rejected: "CLAYER" "NO-SUCH-LAYER"

@@ -3,7 +3,6 @@
 //! existing layers; `""` ends the command.
 
 use super::{cmd_err, unexpected, Input, Pending, Step};
-use crate::builtins::system::SysVars;
 use crate::builtins::text::wcmatch::WcPattern;
 use crate::lang::error::Exn;
 use crate::lang::{Interp, Value};
@@ -47,8 +46,6 @@ fn set_current(it: &mut Interp, name: &str) -> Result<(), Exn> {
     it.ext::<Drawing>()
         .use_layer(name, None)
         .map_err(|e| cmd_err("LAYER", e))?;
-    let exact = it.ext::<Drawing>().current_layer().to_string();
-    it.ext::<SysVars>().put("CLAYER", Value::str(&exact));
     Ok(())
 }
 

@@ -68,18 +68,10 @@ const UNSUPPORTED: &[&str] = &[
     "DICTIONARY",
 ];
 
-/// The layer new entities go on (entmake without an 8 group, command): CLAYER if that layer
-/// exists (`setvar` may have changed it), else the drawing's current layer.
+/// The layer new entities go on (entmake without an 8 group, command): the drawing's current
+/// layer, which is what CLAYER reads and sets.
 pub fn current_layer(it: &mut Interp) -> String {
-    let clayer = it
-        .ext::<SysVars>()
-        .get("CLAYER")
-        .and_then(|v| v.as_str().map(str::to_string));
-    let d = drawing(it);
-    match clayer {
-        Some(c) if d.layer(&c).is_some() => c,
-        _ => d.current_layer().to_string(),
-    }
+    drawing(it).current_layer().to_string()
 }
 
 /// The entity type of a list: the first group, or the second after a -1.
