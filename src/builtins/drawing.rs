@@ -52,8 +52,10 @@ pub fn curve_entity(c: &Curve) -> EntityKind {
         },
         Curve::Polyline(p) => polyline_entity(p),
         Curve::Spline(s) => EntityKind::Spline {
-            curve: s.to_bspline(),
-            fit_points: s.points.clone(),
+            curve: s
+                .to_bspline_simple_knots()
+                .unwrap_or_else(|| s.to_bspline()),
+            fit_points: Vec::new(),
             closed: s.closed,
         },
         Curve::BSpline(b) => EntityKind::Spline {

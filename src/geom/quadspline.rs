@@ -50,6 +50,49 @@ impl QuadSpline {
         }
     }
 
+    /// The same curve as a degree-2 B-spline with simple interior knots: the control points are
+    /// the segments' middle controls (plus the two ends), and the knot intervals are chosen so
+    /// each joint divides its two neighbouring controls in the joint's own ratio
+    /// (h_next / h_prev = |C_next − J| / |J − C_prev|). Half the control points of
+    /// `to_bspline`, and readers that mishandle repeated knots (LibreCAD) stay well-behaved.
+    /// `None` when a joint does not lie strictly between its controls (a degenerate leg).
+    pub fn to_bspline_simple_knots(&self) -> Option<BSpline> {
+        let n = self.segments.len();
+        let mut h = Vec::with_capacity(n);
+        h.push(1.0);
+        for i in 0..n.saturating_sub(1) {
+            let (c0, j, c1) = (
+                self.segments[i][1],
+                self.segments[i][2],
+                self.segments[i + 1][1],
+            );
+            let (a, b) = (j.distance(c0), c1.distance(j));
+            let collinear =
+                (c1 - c0).length() > 0.0 && ((a + b) - c1.distance(c0)).abs() <= 1e-9 * (a + b);
+            if !(a > 0.0 && b > 0.0 && collinear) {
+                return None;
+            }
+            let next = h[i] * b / a;
+            if !(next.is_finite() && next > 1e-12 && next < 1e12) {
+                return None;
+            }
+            h.push(next);
+        }
+        let total: f64 = h.iter().sum();
+        let mut knots = vec![0.0; 3];
+        let mut acc = 0.0;
+        for x in &h[..n - 1] {
+            acc += x;
+            knots.push(acc / total);
+        }
+        knots.extend([1.0; 3]);
+        let mut ctrl = Vec::with_capacity(n + 2);
+        ctrl.push(self.segments[0][0]);
+        ctrl.extend(self.segments.iter().map(|s| s[1]));
+        ctrl.push(self.segments[n - 1][2]);
+        BSpline::new(2, ctrl, Some(knots), None).ok()
+    }
+
     /// Segment index and local parameter for a public parameter t in [0, 1].
     pub fn locate(&self, t: f64) -> (usize, f64) {
         let n = self.segments.len();
@@ -69,5 +112,48 @@ impl ParamCurve for QuadSpline {
     fn eval(&self, t: f64) -> DVec3 {
         let (i, u) = self.locate(t);
         quad_bezier(&self.segments[i], u)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn simple_knot_form_traces_the_same_curve() {
+        let pts: Vec<DVec3> = [
+            (0.0, -2.5),
+            (5.6, -2.5),
+            (49.0, -2.1),
+            (98.0, -1.75),
+            (126.0, -3.5),
+            (140.0, 0.0),
+            (126.0, 3.5),
+            (98.0, 1.75),
+            (49.0, 2.1),
+            (5.6, 2.5),
+            (0.0, 2.5),
+        ]
+        .iter()
+        .map(|(x, y)| DVec3::new(*x, *y, 0.0))
+        .collect();
+        for closed in [false, true] {
+            let s = QuadSpline::interpolate(&pts, closed).unwrap();
+            let b = s.to_bspline_simple_knots().expect("regular joints");
+            assert_eq!(b.ctrl.len(), s.segments.len() + 2);
+            // Each Bezier piece of the B-spline is the matching segment.
+            let pieces = b.to_beziers();
+            assert_eq!(pieces.len(), s.segments.len());
+            for (seg, (ctrl, _)) in s.segments.iter().zip(&pieces) {
+                for k in 0..3 {
+                    assert!(
+                        (seg[k] - ctrl[k]).length() < 1e-9,
+                        "{:?} vs {:?}",
+                        seg,
+                        ctrl
+                    );
+                }
+            }
+        }
     }
 }
