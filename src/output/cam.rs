@@ -693,14 +693,7 @@ fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
     w.int(70, 1);
     w.str(0, "STYLE");
     w.str(2, "STANDARD");
-    w.int(70, 0);
-    w.float(40, 0.0);
-    w.float(41, 1.0);
-    w.float(50, 0.0);
-    w.int(71, 0);
-    w.float(42, 2.5);
-    w.str(3, "txt");
-    w.str(4, "");
+    w.text_style_fields();
     w.str(0, "ENDTAB");
     w.str(0, "ENDSEC");
 

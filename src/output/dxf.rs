@@ -26,6 +26,19 @@ impl Default for DxfWriter {
 }
 
 impl DxfWriter {
+    /// The groups of a plain text style record after its name (R12 and R2000 alike): no
+    /// fixed height, width factor 1, no oblique angle, last height 2.5, font "txt".
+    pub fn text_style_fields(&mut self) {
+        self.int(70, 0);
+        self.float(40, 0.0);
+        self.float(41, 1.0);
+        self.float(50, 0.0);
+        self.int(71, 0);
+        self.float(42, 2.5);
+        self.str(3, "txt");
+        self.str(4, "");
+    }
+
     pub fn new() -> DxfWriter {
         DxfWriter {
             out: String::with_capacity(1 << 16),
@@ -388,14 +401,7 @@ pub fn write_cad(d: &Drawing) -> String {
             "AcDbTextStyleTableRecord",
         );
         w.str(2, name);
-        w.int(70, 0);
-        w.float(40, 0.0);
-        w.float(41, 1.0);
-        w.float(50, 0.0);
-        w.int(71, 0);
-        w.float(42, 2.5);
-        w.str(3, "txt");
-        w.str(4, "");
+        w.text_style_fields();
     }
     w.str(0, "ENDTAB");
 

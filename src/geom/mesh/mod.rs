@@ -36,6 +36,28 @@ pub use trim::{trim, Trimmed};
 use glam::DVec3;
 use std::sync::OnceLock;
 
+/// Keeps only the vertices the triangles use, renumbered in first-use order.
+pub(crate) fn compact_vertices(
+    verts: &[DVec3],
+    tris: Vec<[u32; 3]>,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let mut map = vec![u32::MAX; verts.len()];
+    let mut out = Vec::new();
+    let tris = tris
+        .into_iter()
+        .map(|t| {
+            t.map(|i| {
+                if map[i as usize] == u32::MAX {
+                    map[i as usize] = out.len() as u32;
+                    out.push(verts[i as usize]);
+                }
+                map[i as usize]
+            })
+        })
+        .collect();
+    (out, tris)
+}
+
 /// An indexed triangle mesh (paper 001's discrete surface) with lazily cached adjacency and BVH.
 #[derive(Debug, Default)]
 pub struct Mesh {

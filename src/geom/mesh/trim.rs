@@ -167,21 +167,8 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
 }
 
 fn compact(verts: &[DVec3], tris: Vec<[u32; 3]>) -> Mesh {
-    let mut map = vec![u32::MAX; verts.len()];
-    let mut out = Vec::new();
-    let tris = tris
-        .into_iter()
-        .map(|t| {
-            t.map(|i| {
-                if map[i as usize] == u32::MAX {
-                    map[i as usize] = out.len() as u32;
-                    out.push(verts[i as usize]);
-                }
-                map[i as usize]
-            })
-        })
-        .collect();
-    Mesh::new_unchecked(out, tris)
+    let (v, t) = super::compact_vertices(verts, tris);
+    Mesh::new_unchecked(v, t)
 }
 
 /// Splits triangle `tri` by the cut segments `segs` (global vertex ids), with the cut points on

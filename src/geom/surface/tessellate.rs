@@ -129,19 +129,6 @@ pub fn mesh_surface(s: &Surface, chord_tol: f64) -> Result<Mesh, SurfaceError> {
 
 /// Drops vertices no triangle uses.
 fn compact(verts: Vec<DVec3>, tris: Vec<[u32; 3]>) -> Result<Mesh, crate::geom::mesh::MeshError> {
-    let mut map = vec![u32::MAX; verts.len()];
-    let mut out = Vec::new();
-    let tris = tris
-        .into_iter()
-        .map(|t| {
-            t.map(|i| {
-                if map[i as usize] == u32::MAX {
-                    map[i as usize] = out.len() as u32;
-                    out.push(verts[i as usize]);
-                }
-                map[i as usize]
-            })
-        })
-        .collect();
-    Mesh::new(out, tris)
+    let (v, t) = crate::geom::mesh::compact_vertices(&verts, tris);
+    Mesh::new(v, t)
 }
