@@ -162,3 +162,9 @@
 ;!! UCS: only the World UCS exists in lispcad ("W"), got "OB"
 (command "PLINE" '(0 0) '(10 0) "A" '(5 0))
 ;!! PLINE: the arc end point lies straight behind the tangent direction; no tangent arc reaches it
+;; clear-drawing drops a command left waiting for input
+(command "LINE" '(0 0) '(5 5))
+(clear-drawing)
+(command "CIRCLE" '(0 0) 3)
+(cdr (assoc 0 (entget (entlast))))
+;=> "CIRCLE"
