@@ -474,6 +474,15 @@ fn fail(e: Exn, span: Option<Span>) -> Code {
     Box::new(move |_| Err(with_span(e.clone(), span)))
 }
 
+#[cold]
+fn arg_count_error(too_few: bool) -> Exn {
+    err(if too_few {
+        "too few arguments"
+    } else {
+        "too many arguments"
+    })
+}
+
 fn arity_error(too_few: bool, span: Option<Span>) -> Code {
     fail(
         err(if too_few {
@@ -486,6 +495,8 @@ fn arity_error(too_few: bool, span: Option<Span>) -> Code {
 }
 
 /// Adds a call-stack frame as an error leaves a user function.
+#[cold]
+#[inline(never)]
 fn add_frame(it: &Interp, mut e: Exn, name: Option<Sym>, span: Option<Span>) -> Exn {
     const MAX_FRAMES: usize = 64;
     if e.stack.len() < MAX_FRAMES {
@@ -618,11 +629,7 @@ impl Interp {
     /// `call_lambda` taking the arguments by move out of `args` (left nil).
     pub fn enter_lambda(&mut self, l: &Lambda, args: &mut [Value]) -> LResult {
         if args.len() != l.params.len() {
-            return Err(err(if args.len() < l.params.len() {
-                "too few arguments"
-            } else {
-                "too many arguments"
-            }));
+            return Err(arg_count_error(args.len() < l.params.len()));
         }
         self.tick()?;
         self.check_stack()?;

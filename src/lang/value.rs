@@ -60,6 +60,11 @@ impl Drop for Cons {
     /// Frees long and deeply nested lists without recursion: a 1M-cell list must not overflow
     /// the stack when dropped. The work list only allocates when nested cells are freed.
     fn drop(&mut self) {
+        let unique = |v: &Value| matches!(v, Value::Cons(rc) if Rc::strong_count(rc) == 1);
+        // The common case, and every cell freed by the loop below: nothing to free beneath.
+        if !unique(&self.car) && !unique(&self.cdr) {
+            return;
+        }
         let mut work: Vec<Value> = Vec::new();
         let take = |v: &mut Value, work: &mut Vec<Value>| {
             if let Value::Cons(rc) = v {
