@@ -195,7 +195,10 @@ impl<'a> Compiler<'a> {
                 if n == 3 {
                     let els = self.compile(&arg(2));
                     Box::new(move |it| {
-                        if test(it)?.truthy() {
+                        let t = test(it)?;
+                        let go = t.truthy();
+                        t.release();
+                        if go {
                             then(it)
                         } else {
                             els(it)
@@ -203,7 +206,10 @@ impl<'a> Compiler<'a> {
                     })
                 } else {
                     Box::new(move |it| {
-                        if test(it)?.truthy() {
+                        let t = test(it)?;
+                        let go = t.truthy();
+                        t.release();
+                        if go {
                             then(it)
                         } else {
                             Ok(Value::Nil)
@@ -233,9 +239,15 @@ impl<'a> Compiler<'a> {
                 let body = self.compile_body(&rest.cdr());
                 Box::new(move |it| {
                     let mut last = Value::Nil;
-                    while test(it)?.truthy() {
+                    loop {
+                        let t = test(it)?;
+                        let go = t.truthy();
+                        t.release();
+                        if !go {
+                            break;
+                        }
                         it.tick()?;
-                        last = body(it)?;
+                        std::mem::replace(&mut last, body(it)?).release();
                     }
                     Ok(last)
                 })
@@ -301,12 +313,12 @@ impl<'a> Compiler<'a> {
             return match code {
                 Operand::Code(code) => Box::new(move |it| {
                     let v = code(it)?;
-                    it.values[i] = v.clone();
+                    std::mem::replace(&mut it.values[i], v.clone()).release();
                     Ok(v)
                 }),
                 other => Box::new(move |it| {
                     let v = other.eval(it)?;
-                    it.values[i] = v.clone();
+                    std::mem::replace(&mut it.values[i], v.clone()).release();
                     Ok(v)
                 }),
             };
@@ -318,10 +330,10 @@ impl<'a> Compiler<'a> {
         Box::new(move |it| {
             for (i, code) in pairs.iter() {
                 let v = code.eval(it)?;
-                it.values[*i] = v;
+                std::mem::replace(&mut it.values[*i], v).release();
             }
             let v = last_code.eval(it)?;
-            it.values[li] = v.clone();
+            std::mem::replace(&mut it.values[li], v.clone()).release();
             Ok(v)
         })
     }
@@ -641,10 +653,17 @@ impl Interp {
             self.bind(*p, Value::Nil);
         }
         let r = (l.body)(self);
-        let r = match r {
-            Ok(v) => Ok(v),
-            Err(e) => Err(self.offer_to_error_handler(e)),
-        };
+        if r.is_err() {
+            return self.leave_lambda_with_error(r, base);
+        }
+        self.unwind_to(base);
+        r
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn leave_lambda_with_error(&mut self, r: LResult, base: usize) -> LResult {
+        let r = r.map_err(|e| self.offer_to_error_handler(e));
         self.unwind_to(base);
         r
     }

@@ -52,7 +52,10 @@ pub struct Interp {
     /// One value cell per symbol, indexed by `Sym`.
     pub values: Vec<Value>,
     /// Shallow binding: (symbol, value it had before the binding).
-    saves: Vec<(Sym, Value)>,
+    /// The save stack as two parallel vectors: a `(Sym, Value)` tuple was assembled on the
+    /// Rust stack and copied, stalling on store forwarding in every call.
+    saves: Vec<Value>,
+    saved_syms: Vec<Sym>,
     pub sources: Vec<Source>,
     pub out: Box<dyn Write>,
     steps: u64,
@@ -88,6 +91,7 @@ impl Interp {
             syms: SymbolTable::new(),
             values: Vec::new(),
             saves: Vec::new(),
+            saved_syms: Vec::new(),
             sources: Vec::new(),
             out: Box::new(std::io::stdout()),
             steps: 0,
@@ -205,15 +209,17 @@ impl Interp {
     pub fn bind(&mut self, s: Sym, v: Value) -> usize {
         let mark = self.saves.len();
         let old = std::mem::replace(&mut self.values[s.idx()], v);
-        self.saves.push((s, old));
+        self.saves.push(old);
+        self.saved_syms.push(s);
         mark
     }
 
     #[inline]
     pub fn unwind_to(&mut self, mark: usize) {
         while self.saves.len() > mark {
-            let (s, old) = self.saves.pop().expect("save stack");
-            self.values[s.idx()] = old;
+            let old = self.saves.pop().expect("save stack");
+            let sym = self.saved_syms.pop().expect("save stack");
+            std::mem::replace(&mut self.values[sym.idx()], old).release();
         }
     }
 
