@@ -191,31 +191,23 @@ impl<'a> Compiler<'a> {
                     return arity_error(n < 2, span);
                 }
                 let test = self.compile(&arg(0));
-                let then = self.compile(&arg(1));
-                if n == 3 {
-                    let els = self.compile(&arg(2));
-                    Box::new(move |it| {
-                        let t = test(it)?;
-                        let go = t.truthy();
-                        t.release();
-                        if go {
-                            then(it)
-                        } else {
-                            els(it)
-                        }
-                    })
+                // Branches are often a variable or a constant (a recursion's base case).
+                let then = self.operand(&arg(1));
+                let els = if n == 3 {
+                    self.operand(&arg(2))
                 } else {
-                    Box::new(move |it| {
-                        let t = test(it)?;
-                        let go = t.truthy();
-                        t.release();
-                        if go {
-                            then(it)
-                        } else {
-                            Ok(Value::Nil)
-                        }
-                    })
-                }
+                    Operand::Const(Value::Nil)
+                };
+                Box::new(move |it| {
+                    let t = test(it)?;
+                    let go = t.truthy();
+                    t.release();
+                    if go {
+                        then.eval(it)
+                    } else {
+                        els.eval(it)
+                    }
+                })
             }
             S_COND => self.compile_cond(rest, span),
             S_PROGN => self.compile_body(rest),
