@@ -2,7 +2,8 @@
 # Runs the four language benchmarks (bench/lang/{fib,loop,list,empty}) on lispcad, CPython 3,
 # Lua 5.4 and Guile 3.0, REPS times each, interleaved (rep 1 of every program on every
 # language, then rep 2, ...) so load from other processes on a shared machine spreads over
-# all of them; prints the minimum wall time of each and the ratio lispcad/peer.
+# all of them; prints the minimum wall time and the minimum CPU time (user+sys, less sensitive
+# to other load) of each, with the ratio lispcad/peer.
 #
 #   bench/run-lang.sh [REPS]        (default 5; LISPCAD=path overrides the binary)
 set -euo pipefail
@@ -33,18 +34,22 @@ if [[ -n "$guile" ]]; then
   for p in "${progs[@]}"; do $guile "$here/lang/$p.scm" >/dev/null 2>&1 || true; done
 fi
 
-now() { date +%s%N; }
+TIMEFORMAT="%3R %3U %3S"
+tfile="$(mktemp)"
+trap 'rm -f "$tfile"' EXIT
+declare -A cpu
 for ((r = 1; r <= reps; r++)); do
   for p in "${progs[@]}"; do
     for l in "${langs[@]}"; do
       available "$l" || continue
       f="$here/lang/$p.${ext[$l]}"
-      t0=$(now)
-      ${cmd[$l]} "$f" >/dev/null 2>&1 || { echo "FAILED: $l $p" >&2; exit 1; }
-      t1=$(now)
-      ms=$(( (t1 - t0) / 1000000 ))
+      { time ${cmd[$l]} "$f" >/dev/null 2>&1 || { echo "FAILED: $l $p" >&2; exit 1; }; } 2>"$tfile"
+      read -r e u s <"$tfile"
+      ms=$(awk -v e="$e" 'BEGIN { printf "%d", e * 1000 }')
+      cms=$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%d", (u + s) * 1000 }')
       k="$l:$p"
       if [[ -z "${best[$k]:-}" || $ms -lt ${best[$k]} ]]; then best[$k]=$ms; fi
+      if [[ -z "${cpu[$k]:-}" || $cms -lt ${cpu[$k]} ]]; then cpu[$k]=$cms; fi
     done
   done
 done
@@ -56,11 +61,17 @@ ratio() { # lispcad ms / peer ms, 2 decimals; "-" without a peer
   ((a == 0)) && a=1
   awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f", a / b }'
 }
-echo "minimum wall time of $reps interleaved runs, in ms (ratio = lispcad / peer)"
-printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" program lispcad cpython lua5.4 guile3 "/cpython" "/lua" "/guile"
-for p in "${progs[@]}"; do
-  L="${best[lispcad:$p]}"
-  P="${best[python:$p]:-}"; U="${best[lua:$p]:-}"; G="${best[guile:$p]:-}"
-  printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" "$p" "$L" "${P:--}" "${U:--}" "${G:--}" \
-    "$(ratio "$L" "$P")" "$(ratio "$L" "$U")" "$(ratio "$L" "$G")"
-done
+table() { # title, name of the array of minima
+  local -n m="$2"
+  echo "$1"
+  printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" program lispcad cpython lua5.4 guile3 "/cpython" "/lua" "/guile"
+  for p in "${progs[@]}"; do
+    L="${m[lispcad:$p]}"
+    P="${m[python:$p]:-}"; U="${m[lua:$p]:-}"; G="${m[guile:$p]:-}"
+    printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" "$p" "$L" "${P:--}" "${U:--}" "${G:--}" \
+      "$(ratio "$L" "$P")" "$(ratio "$L" "$U")" "$(ratio "$L" "$G")"
+  done
+}
+table "minimum wall time of $reps interleaved runs, in ms (ratio = lispcad / peer)" best
+echo
+table "minimum CPU time (user+sys) of the same runs, in ms" cpu

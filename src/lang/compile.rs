@@ -191,25 +191,23 @@ impl<'a> Compiler<'a> {
                     return arity_error(n < 2, span);
                 }
                 let test = self.compile(&arg(0));
-                let then = self.compile(&arg(1));
-                if n == 3 {
-                    let els = self.compile(&arg(2));
-                    Box::new(move |it| {
-                        if test(it)?.truthy() {
-                            then(it)
-                        } else {
-                            els(it)
-                        }
-                    })
+                // Branches are often a variable or a constant (a recursion's base case).
+                let then = self.operand(&arg(1));
+                let els = if n == 3 {
+                    self.operand(&arg(2))
                 } else {
-                    Box::new(move |it| {
-                        if test(it)?.truthy() {
-                            then(it)
-                        } else {
-                            Ok(Value::Nil)
-                        }
-                    })
-                }
+                    Operand::Const(Value::Nil)
+                };
+                Box::new(move |it| {
+                    let t = test(it)?;
+                    let go = t.truthy();
+                    t.release();
+                    if go {
+                        then.eval(it)
+                    } else {
+                        els.eval(it)
+                    }
+                })
             }
             S_COND => self.compile_cond(rest, span),
             S_PROGN => self.compile_body(rest),
@@ -233,9 +231,15 @@ impl<'a> Compiler<'a> {
                 let body = self.compile_body(&rest.cdr());
                 Box::new(move |it| {
                     let mut last = Value::Nil;
-                    while test(it)?.truthy() {
+                    loop {
+                        let t = test(it)?;
+                        let go = t.truthy();
+                        t.release();
+                        if !go {
+                            break;
+                        }
                         it.tick()?;
-                        last = body(it)?;
+                        std::mem::replace(&mut last, body(it)?).release();
                     }
                     Ok(last)
                 })
@@ -301,12 +305,12 @@ impl<'a> Compiler<'a> {
             return match code {
                 Operand::Code(code) => Box::new(move |it| {
                     let v = code(it)?;
-                    it.values[i] = v.clone();
+                    std::mem::replace(&mut it.values[i], v.clone()).release();
                     Ok(v)
                 }),
                 other => Box::new(move |it| {
                     let v = other.eval(it)?;
-                    it.values[i] = v.clone();
+                    std::mem::replace(&mut it.values[i], v.clone()).release();
                     Ok(v)
                 }),
             };
@@ -318,10 +322,10 @@ impl<'a> Compiler<'a> {
         Box::new(move |it| {
             for (i, code) in pairs.iter() {
                 let v = code.eval(it)?;
-                it.values[*i] = v;
+                std::mem::replace(&mut it.values[*i], v).release();
             }
             let v = last_code.eval(it)?;
-            it.values[li] = v.clone();
+            std::mem::replace(&mut it.values[li], v.clone()).release();
             Ok(v)
         })
     }
@@ -474,6 +478,15 @@ fn fail(e: Exn, span: Option<Span>) -> Code {
     Box::new(move |_| Err(with_span(e.clone(), span)))
 }
 
+#[cold]
+fn arg_count_error(too_few: bool) -> Exn {
+    err(if too_few {
+        "too few arguments"
+    } else {
+        "too many arguments"
+    })
+}
+
 fn arity_error(too_few: bool, span: Option<Span>) -> Code {
     fail(
         err(if too_few {
@@ -486,6 +499,8 @@ fn arity_error(too_few: bool, span: Option<Span>) -> Code {
 }
 
 /// Adds a call-stack frame as an error leaves a user function.
+#[cold]
+#[inline(never)]
 fn add_frame(it: &Interp, mut e: Exn, name: Option<Sym>, span: Option<Span>) -> Exn {
     const MAX_FRAMES: usize = 64;
     if e.stack.len() < MAX_FRAMES {
@@ -618,11 +633,7 @@ impl Interp {
     /// `call_lambda` taking the arguments by move out of `args` (left nil).
     pub fn enter_lambda(&mut self, l: &Lambda, args: &mut [Value]) -> LResult {
         if args.len() != l.params.len() {
-            return Err(err(if args.len() < l.params.len() {
-                "too few arguments"
-            } else {
-                "too many arguments"
-            }));
+            return Err(arg_count_error(args.len() < l.params.len()));
         }
         self.tick()?;
         self.check_stack()?;
@@ -634,10 +645,17 @@ impl Interp {
             self.bind(*p, Value::Nil);
         }
         let r = (l.body)(self);
-        let r = match r {
-            Ok(v) => Ok(v),
-            Err(e) => Err(self.offer_to_error_handler(e)),
-        };
+        if r.is_err() {
+            return self.leave_lambda_with_error(r, base);
+        }
+        self.unwind_to(base);
+        r
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn leave_lambda_with_error(&mut self, r: LResult, base: usize) -> LResult {
+        let r = r.map_err(|e| self.offer_to_error_handler(e));
         self.unwind_to(base);
         r
     }

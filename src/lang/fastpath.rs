@@ -229,6 +229,8 @@ fn bin_code<X: Opnd, Y: Opnd>(
         let yv = y.get(it)?;
         if holds(it, fi, b) {
             if let Some(v) = bin_numbers(op, &xv, &yv) {
+                xv.release();
+                yv.release();
                 return Ok(v);
             }
         }
@@ -242,6 +244,7 @@ fn un_code<X: Opnd>(head: Sym, op: Un, b: &'static Builtin, x: X, span: Option<S
         let xv = x.get(it)?;
         if holds(it, fi, b) {
             if let Some(v) = un_number(op, &xv) {
+                xv.release();
                 return Ok(v);
             }
         }
