@@ -59,6 +59,8 @@ pub enum DrawingError {
     BadColor(i16),
     #[error("invalid layer name {0:?}: empty or containing one of <>/\\\":;?*|,=`")]
     BadLayerName(String),
+    #[error("invalid line type name {0:?}: containing one of <>/\\\":;?*|,=`")]
+    BadLinetype(String),
     #[error("no entity with handle {0:X}")]
     NoSuchEntity(u64),
     #[error("layer {0:?} cannot be deleted")]
@@ -263,8 +265,18 @@ impl Drawing {
     }
 
     /// Add a layer record, or replace the one with the same name (keeping its position).
-    pub fn set_layer_record(&mut self, layer: Layer) -> Result<(), DrawingError> {
+    pub fn set_layer_record(&mut self, mut layer: Layer) -> Result<(), DrawingError> {
         check_layer_name(&layer.name)?;
+        // A layer always names a line type the writers can define.
+        if layer.linetype.trim().is_empty() {
+            layer.linetype = "Continuous".to_string();
+        } else if layer
+            .linetype
+            .chars()
+            .any(|c| "<>/\\\":;?*|,=`".contains(c) || c.is_control())
+        {
+            return Err(DrawingError::BadLinetype(layer.linetype));
+        }
         if layer.color == 0 || !(-255..=255).contains(&layer.color) {
             return Err(DrawingError::BadColor(layer.color));
         }

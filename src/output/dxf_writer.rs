@@ -79,14 +79,17 @@ impl DxfWriter {
     }
 }
 
-/// The shortest decimal that reads back as the same f64 (Rust's `Display` is round-trip
-/// exact), with a decimal point always present and -0 written as 0.
+/// The shortest decimal that reads back as the same f64 (Ryū, Adams 2018), with -0 written as
+/// 0. Ryū's form always has a decimal point or an exponent ("1.0", "1e-7", "1e21"), which
+/// AutoCAD, LibreCAD and ezdxf all read.
 pub fn push_float(out: &mut String, x: f64) {
     let x = if x == 0.0 { 0.0 } else { x };
-    let start = out.len();
-    let _ = write!(out, "{x}");
-    if !out[start..].contains(['.', 'e', 'E', 'N', 'i']) {
-        out.push_str(".0");
+    if x.is_finite() {
+        let mut b = ryu::Buffer::new();
+        out.push_str(b.format_finite(x));
+    } else {
+        // Never produced: entities are validated before writing. Keep the file parseable.
+        out.push_str("0.0");
     }
 }
 
@@ -160,6 +163,7 @@ mod tests {
             s.clear();
             push_float(&mut s, x);
             assert!(s.contains('.') || s.contains('e'), "{s}");
+            assert!(!s.starts_with('-') || x < 0.0, "{s}");
             assert_eq!(s.parse::<f64>().unwrap(), if x == 0.0 { 0.0 } else { x });
         }
     }

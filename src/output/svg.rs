@@ -90,10 +90,12 @@ impl View {
 /// A number in path data: micrometre-of-a-millimetre resolution (1e-6 units), no "-0".
 fn num(out: &mut String, x: f64) {
     let r = (x * 1e6).round();
-    if r == 0.0 {
+    if r == 0.0 || !r.is_finite() {
         out.push('0');
     } else {
-        let _ = write!(out, "{}", r / 1e6);
+        let mut b = ryu::Buffer::new();
+        let s = b.format_finite(r / 1e6);
+        out.push_str(s.strip_suffix(".0").unwrap_or(s));
     }
 }
 
