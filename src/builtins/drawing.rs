@@ -215,7 +215,8 @@ fn save(it: &mut Interp, a: &[Value]) -> LResult {
 fn clear_drawing(it: &mut Interp, _: &[Value]) -> LResult {
     drawing(it).clear();
     // A half-made POLYLINE or a command waiting for input belonged to the old drawing.
-    it.ext::<crate::builtins::entities::EntityState>().pending_polyline = None;
+    it.ext::<crate::builtins::entities::EntityState>()
+        .pending_polyline = None;
     *it.ext::<crate::builtins::command::CommandState>() = Default::default();
     Ok(Value::Nil)
 }

@@ -292,8 +292,27 @@ impl Seg {
     fn bbox(&self) -> (DVec2, DVec2) {
         match *self {
             Seg::Line { a, b } => (a.min(b), a.max(b)),
-            // The whole circle's box: loose but safe for candidate search.
-            Seg::Arc { c, r, .. } => (c - DVec2::splat(r), c + DVec2::splat(r)),
+            // The arc's own box: its ends and the quarter-turn points inside its sweep (a
+            // whole-circle box would make the nearly straight arcs of biarc chains, whose radii
+            // are huge, overlap everything).
+            Seg::Arc { c, r, a0, sweep } => {
+                let (s0, e0) = (self.at(0.0), self.at(1.0));
+                let (mut lo, mut hi) = (s0.min(e0), s0.max(e0));
+                let (from, to) = if sweep > 0.0 {
+                    (a0, a0 + sweep)
+                } else {
+                    (a0 + sweep, a0)
+                };
+                let quarter = std::f64::consts::FRAC_PI_2;
+                let mut k = (from / quarter).ceil();
+                while k * quarter < to {
+                    let p = c + DVec2::from_angle(k * quarter) * r;
+                    lo = lo.min(p);
+                    hi = hi.max(p);
+                    k += 1.0;
+                }
+                (lo, hi)
+            }
         }
     }
 

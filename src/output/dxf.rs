@@ -7,149 +7,11 @@
 //! `FIRST_HANDLE`; entities keep their drawing handles; records the drawing does not number
 //! (layers, vertices, extra mesh faces) get handles above the drawing's last one.
 
-use std::fmt::Write as _;
-
 use glam::{DVec2, DVec3};
 
 use super::drawing::{Drawing, Entity, EntityKind};
+pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
 use crate::geom::frame::arbitrary_axis;
-
-/// Group-code/value pair emitter into one string buffer.
-pub struct DxfWriter {
-    pub out: String,
-}
-
-impl Default for DxfWriter {
-    fn default() -> Self {
-        DxfWriter::new()
-    }
-}
-
-impl DxfWriter {
-    /// The groups of a plain text style record after its name (R12 and R2000 alike): no
-    /// fixed height, width factor 1, no oblique angle, last height 2.5, font "txt".
-    pub fn text_style_fields(&mut self) {
-        self.int(70, 0);
-        self.float(40, 0.0);
-        self.float(41, 1.0);
-        self.float(50, 0.0);
-        self.int(71, 0);
-        self.float(42, 2.5);
-        self.str(3, "txt");
-        self.str(4, "");
-    }
-
-    pub fn new() -> DxfWriter {
-        DxfWriter {
-            out: String::with_capacity(1 << 16),
-        }
-    }
-
-    fn code(&mut self, code: u16) {
-        // Right-justified in three columns, as AutoCAD writes them.
-        let _ = writeln!(self.out, "{code:>3}");
-    }
-
-    pub fn str(&mut self, code: u16, value: &str) {
-        self.code(code);
-        push_dxf_string(&mut self.out, value);
-        self.out.push('\n');
-    }
-
-    pub fn int(&mut self, code: u16, value: i64) {
-        self.code(code);
-        let _ = writeln!(self.out, "{value}");
-    }
-
-    pub fn handle(&mut self, code: u16, h: u64) {
-        self.code(code);
-        let _ = writeln!(self.out, "{h:X}");
-    }
-
-    pub fn float(&mut self, code: u16, value: f64) {
-        self.code(code);
-        push_float(&mut self.out, value);
-        self.out.push('\n');
-    }
-
-    /// A point as codes `code`, `code + 10`, `code + 20`.
-    pub fn point(&mut self, code: u16, p: DVec3) {
-        self.float(code, p.x);
-        self.float(code + 10, p.y);
-        self.float(code + 20, p.z);
-    }
-
-    pub fn point2(&mut self, code: u16, p: DVec2) {
-        self.float(code, p.x);
-        self.float(code + 10, p.y);
-    }
-}
-
-/// The shortest decimal that reads back as the same f64 (Rust's `Display` is round-trip
-/// exact), with a decimal point always present and -0 written as 0.
-pub fn push_float(out: &mut String, x: f64) {
-    let x = if x == 0.0 { 0.0 } else { x };
-    let start = out.len();
-    let _ = write!(out, "{x}");
-    if !out[start..].contains(['.', 'e', 'E', 'N', 'i']) {
-        out.push_str(".0");
-    }
-}
-
-/// DXF strings are one line of the drawing's code page ($DWGCODEPAGE = ANSI_1252): control
-/// characters become spaces, characters outside Windows-1252 AutoCAD's `\U+XXXX` escapes.
-/// (The file is encoded to Windows-1252 bytes at the end, by `encode_cp1252`.)
-fn push_dxf_string(out: &mut String, s: &str) {
-    for c in s.chars() {
-        if c.is_ascii_control() {
-            out.push(' ');
-        } else if c.is_ascii() || cp1252_byte(c).is_some() {
-            out.push(c);
-        } else {
-            let cp = c as u32;
-            if cp <= 0xFFFF {
-                let _ = write!(out, "\\U+{cp:04X}");
-            } else {
-                // Outside the BMP: AutoCAD has no escape for it; a mark keeps the file valid.
-                out.push('?');
-            }
-        }
-    }
-}
-
-/// The Windows-1252 byte of a non-ASCII character, if it has one.
-fn cp1252_byte(c: char) -> Option<u8> {
-    const HIGH: [char; 32] = [
-        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8D}', 'Ž',
-        '\u{8F}', '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9D}',
-        'ž', 'Ÿ',
-    ];
-    let cp = c as u32;
-    if (0xA0..=0xFF).contains(&cp) {
-        return Some(cp as u8);
-    }
-    // The five undefined positions (0x81, 0x8D, 0x8F, 0x90, 0x9D) are C1 controls, never
-    // produced: `push_dxf_string` turns control characters into spaces first.
-    HIGH.iter()
-        .position(|h| *h == c && !c.is_control())
-        .map(|i| 0x80 + i as u8)
-}
-
-/// The file text as Windows-1252 bytes (every character was made representable when written).
-pub fn encode_cp1252(s: String) -> Vec<u8> {
-    if s.is_ascii() {
-        return s.into_bytes();
-    }
-    s.chars()
-        .map(|c| {
-            if c.is_ascii() {
-                c as u8
-            } else {
-                cp1252_byte(c).unwrap_or(b'?')
-            }
-        })
-        .collect()
-}
 
 // Fixed structural handles.
 const H_LAYER_TABLE: u64 = 0x1;
@@ -240,9 +102,8 @@ pub fn write_cad(d: &Drawing) -> String {
     w.str(3, "ANSI_1252");
     var(&mut w, "$INSBASE");
     w.point(10, DVec3::ZERO);
-    let (lo, hi) = d
-        .extents()
-        .unwrap_or((DVec3::splat(1e20), DVec3::splat(-1e20)));
+    let extents = d.extents();
+    let (lo, hi) = extents.unwrap_or((DVec3::splat(1e20), DVec3::splat(-1e20)));
     var(&mut w, "$EXTMIN");
     w.point(10, lo);
     var(&mut w, "$EXTMAX");
@@ -324,7 +185,7 @@ pub fn write_cad(d: &Drawing) -> String {
     w.int(70, 0);
     w.point2(10, DVec2::ZERO);
     w.point2(11, DVec2::ONE);
-    let (center, height) = match d.extents() {
+    let (center, height) = match extents {
         Some((lo, hi)) => (
             ((lo + hi) / 2.0).truncate(),
             ((hi - lo).y.max((hi - lo).x / 1.5)).max(1.0) * 1.1,
@@ -886,8 +747,8 @@ fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
     w.int(70, 0);
 }
 
-/// The unit normal of the plane holding every point (Newell's method over the control
-/// polygon, then a flatness check), or `None` when they are not coplanar or are collinear.
+/// The unit normal of the plane holding every point (the largest cross product of spans from
+/// the first point, then a flatness check), or `None` when they are not coplanar or are collinear.
 pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
     if pts.iter().all(|p| p.z == pts[0].z) {
         return Some(DVec3::Z);
@@ -919,23 +780,20 @@ pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
     #[test]
-    fn floats_round_trip_and_have_a_point() {
-        let mut s = String::new();
-        for x in [0.1, 1.0 / 3.0, 1e-300, 12345678.9, -0.0, 2.0, 1e21] {
-            s.clear();
-            push_float(&mut s, x);
-            assert!(s.contains('.') || s.contains('e'), "{s}");
-            assert_eq!(s.parse::<f64>().unwrap(), if x == 0.0 { 0.0 } else { x });
-        }
-    }
-
-    #[test]
-    fn strings_are_escaped() {
-        let mut s = String::new();
-        push_dxf_string(&mut s, "a\nbé—α");
-        assert_eq!(s, "a bé—\\U+03B1");
-        assert_eq!(encode_cp1252(s), b"a b\xE9\x97\\U+03B1");
+    fn plane_normal_of_tilted_and_skew_points() {
+        let n = DVec3::new(1.0, 2.0, 2.0) / 3.0;
+        let (ax, ay) = arbitrary_axis(n);
+        let pts: Vec<DVec3> = [(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (-3.0, 1.0)]
+            .iter()
+            .map(|(x, y)| ax * *x + ay * *y + n * 5.0)
+            .collect();
+        let got = plane_normal(&pts).unwrap();
+        assert!(got.cross(n).length() < 1e-12);
+        assert_eq!(
+            plane_normal(&[DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z]),
+            None
+        );
+        assert_eq!(plane_normal(&[DVec3::ZERO, DVec3::X * 2.0]), Some(DVec3::Z));
     }
 }

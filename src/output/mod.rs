@@ -6,6 +6,9 @@ pub mod biarc;
 pub mod cam;
 pub mod drawing;
 pub mod dxf;
+pub mod dxf_writer;
+pub mod entity;
+pub mod groups;
 pub mod svg;
 
 use std::path::Path;

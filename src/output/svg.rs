@@ -12,7 +12,8 @@
 use std::fmt::Write as _;
 
 use glam::{DVec2, DVec3};
-use svg::node::element::{Group, Path, Text};
+use svg::node::element::{Group, Text};
+use svg::node::Blob;
 use svg::Document;
 
 use super::aci::aci_to_hex;
@@ -90,10 +91,12 @@ impl View {
 /// A number in path data: micrometre-of-a-millimetre resolution (1e-6 units), no "-0".
 fn num(out: &mut String, x: f64) {
     let r = (x * 1e6).round();
-    if r == 0.0 {
+    if r == 0.0 || !r.is_finite() {
         out.push('0');
     } else {
-        let _ = write!(out, "{}", r / 1e6);
+        let mut b = ryu::Buffer::new();
+        let s = b.format_finite(r / 1e6);
+        out.push_str(s.strip_suffix(".0").unwrap_or(s));
     }
 }
 
@@ -448,6 +451,12 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         if layer.is_off() || layer.frozen {
             g = g.set("display", "none");
         }
+        // The layer's elements are serialized here into one Blob: the svg crate would copy and
+        // re-escape every path's data (digits, spaces and command letters only, nothing to
+        // escape) several times, which dominated writing large drawings. Text still goes
+        // through the crate's `Text` element for its escaping. The bytes are the same as
+        // adding `Path` elements one by one (attributes in the crate's sorted order).
+        let mut body = String::new();
         for e in ents {
             let own = match e.color {
                 Some(c) if (1..=255).contains(&c) => Some(aci_to_hex(c)),
@@ -465,17 +474,28 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
                 if let Some(c) = &own {
                     t = t.set("color", c.as_str());
                 }
-                g = g.add(t);
+                if !body.is_empty() {
+                    body.push('\n');
+                }
+                let _ = write!(body, "{t}");
                 continue;
             }
             if let Some(data) = entity_path(e, &v, opts.stroke_width_mm) {
-                let mut p = Path::new().set("d", data);
-                if let Some(c) = &own {
-                    p = p.set("stroke", c.as_str());
+                if !body.is_empty() {
+                    body.push('\n');
                 }
-                g = g.add(p);
+                body.push_str("<path d=\"");
+                body.push_str(&data);
+                body.push('"');
+                if let Some(c) = &own {
+                    body.push_str(" stroke=\"");
+                    body.push_str(c);
+                    body.push('"');
+                }
+                body.push_str("/>");
             }
         }
+        g = g.add(Blob::new(body));
         doc = doc.add(g);
     }
     let mut s = doc.to_string();

@@ -1,0 +1,200 @@
+//! DXF group-code/value writing: codes right-justified in three columns as AutoCAD writes them,
+//! floats in their shortest round-trip form, strings in the drawing's code page (Windows-1252)
+//! with AutoCAD's `\\U+XXXX` escapes for everything else.
+
+use std::fmt::Write as _;
+
+use glam::{DVec2, DVec3};
+
+/// Group-code/value pair emitter into one string buffer.
+pub struct DxfWriter {
+    pub out: String,
+}
+
+impl Default for DxfWriter {
+    fn default() -> Self {
+        DxfWriter::new()
+    }
+}
+
+impl DxfWriter {
+    /// The groups of a plain text style record after its name (R12 and R2000 alike): no
+    /// fixed height, width factor 1, no oblique angle, last height 2.5, font "txt".
+    pub fn text_style_fields(&mut self) {
+        self.int(70, 0);
+        self.float(40, 0.0);
+        self.float(41, 1.0);
+        self.float(50, 0.0);
+        self.int(71, 0);
+        self.float(42, 2.5);
+        self.str(3, "txt");
+        self.str(4, "");
+    }
+
+    pub fn new() -> DxfWriter {
+        DxfWriter {
+            out: String::with_capacity(1 << 16),
+        }
+    }
+
+    /// The group code right-justified in three columns (by hand: this is the hot path).
+    fn code(&mut self, code: u16) {
+        let mut buf = [b' '; 6];
+        let mut i = buf.len();
+        let mut c = code;
+        loop {
+            i -= 1;
+            buf[i] = b'0' + (c % 10) as u8;
+            c /= 10;
+            if c == 0 {
+                break;
+            }
+        }
+        let start = i.min(buf.len() - 3);
+        // Only ASCII digits and spaces were written.
+        self.out
+            .push_str(std::str::from_utf8(&buf[start..]).unwrap_or("  0"));
+        self.out.push('\n');
+    }
+
+    pub fn str(&mut self, code: u16, value: &str) {
+        self.code(code);
+        push_dxf_string(&mut self.out, value);
+        self.out.push('\n');
+    }
+
+    pub fn int(&mut self, code: u16, value: i64) {
+        self.code(code);
+        let _ = writeln!(self.out, "{value}");
+    }
+
+    pub fn handle(&mut self, code: u16, h: u64) {
+        self.code(code);
+        let _ = writeln!(self.out, "{h:X}");
+    }
+
+    pub fn float(&mut self, code: u16, value: f64) {
+        self.code(code);
+        push_float(&mut self.out, value);
+        self.out.push('\n');
+    }
+
+    /// A point as codes `code`, `code + 10`, `code + 20`.
+    pub fn point(&mut self, code: u16, p: DVec3) {
+        self.float(code, p.x);
+        self.float(code + 10, p.y);
+        self.float(code + 20, p.z);
+    }
+
+    pub fn point2(&mut self, code: u16, p: DVec2) {
+        self.float(code, p.x);
+        self.float(code + 10, p.y);
+    }
+}
+
+/// The shortest decimal that reads back as the same f64 (Ryū, Adams 2018), with -0 written as
+/// 0. Ryū's form always has a decimal point or an exponent ("1.0", "1e-7", "1e21"), which
+/// AutoCAD, LibreCAD and ezdxf all read.
+pub fn push_float(out: &mut String, x: f64) {
+    let x = if x == 0.0 { 0.0 } else { x };
+    if x.is_finite() {
+        let mut b = ryu::Buffer::new();
+        out.push_str(b.format_finite(x));
+    } else {
+        // Never produced: entities are validated before writing. Keep the file parseable.
+        out.push_str("0.0");
+    }
+}
+
+/// DXF strings are one line of the drawing's code page ($DWGCODEPAGE = ANSI_1252): control
+/// characters become spaces, characters outside Windows-1252 AutoCAD's `\U+XXXX` escapes.
+/// (The file is encoded to Windows-1252 bytes at the end, by `encode_cp1252`.)
+fn push_dxf_string(out: &mut String, s: &str) {
+    if s.bytes().all(|b| (0x20..0x7F).contains(&b)) {
+        out.push_str(s);
+        return;
+    }
+    for c in s.chars() {
+        if c.is_ascii_control() {
+            out.push(' ');
+        } else if c.is_ascii() || cp1252_byte(c).is_some() {
+            out.push(c);
+        } else {
+            let cp = c as u32;
+            if cp <= 0xFFFF {
+                let _ = write!(out, "\\U+{cp:04X}");
+            } else {
+                // Outside the BMP: AutoCAD has no escape for it; a mark keeps the file valid.
+                out.push('?');
+            }
+        }
+    }
+}
+
+/// The Windows-1252 byte of a non-ASCII character, if it has one.
+fn cp1252_byte(c: char) -> Option<u8> {
+    const HIGH: [char; 32] = [
+        '€', '\u{81}', '‚', 'ƒ', '„', '…', '†', '‡', 'ˆ', '‰', 'Š', '‹', 'Œ', '\u{8D}', 'Ž',
+        '\u{8F}', '\u{90}', '‘', '’', '“', '”', '•', '–', '—', '˜', '™', 'š', '›', 'œ', '\u{9D}',
+        'ž', 'Ÿ',
+    ];
+    let cp = c as u32;
+    if (0xA0..=0xFF).contains(&cp) {
+        return Some(cp as u8);
+    }
+    // The five undefined positions (0x81, 0x8D, 0x8F, 0x90, 0x9D) are C1 controls, never
+    // produced: `push_dxf_string` turns control characters into spaces first.
+    HIGH.iter()
+        .position(|h| *h == c && !c.is_control())
+        .map(|i| 0x80 + i as u8)
+}
+
+/// The file text as Windows-1252 bytes (every character was made representable when written).
+pub fn encode_cp1252(s: String) -> Vec<u8> {
+    if s.is_ascii() {
+        return s.into_bytes();
+    }
+    s.chars()
+        .map(|c| {
+            if c.is_ascii() {
+                c as u8
+            } else {
+                cp1252_byte(c).unwrap_or(b'?')
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn floats_round_trip_and_have_a_point() {
+        let mut s = String::new();
+        for x in [0.1, 1.0 / 3.0, 1e-300, 12345678.9, -0.0, 2.0, 1e21] {
+            s.clear();
+            push_float(&mut s, x);
+            assert!(s.contains('.') || s.contains('e'), "{s}");
+            assert!(!s.starts_with('-') || x < 0.0, "{s}");
+            assert_eq!(s.parse::<f64>().unwrap(), if x == 0.0 { 0.0 } else { x });
+        }
+    }
+
+    #[test]
+    fn strings_are_escaped() {
+        let mut s = String::new();
+        push_dxf_string(&mut s, "a\nbé—α");
+        assert_eq!(s, "a bé—\\U+03B1");
+        assert_eq!(encode_cp1252(s), b"a b\xE9\x97\\U+03B1");
+    }
+
+    #[test]
+    fn codes_are_right_justified() {
+        let mut w = DxfWriter::new();
+        w.int(0, 1);
+        w.int(70, 2);
+        w.int(1071, 3);
+        assert_eq!(w.out, "  0\n1\n 70\n2\n1071\n3\n");
+    }
+}
