@@ -501,14 +501,19 @@ fn arity_error(too_few: bool, span: Option<Span>) -> Code {
 /// Adds a call-stack frame as an error leaves a user function.
 #[cold]
 #[inline(never)]
+/// Adds a call-stack frame as an error leaves a user function. Deep recursion keeps the 32
+/// innermost frames and the 32 outermost (which name the caller that started it), counting
+/// the ones dropped between them.
 fn add_frame(it: &Interp, mut e: Exn, name: Option<Sym>, span: Option<Span>) -> Exn {
-    const MAX_FRAMES: usize = 64;
-    if e.stack.len() < MAX_FRAMES {
-        e.stack.push(Frame {
-            function: name.map_or_else(|| "LAMBDA".to_string(), |s| it.syms.name(s).to_string()),
-            call_site: span,
-        });
+    const KEEP_EACH_END: usize = 32;
+    if e.stack.len() == 2 * KEEP_EACH_END {
+        e.stack.remove(KEEP_EACH_END);
+        e.omitted_frames += 1;
     }
+    e.stack.push(Frame {
+        function: name.map_or_else(|| "LAMBDA".to_string(), |s| it.syms.name(s).to_string()),
+        call_site: span,
+    });
     e
 }
 

@@ -48,6 +48,8 @@ pub struct LispError {
     pub span: Option<Span>,
     /// Innermost call first.
     pub stack: Vec<Frame>,
+    /// Frames dropped from the middle of `stack` (after its first 32) in deep recursion.
+    pub omitted_frames: usize,
     /// `*error*` has already been given this error.
     pub handled: bool,
 }
@@ -63,6 +65,7 @@ impl LispError {
             message: message.into(),
             span: None,
             stack: Vec::new(),
+            omitted_frames: 0,
             handled: false,
         })
     }
@@ -116,7 +119,7 @@ impl Report {
             ),
             None => (None, None),
         };
-        let frames: Vec<String> = e
+        let mut frames: Vec<String> = e
             .stack
             .iter()
             .map(|fr| match fr.call_site.as_ref().and_then(span_of) {
@@ -130,6 +133,10 @@ impl Report {
                 None => format!("in ({})", fr.function),
             })
             .collect();
+        if e.omitted_frames > 0 {
+            let at = frames.len().min(32);
+            frames.insert(at, format!("... {} more frames ...", e.omitted_frames));
+        }
         // Deep recursion repeats one frame many times: show it once with the count.
         let mut stack: Vec<String> = Vec::new();
         let mut i = 0;
