@@ -200,10 +200,31 @@ fn open(it: &mut Interp, a: &[Value]) -> LResult {
         }
         _ => return Err(err(format!("bad argument value: file mode \"{mode}\""))),
     };
-    Ok(Value::obj(LispFile {
+    let file: std::rc::Rc<Box<dyn Object>> = std::rc::Rc::new(Box::new(LispFile {
         name,
         handle: RefCell::new(handle),
-    }))
+    }));
+    let open = &mut it.ext::<OpenFiles>().0;
+    open.retain(|w| w.strong_count() > 0);
+    open.push(std::rc::Rc::downgrade(&file));
+    Ok(Value::Obj(file))
+}
+
+/// Files opened by the script, so a run can flush them at exit without tearing the whole
+/// interpreter down value by value.
+#[derive(Default)]
+pub struct OpenFiles(Vec<std::rc::Weak<Box<dyn Object>>>);
+
+/// Flushes every file the script left open (what dropping them would have done).
+pub fn flush_open_files(it: &mut Interp) {
+    for w in &it.ext::<OpenFiles>().0 {
+        let Some(f) = w.upgrade() else { continue };
+        if let Some(f) = f.as_any().downcast_ref::<LispFile>() {
+            if let Handle::Write(w) = &mut *f.handle.borrow_mut() {
+                let _ = w.flush();
+            }
+        }
+    }
 }
 
 fn close(it: &mut Interp, a: &[Value]) -> LResult {

@@ -83,16 +83,26 @@ pub fn run(args: &RunArgs, common: &Common) -> i32 {
         Err(e) if e.kind == ErrorKind::Exit => {}
         Err(e) => {
             diag::print_error(&it, &e);
-            return EXIT_SCRIPT_ERROR;
+            return leave(it, EXIT_SCRIPT_ERROR);
         }
     }
-    match crate::builtins::write_outputs(&mut it, &args.outputs, common) {
+    let status = match crate::builtins::write_outputs(&mut it, &args.outputs, common) {
         Ok(()) => EXIT_OK,
         Err(msg) => {
             eprintln!("error: {msg}");
             EXIT_SCRIPT_ERROR
         }
-    }
+    };
+    leave(it, status)
+}
+
+/// Ends a one-shot run: flushes what dropping would flush (open files, output) and lets the
+/// process reclaim the heap at exit, instead of freeing a script's large data value by value.
+fn leave(mut it: Interp, status: i32) -> i32 {
+    crate::builtins::io::flush_open_files(&mut it);
+    it.flush_out();
+    std::mem::forget(it);
+    status
 }
 
 /// The directories a script may write below: its own and each output's.
