@@ -205,7 +205,7 @@ impl Interp {
     }
 
     /// Binds `s` to `v` dynamically; returns the mark to `unwind_to`.
-    #[inline]
+    #[inline(always)]
     pub fn bind(&mut self, s: Sym, v: Value) -> usize {
         let mark = self.saves.len();
         let old = std::mem::replace(&mut self.values[s.idx()], v);
@@ -214,7 +214,7 @@ impl Interp {
         mark
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn unwind_to(&mut self, mark: usize) {
         while self.saves.len() > mark {
             let old = self.saves.pop().expect("save stack");
