@@ -102,7 +102,8 @@ fn add_value(it: &mut Interp, v: &Value, layer: &str) -> Result<(), Exn> {
             .map_err(draw_err)?;
         return Ok(());
     }
-    if let Some(m) = mesh_of(v) {
+    if let Some(m) = mesh_of(it, v) {
+        let m = m?;
         let kind = EntityKind::Mesh {
             vertices: m.vertices().to_vec(),
             triangles: m

@@ -230,8 +230,9 @@ fn curve_closed_p(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn bbox(it: &mut Interp, a: &[Value]) -> LResult {
-    if let Some(b) = crate::builtins::surfaces::bbox_of(&a[0]) {
-        return Ok(Value::list([point3(b.0), point3(b.1)]));
+    if let Some(b) = crate::builtins::surfaces::bbox_of(it, &a[0]) {
+        let (lo, hi) = b?;
+        return Ok(Value::list([point3(lo), point3(hi)]));
     }
     let (lo, hi) = curve(it, &a[0])?.bbox();
     Ok(Value::list([point3(lo), point3(hi)]))
@@ -246,7 +247,7 @@ fn transform(it: &mut Interp, v: &Value, m: DMat4) -> LResult {
     if let Some(c) = v.as_obj::<CurveValue>() {
         return Ok(curve_value(c.0.transform(&m).map_err(geom_err)?));
     }
-    if let Some(r) = crate::builtins::surfaces::transform(v, &m) {
+    if let Some(r) = crate::builtins::surfaces::transform(it, v, &m) {
         return r;
     }
     if matches!(v, Value::Cons(_)) && it.point(v).is_ok() {

@@ -142,38 +142,30 @@ fn discrete(it: &mut Interp, v: &Value) -> Result<Rc<Mesh>, Exn> {
     }
 }
 
-/// The mesh a surface-like value stands for (parametric ones tessellated at CHORDTOL = 0.01);
-/// for drawing and bounding boxes.
-pub fn mesh_of(v: &Value) -> Option<Rc<Mesh>> {
-    if let Some(m) = v.as_obj::<MeshValue>() {
-        return Some(m.0.clone());
-    }
-    let s = v.as_obj::<SurfaceValue>()?;
-    surface::mesh_surface(&s.0, 0.01).ok().map(Rc::new)
+/// The mesh a surface-like value stands for (a parametric one tessellated within CHORDTOL);
+/// None when `v` is not a surface, an error when it cannot be tessellated.
+pub fn mesh_of(it: &mut Interp, v: &Value) -> Option<Result<Rc<Mesh>, Exn>> {
+    is_surface(v).then(|| discrete(it, v))
 }
 
 pub fn is_surface(v: &Value) -> bool {
     v.as_obj::<MeshValue>().is_some() || v.as_obj::<SurfaceValue>().is_some()
 }
 
-pub fn bbox_of(v: &Value) -> Option<(DVec3, DVec3)> {
-    if !is_surface(v) {
-        return None;
-    }
-    let b = mesh_of(v)?.bounds()?;
-    Some((b.min, b.max))
+pub fn bbox_of(it: &mut Interp, v: &Value) -> Option<Result<(DVec3, DVec3), Exn>> {
+    let mesh = mesh_of(it, v)?;
+    Some(mesh.and_then(|m| {
+        m.bounds()
+            .map(|b| (b.min, b.max))
+            .ok_or_else(|| err("bbox: the surface is empty"))
+    }))
 }
 
 /// A transformed copy of a surface-like value (a parametric surface becomes its mesh); None
 /// when `v` is not one.
-pub fn transform(v: &Value, m: &DMat4) -> Option<LResult> {
-    if !is_surface(v) {
-        return None;
-    }
-    let Some(mesh) = mesh_of(v) else {
-        return Some(Err(err("the surface cannot be tessellated")));
-    };
-    Some(mesh.transformed(m).map(mesh_value).map_err(mesh_err))
+pub fn transform(it: &mut Interp, v: &Value, m: &DMat4) -> Option<LResult> {
+    let mesh = mesh_of(it, v)?;
+    Some(mesh.and_then(|mesh| mesh.transformed(m).map(mesh_value).map_err(mesh_err)))
 }
 
 fn curve_ref(it: &Interp, v: &Value) -> Result<CurveRef, Exn> {

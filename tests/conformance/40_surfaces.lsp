@@ -50,3 +50,10 @@ cyl
 ;=> 1
 (surface-section 1 '(0 0 0) '(0 0 1))
 ;!! bad argument type: surfacep 1
+;; draw, bbox and move take parametric surfaces through their mesh at CHORDTOL
+(bbox (sphere-surface '(0 0 0) 1.0))
+;=> ((-1.0 -1.0 -1.0) (1.0 1.0 1.0))
+(type (move cyl '(1 0 0)))
+;=> MESH
+(type (draw cyl))
+;=> SURFACE
