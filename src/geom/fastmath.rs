@@ -48,9 +48,12 @@ pub fn atan2(y: f64, x: f64) -> f64 {
         (FRAC_PI_4, 0.5 * MOREBITS, (ay - ax) / (ay + ax))
     };
     let z = t * t;
-    let p = (((P[0] * z + P[1]) * z + P[2]) * z + P[3]) * z + P[4];
-    let q = ((((z + Q[0]) * z + Q[1]) * z + Q[2]) * z + Q[3]) * z + Q[4];
-    let r = base + ((t * (z * p / q) + t) + more);
+    // P and Q by Estrin's scheme (shorter dependency chains than Horner).
+    let (z2, tz) = (z * z, t * z);
+    let z4 = z2 * z2;
+    let p = (P[0] * z2 + (P[1] * z + P[2])) * z2 + (P[3] * z + P[4]);
+    let q = (z + Q[0]) * z4 + ((Q[1] * z + Q[2]) * z2 + (Q[3] * z + Q[4]));
+    let r = base + ((tz * p / q + t) + more);
     // r = atan(|y| / |x|) in [0, π/2]; the left half-plane is π − r (π's low part added back).
     let r = if x < 0.0 {
         (PI - r) + 2.0 * MOREBITS
