@@ -182,7 +182,7 @@ impl Arc {
 
     /// The angle of `p` projected into the arc's plane, in [0, 2π) (the fast atan2 of
     /// `fastmath`: within 2 ulps of std's, same sign, so seam points stay at 0).
-    #[inline]
+    #[inline(always)]
     pub fn angle_of(&self, p: DVec3) -> f64 {
         let v = p - self.center;
         norm_angle(atan2(v.dot(self.y_axis), v.dot(self.x_axis)))

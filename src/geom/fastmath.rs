@@ -32,7 +32,7 @@ const Q: [f64; 5] = [
 
 /// atan2(y, x) within ~1 ulp of std's, with the same sign and the same special values
 /// (zeros, infinities and NaN fall back to std).
-#[inline]
+#[inline(always)]
 pub fn atan2(y: f64, x: f64) -> f64 {
     let (ay, ax) = (y.abs(), x.abs());
     // Both zero, non-finite or near overflow (ay + ax below): std handles it.
