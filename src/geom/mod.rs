@@ -16,6 +16,7 @@ pub mod bspline;
 pub mod circle;
 pub mod curve;
 pub mod error;
+pub(crate) mod fastmath;
 pub mod frame;
 pub mod intersect;
 pub mod line;

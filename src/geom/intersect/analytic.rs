@@ -172,8 +172,11 @@ pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
     let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
     let (sl1, sl2) = (tol / r1, tol / r2);
     let push = |p: DVec3, tangent: bool, out: &mut LHits| {
-        let (ta, tb) = (a.angle_of(p), b.angle_of(p));
-        let (Some(s), Some(u)) = (a.param_of_angle(ta, sl1), b.param_of_angle(tb, sl2)) else {
+        // b's angle (an atan2) only once p is known to be on arc a.
+        let Some(s) = a.param_of_angle(a.angle_of(p), sl1) else {
+            return;
+        };
+        let Some(u) = b.param_of_angle(b.angle_of(p), sl2) else {
             return;
         };
         let kind = if tangent {

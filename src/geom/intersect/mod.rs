@@ -508,3 +508,115 @@ pub fn intersect_near(hits: &[Hit], near: DVec3) -> Option<DVec3> {
                 .total_cmp(&(*q - near).length_squared())
         })
 }
+
+#[cfg(test)]
+mod fast_param_tests {
+    //! The hit parameters on circles and arcs use `fastmath::atan2`: check them against the
+    //! straightforward reference (std atan2 of the hit point in the curve's frame).
+    use super::*;
+    use crate::geom::arc::norm_angle;
+
+    struct Rng(u64);
+    impl Rng {
+        fn f(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn pt(&mut self, s: f64) -> DVec3 {
+            DVec3::new(self.f() * s, self.f() * s, self.f() * s)
+        }
+    }
+
+    /// The public parameter of the hit point `p` on `c` by the reference formula.
+    fn reference_t(c: &Curve, p: DVec3, tol: f64) -> Option<f64> {
+        let a = as_arc(c)?;
+        let v = p - a.center;
+        let ang = norm_angle(v.dot(a.y_axis).atan2(v.dot(a.x_axis)));
+        a.param_of_angle(ang, tol / a.radius)
+    }
+
+    fn random_pair(r: &mut Rng, i: usize) -> Option<(Curve, Curve)> {
+        let flat = |p: DVec3| DVec3::new(p.x, p.y, 0.0);
+        let pair = match i % 4 {
+            0 => {
+                let (c, a) = (flat(r.pt(10.0)), flat(r.pt(10.0)));
+                (
+                    Curve::line(a, c + (c - a) * 0.3),
+                    Curve::arc(c, 1.0 + r.f() * 3.0, r.f() * 7.0, r.f() * 7.0, None),
+                )
+            }
+            1 => {
+                let c = flat(r.pt(10.0));
+                (
+                    Curve::circle(c, 2.0 + r.f(), None),
+                    Curve::circle(c + flat(r.pt(3.0)), 1.0 + r.f() * 2.0, None),
+                )
+            }
+            2 => {
+                let c = flat(r.pt(10.0));
+                let n = if r.f() < 0.5 { DVec3::Z } else { -DVec3::Z };
+                (
+                    Curve::arc(c, 2.0 + r.f(), r.f() * 7.0, r.f() * 7.0, Some(n)),
+                    Curve::arc(
+                        c + flat(r.pt(3.0)),
+                        1.0 + r.f() * 2.0,
+                        r.f() * 7.0,
+                        1.0,
+                        None,
+                    ),
+                )
+            }
+            _ => {
+                let (a, b) = (r.pt(10.0), r.pt(10.0));
+                let ab = b - a;
+                let m = (a + b) * 0.5;
+                let perp = |n: DVec3| (n - ab * (n.dot(ab) / ab.length_squared())).normalize();
+                let (n1, n2) = (perp(r.pt(1.0) - 0.5), perp(r.pt(1.0) - 0.5));
+                let c1 = m + n1.cross(ab).normalize() * (r.f() * 4.0 - 2.0);
+                let c2 = m + n2.cross(ab).normalize() * (r.f() * 4.0 - 2.0);
+                (
+                    Curve::arc(c1, (a - c1).length(), r.f() * 6.0, r.f() * 6.0, Some(n1)),
+                    Curve::circle(c2, (a - c2).length(), Some(n2)),
+                )
+            }
+        };
+        match pair {
+            (Ok(a), Ok(b)) => Some((a, b)),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn hit_parameters_match_std_atan2_reference() {
+        let mut r = Rng(0x9E3779B97F4A7C15);
+        let tol = GEOMTOL;
+        let mut checked = 0;
+        for i in 0..20_000 {
+            let Some((a, b)) = random_pair(&mut r, i) else {
+                continue;
+            };
+            for (x, y) in [(&a, &b), (&b, &a)] {
+                for h in intersect(x, y, tol) {
+                    if matches!(h.kind, HitKind::Overlap(_)) {
+                        continue;
+                    }
+                    for (c, t) in [(x, h.t1), (y, h.t2)] {
+                        if let Some(rt) = reference_t(c, h.point, tol) {
+                            assert!(
+                                (t - rt).abs() <= 1e-12,
+                                "{c:?} at {:?}: {t} vs {rt}",
+                                h.point
+                            );
+                            checked += 1;
+                        } else if as_arc(c).is_some() {
+                            panic!("hit {h:?} not on {c:?} by the reference");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 10_000, "only {checked} parameters checked");
+    }
+}
