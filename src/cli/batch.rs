@@ -339,6 +339,7 @@ enum Outcome {
 struct Job<'a> {
     name: &'a str,
     text: &'a str,
+    script_path: &'a Path,
     script_dir: PathBuf,
     common: &'a Common,
     sets: &'a [String],
@@ -369,9 +370,7 @@ impl Job<'_> {
             it.add_source(self.name, self.text);
             it.base_dir = Some(self.script_dir.clone());
             it.out = Box::new(std::io::sink());
-            let mut roots = vec![self.script_dir.clone()];
-            roots.extend(outputs.iter().map(|o| parent_dir(o)));
-            it.ext::<FsPolicy>().roots = roots;
+            it.ext::<FsPolicy>().roots = super::run::script_roots(self.script_path, outputs);
             self.interrupts
                 .lock()
                 .expect("lock")
@@ -409,13 +408,6 @@ impl Job<'_> {
                 Err(m) => Outcome::Failed(m),
             }
         })
-    }
-}
-
-fn parent_dir(p: &Path) -> PathBuf {
-    match p.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
     }
 }
 
@@ -506,10 +498,11 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
             }
         });
     }
-    let script_dir = parent_dir(&args.file);
+    let script_dir = super::run::parent_dir(&args.file);
     let job = Job {
         name: &name,
         text: &text,
+        script_path: &args.file,
         script_dir,
         common,
         sets: &args.set,

@@ -106,16 +106,18 @@ fn leave(mut it: Interp, status: i32) -> i32 {
 }
 
 /// The directories a script may write below: its own and each output's.
-fn script_roots(file: &Path, outputs: &[PathBuf]) -> Vec<PathBuf> {
-    let dir_of = |p: &Path| -> PathBuf {
-        match p.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-            _ => PathBuf::from("."),
-        }
-    };
-    std::iter::once(dir_of(file))
-        .chain(outputs.iter().map(|o| dir_of(o)))
+pub fn script_roots(file: &Path, outputs: &[PathBuf]) -> Vec<PathBuf> {
+    std::iter::once(parent_dir(file))
+        .chain(outputs.iter().map(|o| parent_dir(o)))
         .collect()
+}
+
+/// The directory a file is in ("." for a bare file name).
+pub fn parent_dir(p: &Path) -> PathBuf {
+    match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
 }
 
 pub fn eval_expr(expr: &str, sets: &[String], common: &Common) -> i32 {
