@@ -8,7 +8,6 @@ pub mod drawing;
 pub mod dxf;
 pub mod dxf_writer;
 pub mod entity;
-pub mod groups;
 pub mod svg;
 
 use std::path::Path;
