@@ -21,6 +21,7 @@ pub mod frame;
 pub mod intersect;
 pub mod line;
 pub mod mesh;
+pub mod minimize;
 pub mod offset;
 pub mod piece;
 pub mod polyline;

@@ -272,30 +272,8 @@ fn bez_nearest(b: &Bez, p: DVec3) -> (f64, DVec3) {
     let mut best = samples[0];
     let h = 1.0 / n as f64;
     for &(_, t0) in samples.iter().take(3) {
-        let (mut a, mut c) = ((t0 - h).max(0.0), (t0 + h).min(1.0));
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        let mut x1 = c - g * (c - a);
-        let mut x2 = a + g * (c - a);
-        let (mut f1, mut f2) = (d2(x1), d2(x2));
-        for _ in 0..80 {
-            if f1 < f2 {
-                c = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = c - g * (c - a);
-                f1 = d2(x1);
-            } else {
-                a = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = a + g * (c - a);
-                f2 = d2(x2);
-            }
-            if c - a < 1e-15 {
-                break;
-            }
-        }
-        let t = 0.5 * (a + c);
+        let (a, c) = ((t0 - h).max(0.0), (t0 + h).min(1.0));
+        let t = crate::geom::minimize::golden_section_min(d2, a, c, 80, 1e-15);
         let f = d2(t);
         if f < best.0 {
             best = (f, t);

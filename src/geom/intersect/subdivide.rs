@@ -377,38 +377,15 @@ fn graze(ctx: &Ctx, n: DVec3, ra: (f64, f64), rb: (f64, f64), out: &mut LHits) {
         if (i > 0 && left * gi < 0.0) || (i < K && right * gi < 0.0) {
             continue;
         }
-        let (mut lo, mut hi) = (ss[i.saturating_sub(1)], ss[(i + 1).min(K)]);
         let sgn = gi.signum();
         let f = |s: f64| sgn * gap(s, us[i]).0;
-        let phi = 0.5 * (5f64.sqrt() - 1.0);
-        let (mut x1, mut x2) = (hi - phi * (hi - lo), lo + phi * (hi - lo));
-        let (mut f1, mut f2) = (f(x1), f(x2));
-        for _ in 0..100 {
-            if f1 < f2 {
-                hi = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = hi - phi * (hi - lo);
-                f1 = f(x1);
-            } else {
-                lo = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = lo + phi * (hi - lo);
-                f2 = f(x2);
-            }
-            if hi - lo <= 1e-16 {
-                break;
-            }
-        }
-        let se = 0.5 * (lo + hi);
+        let (lo, hi) = (ss[i.saturating_sub(1)], ss[(i + 1).min(K)]);
+        let se = crate::geom::minimize::golden_section_min(f, lo, hi, 100, 1e-16);
         let ge = f(se);
         if ge < 0.0 {
             // The gap dips through zero: a root on each side of the extremum.
-            let a0 = ss[i.saturating_sub(1)];
-            let a1 = ss[(i + 1).min(K)];
-            push(root(a0, se, gi, us[i]), us[i], false, out);
-            push(root(se, a1, -gi, us[i]), us[i], false, out);
+            push(root(lo, se, gi, us[i]), us[i], false, out);
+            push(root(se, hi, -gi, us[i]), us[i], false, out);
         } else if ge <= ctx.tol {
             push(se, us[i], true, out);
         }
