@@ -662,32 +662,13 @@ pub mod xform {
     }
 }
 
-/// A number printed like C's `%g` (6 significant digits, no trailing zeros).
+/// A number as C's `%g` prints it (6 significant digits), without a sign on zero: the printed
+/// form of curves. The formatting itself is the text library's (pure, no language types).
 pub fn fmt_g(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    if !x.is_finite() {
-        return format!("{x}");
-    }
-    let exp = x.abs().log10().floor() as i32;
-    let strip = |s: String| {
-        if s.contains('.') {
-            s.trim_end_matches('0').trim_end_matches('.').to_string()
-        } else {
-            s
-        }
-    };
-    let s = format!("{:.*e}", 5, x);
-    let (mant, e) = s.split_once('e').unwrap();
-    let e: i32 = e.parse().unwrap();
-    if !(-5..6).contains(&e) {
-        let m = strip(mant.to_string());
-        format!("{m}e{}{:02}", if e < 0 { '-' } else { '+' }, e.abs())
-    } else {
-        let _ = exp;
-        strip(format!("{:.*}", (5 - e).max(0) as usize, x))
-    }
+    crate::builtins::text::format_g(x, 6)
 }
 
 fn fmt_pt(p: DVec3) -> String {
