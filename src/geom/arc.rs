@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 
 use super::error::{finite, finite3, invalid, Result};
-use super::fastmath::atan2;
+use super::fastmath::{atan2, atan2_2};
 use super::frame::arbitrary_axis;
 use super::traits::*;
 
@@ -192,16 +192,48 @@ impl Arc {
     /// radians beyond either end (clamped to [0, 1]).
     #[inline]
     pub(crate) fn param_of_angle(&self, a: f64, slack: f64) -> Option<f64> {
+        self.param_of_angle_with(a, || slack)
+    }
+
+    /// `param_of_angle` with the slack computed only when the angle is off the arc (the
+    /// slack is a division, and most points are on it).
+    #[inline(always)]
+    fn param_of_angle_with(&self, a: f64, slack: impl FnOnce() -> f64) -> Option<f64> {
         let rel = norm_angle(a - self.start);
         if rel <= self.sweep {
-            Some(rel / self.sweep)
-        } else if rel <= self.sweep + slack {
+            return Some(rel / self.sweep);
+        }
+        let slack = slack();
+        if rel <= self.sweep + slack {
             Some(1.0)
         } else if rel >= TAU - slack {
             Some(0.0)
         } else {
             None
         }
+    }
+
+    /// `param_of_angle(angle_of(p), tol / radius)`, dividing only for a point off the arc.
+    #[inline(always)]
+    pub(crate) fn param_of_point(&self, p: DVec3, tol: f64) -> Option<f64> {
+        self.param_of_angle_with(self.angle_of(p), || tol / self.radius)
+    }
+
+    /// The public parameters of two points of the circle, as
+    /// `param_of_angle(angle_of(p), tol / radius)` gives them (bit for bit), with both angles
+    /// computed side by side (the two hits of a pair).
+    #[inline(always)]
+    pub(crate) fn params_of2(&self, p: [DVec3; 2], tol: f64) -> [Option<f64>; 2] {
+        let (v0, v1) = (p[0] - self.center, p[1] - self.center);
+        let ang = atan2_2(
+            [v0.dot(self.y_axis), v1.dot(self.y_axis)],
+            [v0.dot(self.x_axis), v1.dot(self.x_axis)],
+        );
+        let slack = || tol / self.radius;
+        [
+            self.param_of_angle_with(norm_angle(ang[0]), slack),
+            self.param_of_angle_with(norm_angle(ang[1]), slack),
+        ]
     }
 
     /// The tangent direction (increasing angle) at a point `p` of the circle, length r.

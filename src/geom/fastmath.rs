@@ -34,19 +34,104 @@ const Q: [f64; 5] = [
 /// (zeros, infinities and NaN fall back to std).
 #[inline(always)]
 pub fn atan2(y: f64, x: f64) -> f64 {
-    let (ay, ax) = (y.abs(), x.abs());
-    // Both zero, non-finite or near overflow (ay + ax below): std handles it.
-    let big = ay.max(ax);
-    if big.is_nan() || big >= 1e300 || big == 0.0 {
+    if special(y, x) {
         return y.atan2(x);
     }
-    let (base, more, t) = if ay > T3P8 * ax {
-        (FRAC_PI_2, MOREBITS, -ax / ay)
-    } else if ay <= 0.66 * ax {
-        (0.0, 0.0, ay / ax)
-    } else {
-        (FRAC_PI_4, 0.5 * MOREBITS, (ay - ax) / (ay + ax))
+    kernel(y, x)
+}
+
+/// `atan2` of two pairs at once (the two hits of a circle pair), bit for bit the same as
+/// two calls of `atan2`. On x86-64 both lanes run in one SSE2 register.
+#[inline(always)]
+pub fn atan2_2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    // SAFETY: SSE2 is enabled for this build (it is part of the x86-64 baseline).
+    let mut r = unsafe { kernel2(y, x) };
+    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+    let mut r = kernel2(y, x);
+    for i in 0..2 {
+        if special(y[i], x[i]) {
+            r[i] = y[i].atan2(x[i]);
+        }
+    }
+    r
+}
+
+#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+#[inline(always)]
+fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
+    [kernel(y[0], x[0]), kernel(y[1], x[1])]
+}
+
+/// `kernel` on two lanes, operation for operation (so the results are identical).
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[target_feature(enable = "sse2")]
+#[inline]
+fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
+    use std::arch::x86_64::*;
+    let k = _mm_set1_pd;
+    let sel = |m: __m128d, a: __m128d, b: __m128d| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b));
+    let sign = k(-0.0);
+    let (y, x) = (_mm_set_pd(y[1], y[0]), _mm_set_pd(x[1], x[0]));
+    let (ay, ax) = (_mm_andnot_pd(sign, y), _mm_andnot_pd(sign, x));
+    let hi = _mm_cmpgt_pd(ay, _mm_mul_pd(k(T3P8), ax));
+    let lo = _mm_cmple_pd(ay, _mm_mul_pd(k(0.66), ax));
+    let pick = |h: __m128d, l: __m128d, m: __m128d| sel(hi, h, sel(lo, l, m));
+    let num = pick(_mm_xor_pd(ax, sign), ay, _mm_sub_pd(ay, ax));
+    let den = pick(ay, ax, _mm_add_pd(ay, ax));
+    let base = pick(k(FRAC_PI_2), k(0.0), k(FRAC_PI_4));
+    let more = pick(k(MOREBITS), k(0.0), k(0.5 * MOREBITS));
+    let (add, mul) = (_mm_add_pd, _mm_mul_pd);
+    let t = _mm_div_pd(num, den);
+    let z = mul(t, t);
+    let (z2, tz) = (mul(z, z), mul(t, z));
+    let z4 = mul(z2, z2);
+    let p = add(
+        mul(add(mul(k(P[0]), z2), add(mul(k(P[1]), z), k(P[2]))), z2),
+        add(mul(k(P[3]), z), k(P[4])),
+    );
+    let q = add(
+        mul(add(z, k(Q[0])), z4),
+        add(
+            mul(add(mul(k(Q[1]), z), k(Q[2])), z2),
+            add(mul(k(Q[3]), z), k(Q[4])),
+        ),
+    );
+    let r = add(base, add(add(_mm_div_pd(mul(tz, p), q), t), more));
+    let left = add(_mm_sub_pd(k(PI), r), k(2.0 * MOREBITS));
+    let r = sel(_mm_cmplt_pd(x, k(0.0)), left, r);
+    let r = _mm_or_pd(_mm_andnot_pd(sign, r), _mm_and_pd(sign, y));
+    [_mm_cvtsd_f64(r), _mm_cvtsd_f64(_mm_unpackhi_pd(r, r))]
+}
+
+/// Both zero, non-finite or near overflow (|y| + |x| in the kernel): std handles those.
+#[inline(always)]
+fn special(y: f64, x: f64) -> bool {
+    let big = y.abs().max(x.abs());
+    big.is_nan() || big >= 1e300 || big == 0.0
+}
+
+/// The reduction and the rational approximation, for finite (y, x) not both zero.
+#[inline(always)]
+fn kernel(y: f64, x: f64) -> f64 {
+    let (ay, ax) = (y.abs(), x.abs());
+    // The reduction is chosen by selects, not branches: hit angles fall in every octant at
+    // random, and straight-line code lets several angles share vector registers.
+    let (hi, lo) = (ay > T3P8 * ax, ay <= 0.66 * ax);
+    let pick = |h: f64, l: f64, m: f64| {
+        if hi {
+            h
+        } else if lo {
+            l
+        } else {
+            m
+        }
     };
+    let num = pick(-ax, ay, ay - ax);
+    let den = pick(ay, ax, ay + ax);
+    let base = pick(FRAC_PI_2, 0.0, FRAC_PI_4);
+    let more = pick(MOREBITS, 0.0, 0.5 * MOREBITS);
+    let t = num / den;
     let z = t * t;
     // P and Q by Estrin's scheme (shorter dependency chains than Horner).
     let (z2, tz) = (z * z, t * z);
@@ -55,11 +140,8 @@ pub fn atan2(y: f64, x: f64) -> f64 {
     let q = (z + Q[0]) * z4 + ((Q[1] * z + Q[2]) * z2 + (Q[3] * z + Q[4]));
     let r = base + ((tz * p / q + t) + more);
     // r = atan(|y| / |x|) in [0, π/2]; the left half-plane is π − r (π's low part added back).
-    let r = if x < 0.0 {
-        (PI - r) + 2.0 * MOREBITS
-    } else {
-        r
-    };
+    let left = (PI - r) + 2.0 * MOREBITS;
+    let r = if x < 0.0 { left } else { r };
     r.copysign(y)
 }
 
@@ -137,6 +219,35 @@ mod tests {
         }
         eprintln!("worst {worst} ulps");
         assert!(worst <= 2);
+    }
+
+    #[test]
+    fn two_lanes_are_bitwise_two_calls() {
+        let mut r = Rng(0x9E3779B97F4A7C15);
+        let specials = [0.0, -0.0, f64::INFINITY, f64::NAN, 1e300, -1e-310];
+        for i in 0..200_000 {
+            let mut v = [0.0; 4];
+            for x in &mut v {
+                *x = if r.next().is_multiple_of(16) {
+                    specials[(r.next() % 6) as usize]
+                } else {
+                    (r.f() * 2.0 - 1.0) * (r.f() * 40.0 - 20.0).exp2()
+                };
+            }
+            let (y, x) = ([v[0], v[1]], [v[2], v[3]]);
+            let two = atan2_2(y, x);
+            for k in 0..2 {
+                let one = atan2(y[k], x[k]);
+                assert!(
+                    two[k].to_bits() == one.to_bits() || (two[k].is_nan() && one.is_nan()),
+                    "case {i}: atan2({:e}, {:e}) = {:e} in lanes, {:e} alone",
+                    y[k],
+                    x[k],
+                    two[k],
+                    one
+                );
+            }
+        }
     }
 
     #[test]

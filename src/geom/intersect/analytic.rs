@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 
 use glam::DVec3;
 
-use super::{LHit, LHits, LKind, TANGENT_SIN};
+use super::{LKind, Sink, TANGENT_SIN};
 use crate::geom::arc::{norm_angle, Arc};
 use crate::geom::line::Line;
 use crate::geom::piece::Piece;
@@ -30,6 +30,10 @@ fn kind_by_tangents(t1: DVec3, t2: DVec3) -> LKind {
 /// The parameter of `p` on a segment of length `len` if within `tol` of its range.
 #[inline]
 fn seg_param(s: f64, len: f64, tol: f64) -> Option<f64> {
+    if (0.0..=1.0).contains(&s) {
+        return Some(s);
+    }
+    // Only now the slack (a division): most candidates are inside or far outside.
     let slack = tol / len;
     if (-slack..=1.0 + slack).contains(&s) {
         Some(s.clamp(0.0, 1.0))
@@ -40,7 +44,7 @@ fn seg_param(s: f64, len: f64, tol: f64) -> Option<f64> {
 
 /// Segment / segment: the closest points of the two carriers; collinear pieces give an
 /// overlap segment (or a touch point when they only share an end).
-pub fn line_line(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
+pub fn line_line<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     let (da, db) = (a.dir(), b.dir());
     let (la, lb) = (da.length(), db.length());
     let w = b.p0 - a.p0;
@@ -64,11 +68,11 @@ pub fn line_line(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
     };
     let (pa, pb) = (a.eval(s), b.eval(u));
     if (pa - pb).length_squared() <= tol * tol {
-        out.push(LHit::new(s, u, (pa + pb) * 0.5, kind_by_tangents(da, db)));
+        out.put(s, u, (pa + pb) * 0.5, kind_by_tangents(da, db));
     }
 }
 
-fn collinear(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
+fn collinear<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     let la = a.dir().length();
     let (s0, s1) = (a.project(b.p0), a.project(b.p1));
     let lo = s0.min(s1).max(0.0);
@@ -79,26 +83,21 @@ fn collinear(a: &Line, b: &Line, tol: f64, out: &mut LHits) {
             p1: a.eval(hi),
         };
         let (u0, u1) = (b.project(piece.p0), b.project(piece.p1));
-        out.push(LHit::new(
+        out.put(
             lo,
             u0.clamp(0.0, 1.0),
             piece.p0,
             LKind::Overlap(Box::new(Piece::Line(piece)), hi, u1.clamp(0.0, 1.0)),
-        ));
+        );
     } else if (lo - hi) * la <= tol {
         let s = (0.5 * (lo + hi)).clamp(0.0, 1.0);
         let p = a.eval(s);
-        out.push(LHit::new(
-            s,
-            b.project(p).clamp(0.0, 1.0),
-            p,
-            LKind::Tangent,
-        ));
+        out.put(s, b.project(p).clamp(0.0, 1.0), p, LKind::Tangent);
     }
 }
 
 /// Segment / arc (or full circle).
-pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
+pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     let d = l.dir();
     let len = d.length();
     let n = a.normal;
@@ -107,20 +106,34 @@ pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
     let h0 = (l.p0 - c).dot(n);
     let dn = d.dot(n);
     let h1 = h0 + dn;
-    let slack = tol / r;
-    let push = |s: f64, p: DVec3, tangent: bool, out: &mut LHits| {
-        let Some(s) = seg_param(s, len, tol) else {
-            return;
+    // Puts the first `count` candidates (segment parameter, point) found on both curves;
+    // both arc angles are computed side by side.
+    let put = |cand: [(f64, DVec3); 2], count: usize, tangent: Option<bool>, out: &mut S| {
+        // The segment test first (cheap), then the angles of the points that pass it.
+        let mut on = [(0.0, DVec3::ZERO); 2];
+        let mut k = 0;
+        for &(s, p) in &cand[..count] {
+            if let Some(s) = seg_param(s, len, tol) {
+                on[k] = (s, p);
+                k += 1;
+            }
+        }
+        let u = match k {
+            0 => return,
+            1 => [a.param_of_point(on[0].1, tol), None],
+            _ => a.params_of2([on[0].1, on[1].1], tol),
         };
-        let Some(u) = a.param_of_angle(a.angle_of(p), slack) else {
-            return;
-        };
-        let kind = if tangent {
-            LKind::Tangent
-        } else {
-            kind_by_tangents(d, a.tangent_at_point(p))
-        };
-        out.push(LHit::new(s, u, p, kind));
+        for (&(s, p), u) in on.iter().zip(u).take(k) {
+            let Some(u) = u else {
+                continue;
+            };
+            let kind = match tangent {
+                Some(true) => LKind::Tangent,
+                Some(false) => LKind::Cross,
+                None => kind_by_tangents(d, a.tangent_at_point(p)),
+            };
+            out.put(s, u, p, kind);
+        }
     };
     if h0.abs() <= tol && h1.abs() <= tol {
         // In the circle's plane: project the segment into it.
@@ -140,12 +153,19 @@ pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
             } else {
                 foot
             };
-            push(sf, p, true, out);
+            put([(sf, p); 2], 1, Some(true), out);
         } else {
             let ds = half / dq2.sqrt();
             let (s1, s2) = (sf - ds, sf + ds);
-            push(s1, q0 + dq * s1, false, out);
-            push(s2, q0 + dq * s2, false, out);
+            // The circle's tangent is perpendicular to the radius, so the sine of its angle
+            // with the line is the cosine of the radius's: half / r at both points.
+            let tangent = half <= TANGENT_SIN * r;
+            put(
+                [(s1, q0 + dq * s1), (s2, q0 + dq * s2)],
+                2,
+                Some(tangent),
+                out,
+            );
         }
     } else {
         if dn == 0.0 {
@@ -156,35 +176,41 @@ pub fn line_arc(l: &Line, a: &Arc, tol: f64, out: &mut LHits) {
         let p = l.p0 + d * s;
         let rho = (p - c).length();
         if (rho - r).abs() <= tol {
-            push(s, p, false, out);
+            put([(s, p); 2], 1, None, out);
         }
     }
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
-pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
+pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     let (n1, n2) = (a.normal, b.normal);
     let (c1, c2) = (a.center, b.center);
     let (r1, r2) = (a.radius, b.radius);
     let v = c2 - c1;
-    let cross = n1.cross(n2);
-    let sin = cross.length();
+    // Equal normals (circles drawn in one plane, the common case) give a zero cross product
+    // exactly: skip computing it.
+    let (cross, sin) = if n1 == n2 {
+        (DVec3::ZERO, 0.0)
+    } else {
+        let cross = n1.cross(n2);
+        (cross, cross.length())
+    };
     let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
-    let (sl1, sl2) = (tol / r1, tol / r2);
-    let push = |p: DVec3, tangent: bool, out: &mut LHits| {
-        // b's angle (an atan2) only once p is known to be on arc a.
-        let Some(s) = a.param_of_angle(a.angle_of(p), sl1) else {
-            return;
-        };
-        let Some(u) = b.param_of_angle(b.angle_of(p), sl2) else {
-            return;
-        };
-        let kind = if tangent {
-            LKind::Tangent
-        } else {
-            kind_by_tangents(a.tangent_at_point(p), b.tangent_at_point(p))
-        };
-        out.push(LHit::new(s, u, p, kind));
+    // Puts the first `count` candidate points found on both arcs. The four angles are
+    // computed two by two, whatever the outcome: cheaper than deciding first.
+    let put = |p: [DVec3; 2], count: usize, tangent: Option<bool>, out: &mut S| {
+        let (s, u) = (a.params_of2(p, tol), b.params_of2(p, tol));
+        for i in 0..count {
+            let (Some(s), Some(u)) = (s[i], u[i]) else {
+                continue;
+            };
+            let kind = match tangent {
+                Some(true) => LKind::Tangent,
+                Some(false) => LKind::Cross,
+                None => kind_by_tangents(a.tangent_at_point(p[i]), b.tangent_at_point(p[i])),
+            };
+            out.put(s, u, p[i], kind);
+        }
     };
     if off_plane <= tol {
         let vp = v - n1 * v.dot(n1);
@@ -209,10 +235,12 @@ pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
         let x = (d * d + (r1 - r2) * (r1 + r2)) / (2.0 * d);
         let base = c1 + ex * x;
         if 2.0 * h <= tol {
-            push(base, true, out);
+            put([base; 2], 1, Some(true), out);
         } else {
-            push(base - ey * h, false, out);
-            push(base + ey * h, false, out);
+            // The tangents are perpendicular to the radii, so the sine of their angle is
+            // that of the radii: twice the area of the triangle c1 c2 p over r1 r2.
+            let tangent = d * h <= TANGENT_SIN * r1 * r2;
+            put([base - ey * h, base + ey * h], 2, Some(tangent), out);
         }
         return;
     }
@@ -250,21 +278,21 @@ pub fn arc_arc(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
     if 2.0 * half <= tol {
         let p = on_a_circle(x0);
         if on_b(p) {
-            push(p, false, out);
+            put([p; 2], 1, None, out);
         }
     } else {
-        for sgn in [-1.0, 1.0] {
-            let p = on_a_circle(x0 + dir * (sgn * half));
-            if on_b(p) {
-                push(p, false, out);
-            }
+        let p = [-1.0, 1.0].map(|sgn| on_a_circle(x0 + dir * (sgn * half)));
+        match (on_b(p[0]), on_b(p[1])) {
+            (true, true) => put(p, 2, None, out),
+            (true, false) => put(p, 1, None, out),
+            (false, true) => put([p[1], p[0]], 1, None, out),
+            (false, false) => {}
         }
     }
-    out.sort_by(|x, y| x.s.total_cmp(&y.s));
 }
 
 /// Two arcs on the same circle: the shared angular ranges as overlap arcs, or touch points.
-fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
+fn cocircular<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     let slack = tol / a.radius;
     let same_dir = a.normal.dot(b.normal) > 0.0;
     let b_piece = |lo: f64, hi: f64| -> (f64, f64) {
@@ -275,7 +303,7 @@ fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
         let uh = b.param_of_angle(b.angle_of(ph), slack).unwrap_or(1.0);
         (ul, uh)
     };
-    let emit = |lo: f64, hi: f64, out: &mut LHits| {
+    let emit = |lo: f64, hi: f64, out: &mut S| {
         let (ul, uh) = b_piece(lo, hi);
         if (hi - lo) * a.radius > tol {
             let piece = if hi - lo >= TAU - 1e-15 {
@@ -292,21 +320,16 @@ fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
                 }
             };
             let s0 = lo / a.sweep;
-            out.push(LHit::new(
+            out.put(
                 s0,
                 ul,
                 a.point_at_angle(a.start + lo),
                 LKind::Overlap(Box::new(Piece::Arc(piece)), (hi / a.sweep).min(1.0), uh),
-            ));
+            );
         } else {
             let m = 0.5 * (lo + hi);
             let p = a.point_at_angle(a.start + m);
-            out.push(LHit::new(
-                (m / a.sweep).clamp(0.0, 1.0),
-                ul,
-                p,
-                LKind::Tangent,
-            ));
+            out.put((m / a.sweep).clamp(0.0, 1.0), ul, p, LKind::Tangent);
         }
     };
     if a.is_full() && b.is_full() {
@@ -349,12 +372,12 @@ fn cocircular(a: &Arc, b: &Arc, tol: f64, out: &mut LHits) {
             sweep: hi - lo,
             ..*a
         };
-        out.push(LHit::new(
+        out.put(
             lo / sw1,
             ul,
             a.point_at_angle(a.start + lo),
             LKind::Overlap(Box::new(Piece::Arc(piece)), (hi - TAU) / sw1, uh),
-        ));
+        );
         return;
     }
     for (lo, hi) in merged {

@@ -110,6 +110,44 @@ impl LHit {
 
 pub(crate) type LHits = SmallVec<[LHit; 4]>;
 
+/// Where the closed forms put their hits: the piece-hit list of the general path, or, for a
+/// pair of simple curves, the public hit list itself (their piece parameters are the public
+/// ones), which spares an intermediate copy per hit.
+pub(crate) trait Sink {
+    fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind);
+}
+
+impl Sink for LHits {
+    #[inline]
+    fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind) {
+        self.push(LHit::new(s, u, p, kind));
+    }
+}
+
+impl Sink for Vec<Hit> {
+    #[inline]
+    fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind) {
+        self.push(Hit {
+            point: p,
+            t1: s,
+            t2: u,
+            kind: hit_kind(kind),
+        });
+    }
+}
+
+/// The public list with the two curves' roles swapped. Only for `line_arc` with the line
+/// second: a line and an arc never overlap, so swapping the parameters is the whole job.
+struct Swapped<'a>(&'a mut Vec<Hit>);
+
+impl Sink for Swapped<'_> {
+    #[inline]
+    fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind) {
+        debug_assert!(!matches!(kind, LKind::Overlap(..)));
+        self.0.put(u, s, p, kind);
+    }
+}
+
 fn piece_to_curve(p: Piece) -> Curve {
     match p {
         Piece::Line(l) => Curve::Line(l),
@@ -207,55 +245,42 @@ fn rank(c: &Curve) -> u8 {
     }
 }
 
-/// The defining numbers of a line, circle or arc, on the stack.
-fn simple_key(c: &Curve) -> Option<[f64; 11]> {
-    Some(match c {
-        Curve::Line(l) => [
-            l.p0.x, l.p0.y, l.p0.z, l.p1.x, l.p1.y, l.p1.z, 0.0, 0.0, 0.0, 0.0, 0.0,
-        ],
-        Curve::Circle(ci) => {
-            let a = &ci.arc;
-            let (c, n) = (a.center, a.normal);
-            [c.x, c.y, c.z, n.x, n.y, n.z, a.radius, 0.0, 0.0, 0.0, 0.0]
-        }
-        Curve::Arc(a) => {
-            let (c, n) = (a.center, a.normal);
-            [
-                c.x, c.y, c.z, n.x, n.y, n.z, a.radius, a.start, a.sweep, 0.0, 0.0,
-            ]
-        }
-        _ => return None,
-    })
+/// Lexicographic order of two runs of numbers (`total_cmp`, so NaN and -0 are ordered).
+fn lex(a: &[f64], b: &[f64]) -> Ordering {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| x.total_cmp(y))
+        .find(|o| o.is_ne())
+        .unwrap_or_else(|| a.len().cmp(&b.len()))
 }
 
-/// A total order on curves: by kind, then by their defining numbers.
+/// A total order on curves: by kind, then by their defining numbers (for lines, circles and
+/// arcs read in place: this runs for every pair, so it must cost next to nothing).
 fn canonical_cmp(a: &Curve, b: &Curve) -> Ordering {
     let by_kind = rank(a).cmp(&rank(b));
     if by_kind != Ordering::Equal {
         return by_kind;
     }
-    if let (Some(ka), Some(kb)) = (simple_key(a), simple_key(b)) {
-        for (x, y) in ka.iter().zip(&kb) {
-            match x.total_cmp(y) {
-                Ordering::Equal => continue,
-                o => return o,
-            }
+    let arc = |x: &Arc, y: &Arc| {
+        lex(&x.center.to_array(), &y.center.to_array())
+            .then_with(|| lex(&x.normal.to_array(), &y.normal.to_array()))
+            .then_with(|| x.radius.total_cmp(&y.radius))
+    };
+    match (a, b) {
+        (Curve::Line(x), Curve::Line(y)) => lex(&x.p0.to_array(), &y.p0.to_array())
+            .then_with(|| lex(&x.p1.to_array(), &y.p1.to_array())),
+        (Curve::Circle(x), Curve::Circle(y)) => arc(&x.arc, &y.arc),
+        (Curve::Arc(x), Curve::Arc(y)) => {
+            arc(x, y).then_with(|| lex(&[x.start, x.sweep], &[y.start, y.sweep]))
         }
-        return Ordering::Equal;
+        _ => {
+            let mut fa: SmallVec<[f64; 16]> = SmallVec::new();
+            let mut fb: SmallVec<[f64; 16]> = SmallVec::new();
+            fingerprint(a, &mut fa);
+            fingerprint(b, &mut fb);
+            lex(&fa, &fb)
+        }
     }
-    rank(a).cmp(&rank(b)).then_with(|| {
-        let mut fa: SmallVec<[f64; 16]> = SmallVec::new();
-        let mut fb: SmallVec<[f64; 16]> = SmallVec::new();
-        fingerprint(a, &mut fa);
-        fingerprint(b, &mut fb);
-        for (x, y) in fa.iter().zip(fb.iter()) {
-            match x.total_cmp(y) {
-                Ordering::Equal => continue,
-                o => return o,
-            }
-        }
-        fa.len().cmp(&fb.len())
-    })
 }
 
 fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
@@ -377,19 +402,19 @@ fn as_arc(c: &Curve) -> Option<&Arc> {
     }
 }
 
-/// Closed forms for two lines, circles or arcs, without copying them into pieces.
-fn simple_pair(a: &Curve, b: &Curve, tol: f64, hits: &mut LHits) -> bool {
+/// Closed forms for two lines, circles or arcs, straight into `out` (their piece parameters
+/// are the public ones). False when the pair is not of that kind.
+fn simple_pair(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) -> bool {
     match (a, b) {
-        (Curve::Line(x), Curve::Line(y)) => analytic::line_line(x, y, tol, hits),
+        (Curve::Line(x), Curve::Line(y)) => analytic::line_line(x, y, tol, out),
         (Curve::Line(x), _) if as_arc(b).is_some() => {
-            analytic::line_arc(x, as_arc(b).unwrap(), tol, hits)
+            analytic::line_arc(x, as_arc(b).unwrap(), tol, out)
         }
         (_, Curve::Line(y)) if as_arc(a).is_some() => {
-            analytic::line_arc(y, as_arc(a).unwrap(), tol, hits);
-            swap_from(hits, 0);
+            analytic::line_arc(y, as_arc(a).unwrap(), tol, &mut Swapped(out))
         }
         _ => match (as_arc(a), as_arc(b)) {
-            (Some(x), Some(y)) => analytic::arc_arc(x, y, tol, hits),
+            (Some(x), Some(y)) => analytic::arc_arc(x, y, tol, out),
             _ => return false,
         },
     }
@@ -397,13 +422,9 @@ fn simple_pair(a: &Curve, b: &Curve, tol: f64, hits: &mut LHits) -> bool {
 }
 
 fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
-    let mut hits = LHits::new();
-    if simple_pair(a, b, tol, &mut hits) {
+    if simple_pair(a, b, tol, out) {
         // The closed forms give distinct points (a double root comes out once) and no point
         // inside an overlap: only the order is left to fix.
-        for h in hits.drain(..) {
-            out.push(to_hit(h, 0.0, 1.0, 0.0, 1.0));
-        }
         if out.len() == 2 && out[1].t1 < out[0].t1 {
             out.swap(0, 1);
         } else if out.len() > 2 {
@@ -411,6 +432,7 @@ fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
         }
         return;
     }
+    let mut hits = LHits::new();
     let sa = a.spans();
     let sb = b.spans();
     let boxes_b: Vec<(DVec3, DVec3)> = sb.iter().map(|s| s.piece.hull_bbox()).collect();
@@ -449,11 +471,16 @@ fn to_hit(h: LHit, a0: f64, a1: f64, b0: f64, b1: f64) -> Hit {
         point: h.p,
         t1: map(h.s, a0, a1),
         t2: map(h.u, b0, b1),
-        kind: match h.kind {
-            LKind::Cross => HitKind::Cross,
-            LKind::Tangent => HitKind::Tangent,
-            LKind::Overlap(p, _, _) => HitKind::Overlap(Box::new(piece_to_curve(*p))),
-        },
+        kind: hit_kind(h.kind),
+    }
+}
+
+#[inline]
+fn hit_kind(k: LKind) -> HitKind {
+    match k {
+        LKind::Cross => HitKind::Cross,
+        LKind::Tangent => HitKind::Tangent,
+        LKind::Overlap(p, _, _) => HitKind::Overlap(Box::new(piece_to_curve(*p))),
     }
 }
 
