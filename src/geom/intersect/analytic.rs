@@ -196,10 +196,14 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         (cross, cross.length())
     };
     let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
-    // Puts the first `count` candidate points found on both arcs. The four angles are
-    // computed two by two, whatever the outcome: cheaper than deciding first.
+    // Puts the first `count` candidate points found on both arcs. The angles are computed
+    // two at a time: both points on a, then, if either is on a, both on b.
     let put = |p: [DVec3; 2], count: usize, tangent: Option<bool>, out: &mut S| {
-        let (s, u) = (a.params_of2(p, tol), b.params_of2(p, tol));
+        let s = a.params_of2(p, tol);
+        if s[..count].iter().all(Option::is_none) {
+            return;
+        }
+        let u = b.params_of2(p, tol);
         for i in 0..count {
             let (Some(s), Some(u)) = (s[i], u[i]) else {
                 continue;
