@@ -115,8 +115,8 @@ fn special(y: f64, x: f64) -> bool {
 #[inline(always)]
 fn kernel(y: f64, x: f64) -> f64 {
     let (ay, ax) = (y.abs(), x.abs());
-    // The reduction is chosen by selects, not branches: hit angles fall in every octant at
-    // random, and straight-line code lets several angles share vector registers.
+    // The reduction is chosen by selects, as `kernel2` must do it lane by lane: the two
+    // stay operation for operation the same, so their results are bit for bit equal.
     let (hi, lo) = (ay > T3P8 * ax, ay <= 0.66 * ax);
     let pick = |h: f64, l: f64, m: f64| {
         if hi {

@@ -107,11 +107,17 @@ fn straight_on_line(b: &Bez, l: &Line, tol: f64, out: &mut LHits) {
     }
     let start = out.len();
     super::analytic::line_line(&chord, l, tol, out);
+    // chord parameter → Bézier parameter (monotone straight piece assumed)
+    remap_to_bez(b, out, start, |t| chord.eval(t));
+}
+
+/// Map the first-piece parameters of the hits from `start` on (made against a stand-in for
+/// `b`: its chord or its arc) back to `b`, through the stand-in's point at each.
+fn remap_to_bez(b: &Bez, out: &mut LHits, start: usize, stand_in: impl Fn(f64) -> DVec3) {
     for h in &mut out[start..] {
-        // chord parameter → Bézier parameter (monotone straight piece assumed)
-        h.s = param_on_bez(b, chord.eval(h.s));
+        h.s = param_on_bez(b, stand_in(h.s));
         if let LKind::Overlap(_, se, _) = &mut h.kind {
-            *se = param_on_bez(b, chord.eval(*se));
+            *se = param_on_bez(b, stand_in(*se));
         }
     }
 }
@@ -170,10 +176,5 @@ fn on_circle(b: &Bez, a: &Arc, tol: f64, out: &mut LHits) {
     };
     let start = out.len();
     super::analytic::arc_arc(&arc, a, tol, out);
-    for h in &mut out[start..] {
-        h.s = param_on_bez(b, arc.eval(h.s));
-        if let LKind::Overlap(_, se, _) = &mut h.kind {
-            *se = param_on_bez(b, arc.eval(*se));
-        }
-    }
+    remap_to_bez(b, out, start, |t| arc.eval(t));
 }
