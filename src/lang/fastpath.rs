@@ -80,6 +80,22 @@ fn known() -> &'static Known {
     })
 }
 
+/// Shared by the integer and real arms. The plain operators (not `partial_cmp`) keep the IEEE
+/// answers for NaN: every ordering and `=` false, `/=` true.
+#[inline(always)]
+fn compare<T: PartialOrd>(op: Bin, a: T, b: T) -> Value {
+    Value::bool(match op {
+        Bin::Lt => a < b,
+        Bin::Gt => a > b,
+        Bin::Le => a <= b,
+        Bin::Ge => a >= b,
+        Bin::Eq => a == b,
+        Bin::Ne => a != b,
+        // Callers route only the comparisons here; once inlined this arm is dead code.
+        Bin::Add | Bin::Sub | Bin::Mul | Bin::Div => unreachable!("not a comparison"),
+    })
+}
+
 #[inline(always)]
 fn bin_numbers(op: Bin, x: &Value, y: &Value) -> Option<Value> {
     match (x, y) {
@@ -95,12 +111,7 @@ fn bin_numbers(op: Bin, x: &Value, y: &Value) -> Option<Value> {
                     }
                     Value::Int(a / b)
                 }
-                Bin::Lt => Value::bool(a < b),
-                Bin::Gt => Value::bool(a > b),
-                Bin::Le => Value::bool(a <= b),
-                Bin::Ge => Value::bool(a >= b),
-                Bin::Eq => Value::bool(a == b),
-                Bin::Ne => Value::bool(a != b),
+                Bin::Lt | Bin::Gt | Bin::Le | Bin::Ge | Bin::Eq | Bin::Ne => compare(op, a, b),
             })
         }
         _ => {
@@ -116,12 +127,7 @@ fn bin_numbers(op: Bin, x: &Value, y: &Value) -> Option<Value> {
                     }
                     Value::Real(a / b)
                 }
-                Bin::Lt => Value::bool(a < b),
-                Bin::Gt => Value::bool(a > b),
-                Bin::Le => Value::bool(a <= b),
-                Bin::Ge => Value::bool(a >= b),
-                Bin::Eq => Value::bool(a == b),
-                Bin::Ne => Value::bool(a != b),
+                Bin::Lt | Bin::Gt | Bin::Le | Bin::Ge | Bin::Eq | Bin::Ne => compare(op, a, b),
             })
         }
     }

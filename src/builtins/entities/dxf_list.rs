@@ -74,6 +74,14 @@ fn head(out: &mut Vec<Value>, name: Value, type_name: &str, owner: Value, handle
     out.push(text(410, "Model"));
 }
 
+/// DXF makes an arc a subclass of a circle, so both lists start with the same group.
+fn circle_part(out: &mut Vec<Value>, center: DVec3, radius: f64, normal: DVec3) {
+    out.push(text(100, "AcDbCircle"));
+    out.push(pt3(10, to_ocs(center, normal)));
+    out.push(real(40, radius));
+    out.push(pt3(210, normal.normalize()));
+}
+
 fn layer_color(out: &mut Vec<Value>, e: &Entity) {
     out.push(text(8, &e.layer));
     if let Some(c) = e.color {
@@ -106,12 +114,7 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
             center,
             radius,
             normal,
-        } => {
-            out.push(text(100, "AcDbCircle"));
-            out.push(pt3(10, to_ocs(*center, *normal)));
-            out.push(real(40, *radius));
-            out.push(pt3(210, normal.normalize()));
-        }
+        } => circle_part(&mut out, *center, *radius, *normal),
         EntityKind::Arc {
             center,
             radius,
@@ -119,10 +122,7 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
             end,
             normal,
         } => {
-            out.push(text(100, "AcDbCircle"));
-            out.push(pt3(10, to_ocs(*center, *normal)));
-            out.push(real(40, *radius));
-            out.push(pt3(210, normal.normalize()));
+            circle_part(&mut out, *center, *radius, *normal);
             out.push(text(100, "AcDbArc"));
             out.push(real(50, *start));
             out.push(real(51, *end));
