@@ -2,35 +2,17 @@
 //! regenerate the outline within 1e-6 (GEOMTOL×1000) of the exact bend.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 use lispcad::geom::quadspline::QuadSpline;
 use lispcad::geom::temple::{bend_points, bend_spline, bend_spline_interpolated, TempleParams};
 use std::hint::black_box;
 
-/// The default outline of scripts/temple.lsp (L1 = 140).
-fn outline(l1: f64) -> Vec<DVec3> {
-    let (h0, hm, ht) = (2.5, 1.75, 3.5);
-    let hq = hm + 0.3 * (h0 - hm);
-    [
-        (0.0, -h0),
-        (0.04 * l1, -h0),
-        (0.35 * l1, -hq),
-        (0.7 * l1, -hm),
-        (0.9 * l1, -ht),
-        (l1, 0.0),
-        (0.9 * l1, ht),
-        (0.7 * l1, hm),
-        (0.35 * l1, hq),
-        (0.04 * l1, h0),
-        (0.0, h0),
-    ]
-    .iter()
-    .map(|(x, y)| DVec3::new(*x, *y, 0.0))
-    .collect()
-}
+#[path = "../tests/temple_support/mod.rs"]
+mod temple_support;
+use temple_support::default_outline;
 
 fn bench(c: &mut Criterion) {
-    let pts = outline(140.0);
+    let pts = default_outline(140.0);
     let params = TempleParams {
         l1: 140.0,
         l2: 35.0,

@@ -7,6 +7,10 @@ use lispcad::geom::mesh::{intersect_meshes_with_stats, read_stl, section, Mesh};
 use lispcad::geom::DVec3;
 use std::time::Instant;
 
+#[path = "../tests/mesh_support/mod.rs"]
+mod mesh_support;
+use mesh_support::triangles_cross;
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.len() < 3 {
@@ -106,8 +110,7 @@ fn main() {
         .filter(|&&(ta, tb)| {
             let pa = a.corners_of(ta as usize);
             let pb = b.corners_of(tb as usize);
-            (0..3).any(|i| segment_hits_triangle(pa[i], pa[(i + 1) % 3], pb))
-                || (0..3).any(|i| segment_hits_triangle(pb[i], pb[(i + 1) % 3], pa))
+            triangles_cross(pa, pb)
         })
         .count();
     println!("moller_trumbore_pairs {truth}");
@@ -135,28 +138,4 @@ fn cpu_seconds() -> f64 {
     let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
     // Fields 14 and 15 of stat (utime, stime) are at 11 and 12 after the command name.
     (ticks(11) + ticks(12)) / 100.0
-}
-
-fn segment_hits_triangle(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
-    let d = q - p;
-    let e1 = t[1] - t[0];
-    let e2 = t[2] - t[0];
-    let h = d.cross(e2);
-    let a = e1.dot(h);
-    if a.abs() < 1e-300 {
-        return false;
-    }
-    let f = 1.0 / a;
-    let s = p - t[0];
-    let u = f * s.dot(h);
-    if !(0.0..=1.0).contains(&u) {
-        return false;
-    }
-    let qq = s.cross(e1);
-    let v = f * d.dot(qq);
-    if v < 0.0 || u + v > 1.0 {
-        return false;
-    }
-    let w = f * e2.dot(qq);
-    (0.0..=1.0).contains(&w)
 }

@@ -2,8 +2,10 @@
 //! description, names are unique across the library's tables, and help finds each one.
 
 use std::collections::HashSet;
-use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
+
+mod cli_support;
+use cli_support::repl_output;
 
 /// (name, signature, description) of every builtin as `lispcad doc` lists them.
 fn reference() -> Vec<(String, String, String)> {
@@ -79,22 +81,7 @@ fn help_finds_every_builtin_in_the_repl() {
         input.push_str(&format!(":help {name}\n"));
     }
     let dir = tempfile::tempdir().unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .arg("repl")
-        .current_dir(dir.path())
-        .env("LISPCAD_HISTORY", dir.path().join("h"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let o = child.wait_with_output().unwrap();
+    let o = repl_output(dir.path(), &[], &input);
     let out = String::from_utf8_lossy(&o.stdout);
     assert!(!out.contains("no help for"), "{out}");
     let lines: Vec<&str> = out.lines().collect();

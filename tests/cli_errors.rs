@@ -2,19 +2,10 @@
 //! form (line:col in miette's output), the Lisp call stack, exit codes, `--set`, `--max-steps`,
 //! and the limits that must end in clean errors rather than aborts.
 
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
-fn lispcad_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .env("COLUMNS", "100")
-        .stdin(Stdio::null())
-        .output()
-        .expect("run lispcad")
-}
+mod cli_support;
+use cli_support::lispcad_in;
 
 struct Run {
     /// None when the process died of a signal (an abort): always a test failure.

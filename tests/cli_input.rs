@@ -1,25 +1,15 @@
 //! getpoint/getreal/... in batch runs: answers come from `--answers FILE`, one per line, and
 //! initget's restrictions turn a bad answer into an error (no one to re-prompt).
 
-use std::process::{Command, Output, Stdio};
-
-fn lispcad(dir: &std::path::Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .env("COLUMNS", "100")
-        .stdin(Stdio::null())
-        .output()
-        .expect("run lispcad")
-}
+mod cli_support;
+use cli_support::lispcad_in;
 
 /// Runs `script` with `answers`; (exit code, stdout, stderr).
 fn run(script: &str, answers: &str) -> (i32, String, String) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("s.lsp"), script).unwrap();
     std::fs::write(dir.path().join("a.txt"), answers).unwrap();
-    let o = lispcad(dir.path(), &["run", "s.lsp", "--answers", "a.txt"]);
+    let o = lispcad_in(dir.path(), &["run", "s.lsp", "--answers", "a.txt"]);
     (
         o.status.code().expect("exit code, not a signal"),
         String::from_utf8_lossy(&o.stdout).into_owned(),
@@ -220,7 +210,7 @@ fn without_answers_or_terminal_it_is_a_clear_error() {
         ("getreal", "(getreal \"R: \")"),
         ("getstring", "(getstring)"),
     ] {
-        let o = lispcad(dir.path(), &["eval", call]);
+        let o = lispcad_in(dir.path(), &["eval", call]);
         assert_eq!(o.status.code(), Some(1));
         let err = String::from_utf8_lossy(&o.stderr);
         assert!(
@@ -233,7 +223,7 @@ fn without_answers_or_terminal_it_is_a_clear_error() {
 #[test]
 fn unreadable_answers_file_is_a_usage_error() {
     let dir = tempfile::tempdir().unwrap();
-    let o = lispcad(
+    let o = lispcad_in(
         dir.path(),
         &["eval", "(getint)", "--answers", "missing.txt"],
     );
@@ -245,7 +235,7 @@ fn unreadable_answers_file_is_a_usage_error() {
 fn eval_reads_answers_too() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("a.txt"), "3,4\n").unwrap();
-    let o = lispcad(
+    let o = lispcad_in(
         dir.path(),
         &["eval", "(distance '(0 0) (getpoint))", "--answers", "a.txt"],
     );
@@ -280,7 +270,7 @@ fn batch_rows_each_read_the_answers() {
         "(setq f (open (strcat \"r\" (itoa L1) \".txt\") \"w\")) (princ (* L1 (getreal)) f) (close f)\n",
     )
     .unwrap();
-    let o = lispcad(
+    let o = lispcad_in(
         p,
         &[
             "batch",
@@ -301,7 +291,7 @@ fn batch_rows_each_read_the_answers() {
     );
     assert_eq!(std::fs::read_to_string(p.join("r1.txt")).unwrap(), "10.0");
     assert_eq!(std::fs::read_to_string(p.join("r2.txt")).unwrap(), "20.0");
-    let o = lispcad(
+    let o = lispcad_in(
         p,
         &["batch", "s.lsp", "--vary", "t.csv", "-o", "out/{L1}.svg"],
     );

@@ -89,6 +89,14 @@ fn on_curve(c: &Curve, p: DVec3, t: f64, scale: f64) -> bool {
     (c.eval(t) - p).length() <= 1e-9 * scale
 }
 
+/// Some hit of `h` is at `p` (within 1e-8), or some overlap of `h` passes through it.
+fn has_hit_at(h: &[Hit], p: DVec3) -> bool {
+    h.iter().any(|q| match &q.kind {
+        HitKind::Overlap(o) => (o.closest_point(p).1 - p).length() < 1e-8,
+        _ => (q.point - p).length() < 1e-8,
+    })
+}
+
 fn check_pair(a: &Curve, b: &Curve) -> Result<Vec<Hit>, TestCaseError> {
     let h1 = intersect(a, b, TOL);
     let mut h2 = intersect(b, a, TOL);
@@ -182,10 +190,7 @@ proptest! {
         let line = Curve::line(p - d * l, p + d * (l * 0.7)).unwrap();
         let h = check_pair(&c, &line)?;
         prop_assert!(
-            h.iter().any(|q| match &q.kind {
-                HitKind::Overlap(o) => (o.closest_point(p).1 - p).length() < 1e-8,
-                _ => (q.point - p).length() < 1e-8,
-            }),
+            has_hit_at(&h, p),
             "{} at t={}: {:?}", c, t, h
         );
     }
@@ -197,10 +202,7 @@ proptest! {
         prop_assume!(arc.length() < 200.0);
         let h = check_pair(&c, &arc)?;
         prop_assert!(
-            h.iter().any(|q| match &q.kind {
-                HitKind::Overlap(o) => (o.closest_point(p).1 - p).length() < 1e-8,
-                _ => (q.point - p).length() < 1e-8,
-            }),
+            has_hit_at(&h, p),
             "{} at t={}: {:?}", c, t, h
         );
     }
@@ -226,10 +228,7 @@ proptest! {
         }
         let h = check_pair(&c, &spline)?;
         prop_assert!(
-            h.iter().any(|q| match &q.kind {
-                HitKind::Overlap(o) => (o.closest_point(p).1 - p).length() < 1e-8,
-                _ => (q.point - p).length() < 1e-8,
-            }),
+            has_hit_at(&h, p),
             "{} at t={}: {:?}", c, t, h
         );
     }

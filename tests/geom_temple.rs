@@ -9,6 +9,9 @@ use lispcad::geom::temple::*;
 use lispcad::geom::ParamCurve;
 use proptest::prelude::*;
 
+mod temple_support;
+use temple_support::default_outline;
+
 fn params(l1: f64, l2: f64, r: f64, theta: f64) -> TempleParams {
     TempleParams {
         l1,
@@ -21,30 +24,6 @@ fn params(l1: f64, l2: f64, r: f64, theta: f64) -> TempleParams {
 
 fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
     a.distance(b) <= tol
-}
-
-/// The temple outline used across the tests and the benchmark (scripts/temple.lsp defaults):
-/// hinge end at x = 0 (half width 2.5), slimmest 1.75 at 0.7·L1, tip half width 3.5 at 0.9·L1,
-/// apex at (L1, 0).
-fn temple_outline(l1: f64) -> Vec<DVec3> {
-    let (h0, hm, ht) = (2.5, 1.75, 3.5);
-    let hq = hm + 0.3 * (h0 - hm);
-    [
-        (0.0, -h0),
-        (0.04 * l1, -h0),
-        (0.35 * l1, -hq),
-        (0.7 * l1, -hm),
-        (0.9 * l1, -ht),
-        (l1, 0.0),
-        (0.9 * l1, ht),
-        (0.7 * l1, hm),
-        (0.35 * l1, hq),
-        (0.04 * l1, h0),
-        (0.0, h0),
-    ]
-    .iter()
-    .map(|(x, y)| DVec3::new(*x, *y, 0.0))
-    .collect()
 }
 
 #[test]
@@ -117,7 +96,7 @@ fn theta_zero_is_the_identity_and_drops_the_arc() {
     let c = centerline(&p).unwrap();
     assert_eq!(c.pieces().len(), 2);
     assert!((c.length() - 140.0).abs() < 1e-12);
-    for q in temple_outline(140.0) {
+    for q in default_outline(140.0) {
         assert_eq!(bend_point(q, &p).unwrap(), q);
     }
 }
@@ -171,7 +150,7 @@ fn fold_is_refused_with_index_and_offset() {
 
 #[test]
 fn bend_spline_default_temple_within_tolerance() {
-    let s = QuadSpline::interpolate(&temple_outline(140.0), true).unwrap();
+    let s = QuadSpline::interpolate(&default_outline(140.0), true).unwrap();
     let p = params(140.0, 35.0, 15.0, 40f64.to_radians());
     let tol = 1e-6;
     let b = bend_spline(&s, &p, tol).unwrap();
@@ -256,7 +235,7 @@ fn bend_spline_default_temple_within_tolerance() {
 
 #[test]
 fn bend_spline_adds_points_only_near_the_bend() {
-    let s = QuadSpline::interpolate(&temple_outline(140.0), true).unwrap();
+    let s = QuadSpline::interpolate(&default_outline(140.0), true).unwrap();
     let p = params(140.0, 35.0, 15.0, 40f64.to_radians());
     let b = bend_spline(&s, &p, 1e-6).unwrap();
     let l = p.straight_length();
@@ -283,7 +262,7 @@ fn bend_spline_adds_points_only_near_the_bend() {
 
 #[test]
 fn interpolated_variant_also_meets_tolerance() {
-    let s = QuadSpline::interpolate(&temple_outline(140.0), true).unwrap();
+    let s = QuadSpline::interpolate(&default_outline(140.0), true).unwrap();
     let p = params(140.0, 35.0, 15.0, 40f64.to_radians());
     let b = bend_spline_interpolated(&s, &p, 1e-3).unwrap();
     assert!(b.deviation <= 1e-3);
@@ -299,7 +278,7 @@ fn interpolated_variant_also_meets_tolerance() {
 
 #[test]
 fn bend_spline_theta_zero_returns_the_outline() {
-    let s = QuadSpline::interpolate(&temple_outline(140.0), true).unwrap();
+    let s = QuadSpline::interpolate(&default_outline(140.0), true).unwrap();
     let b = bend_spline(&s, &params(140.0, 35.0, 15.0, 0.0), 1e-6).unwrap();
     assert_eq!(b.added_points, 0);
     assert_eq!(b.spline.points, s.points);
@@ -313,7 +292,7 @@ fn bend_spline_theta_zero_returns_the_outline() {
 
 #[test]
 fn bend_spline_rejects_bad_tolerance_and_folds() {
-    let s = QuadSpline::interpolate(&temple_outline(140.0), true).unwrap();
+    let s = QuadSpline::interpolate(&default_outline(140.0), true).unwrap();
     let p = params(140.0, 35.0, 15.0, 0.5);
     assert!(matches!(
         bend_spline(&s, &p, 0.0),
@@ -441,7 +420,7 @@ proptest! {
     ) {
         let p = TempleParams { l1, l2: f2 * l1 + r, r, theta: deg.to_radians(), base: DVec2::ZERO };
         prop_assume!(p.validate().is_ok());
-        let s = QuadSpline::interpolate(&temple_outline(l1), true).unwrap();
+        let s = QuadSpline::interpolate(&default_outline(l1), true).unwrap();
         let tol = 1e-4;
         let b = bend_spline(&s, &p, tol).unwrap();
         prop_assert!(b.deviation <= tol);

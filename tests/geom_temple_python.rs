@@ -10,33 +10,14 @@ use glam::{DVec2, DVec3};
 use lispcad::geom::quadspline::{quad_bezier, QuadSpline};
 use lispcad::geom::temple::{bend_spline, TempleParams};
 
+mod temple_support;
+use temple_support::outline;
+
 fn python() -> PathBuf {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let py = root.join(".venv/bin/python");
     assert!(py.exists(), "{} missing: run .ci/setup", py.display());
     py
-}
-
-/// Outline of scripts/temple.lsp with the given widths (half widths derived as there).
-fn outline(l1: f64, hinge: f64, min: f64, tip: f64) -> Vec<DVec3> {
-    let (h0, hm, ht) = (hinge / 2.0, min / 2.0, tip / 2.0);
-    let hq = hm + 0.3 * (h0 - hm);
-    [
-        (0.0, -h0),
-        (0.04 * l1, -h0),
-        (0.35 * l1, -hq),
-        (0.7 * l1, -hm),
-        (0.9 * l1, -ht),
-        (l1, 0.0),
-        (0.9 * l1, ht),
-        (0.7 * l1, hm),
-        (0.35 * l1, hq),
-        (0.04 * l1, h0),
-        (0.0, h0),
-    ]
-    .iter()
-    .map(|(x, y)| DVec3::new(*x, *y, 0.0))
-    .collect()
 }
 
 #[test]

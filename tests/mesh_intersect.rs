@@ -5,28 +5,8 @@ use lispcad::geom::mesh::{icosphere, intersect_meshes, intersect_meshes_with_sta
 use lispcad::geom::{DMat4, DVec3};
 use proptest::prelude::*;
 
-fn grid(n: usize, size: f64, z: f64) -> Mesh {
-    let mut v = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            v.push(DVec3::new(
-                -size + 2.0 * size * i as f64 / n as f64,
-                -size + 2.0 * size * j as f64 / n as f64,
-                z,
-            ));
-        }
-    }
-    let mut t = Vec::new();
-    let w = (n + 1) as u32;
-    for j in 0..n as u32 {
-        for i in 0..n as u32 {
-            let a = j * w + i;
-            t.push([a, a + 1, a + w + 1]);
-            t.push([a, a + w + 1, a + w]);
-        }
-    }
-    Mesh::new(v, t).unwrap()
-}
+mod mesh_support;
+use mesh_support::{grid, triangles_cross};
 
 #[test]
 fn two_spheres_meet_in_the_expected_circle() {
@@ -155,31 +135,6 @@ proptest! {
     }
 }
 
-/// Möller–Trumbore segment/triangle test in plain f64, independent of the library's predicates.
-fn segment_hits_triangle(p: DVec3, q: DVec3, t: [DVec3; 3]) -> bool {
-    let d = q - p;
-    let e1 = t[1] - t[0];
-    let e2 = t[2] - t[0];
-    let h = d.cross(e2);
-    let a = e1.dot(h);
-    if a.abs() < 1e-300 {
-        return false;
-    }
-    let f = 1.0 / a;
-    let s = p - t[0];
-    let u = f * s.dot(h);
-    if !(0.0..=1.0).contains(&u) {
-        return false;
-    }
-    let qq = s.cross(e1);
-    let v = f * d.dot(qq);
-    if v < 0.0 || u + v > 1.0 {
-        return false;
-    }
-    let w = f * e2.dot(qq);
-    (0.0..=1.0).contains(&w)
-}
-
 #[test]
 fn exactly_the_truly_intersecting_pairs() {
     let a = icosphere(DVec3::ZERO, 1.0, 3);
@@ -191,9 +146,7 @@ fn exactly_the_truly_intersecting_pairs() {
         let pa = a.corners_of(ta);
         for tb in 0..b.len() {
             let pb = b.corners_of(tb);
-            let hit = (0..3).any(|i| segment_hits_triangle(pa[i], pa[(i + 1) % 3], pb))
-                || (0..3).any(|i| segment_hits_triangle(pb[i], pb[(i + 1) % 3], pa));
-            truth += hit as usize;
+            truth += triangles_cross(pa, pb) as usize;
         }
     }
     let (r, stats) = intersect_meshes_with_stats(&a, &b);

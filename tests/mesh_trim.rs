@@ -4,28 +4,8 @@
 use lispcad::geom::mesh::{icosphere, trim, Mesh};
 use lispcad::geom::{DMat4, DVec3};
 
-fn grid(n: usize, size: f64, z: f64) -> Mesh {
-    let mut v = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            v.push(DVec3::new(
-                -size + 2.0 * size * i as f64 / n as f64,
-                -size + 2.0 * size * j as f64 / n as f64,
-                z,
-            ));
-        }
-    }
-    let mut t = Vec::new();
-    let w = (n + 1) as u32;
-    for j in 0..n as u32 {
-        for i in 0..n as u32 {
-            let a = j * w + i;
-            t.push([a, a + 1, a + w + 1]);
-            t.push([a, a + w + 1, a + w]);
-        }
-    }
-    Mesh::new(v, t).unwrap()
-}
+mod mesh_support;
+use mesh_support::grid;
 
 fn sorted_points(m: &Mesh) -> Vec<[u64; 3]> {
     let mut pts: Vec<[u64; 3]> = m

@@ -4,26 +4,12 @@
 use std::io::Write;
 use std::process::{Command, Stdio};
 
+mod cli_support;
+use cli_support::repl_output;
+
 /// Feeds `input` to `lispcad repl [args]`; (exit code, stdout, stderr).
 fn repl_in(dir: &std::path::Path, args: &[&str], input: &str) -> (i32, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .arg("repl")
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .env("LISPCAD_HISTORY", dir.join("history"))
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let o = child.wait_with_output().unwrap();
+    let o = repl_output(dir, args, input);
     (
         o.status.code().expect("exit code"),
         String::from_utf8_lossy(&o.stdout).into_owned(),
