@@ -113,7 +113,7 @@ fn an_interrupted_batch_leaves_no_partial_file() {
         .arg("batch")
         .arg(&script)
         .arg("--grid")
-        .arg("N=1:200:1")
+        .arg("N=1:5000:1")
         .arg("-o")
         .arg(format!("{}/c-{{N}}.svg", out.display()))
         .arg("-j")
@@ -121,7 +121,16 @@ fn an_interrupted_batch_leaves_no_partial_file() {
         .stderr(std::process::Stdio::null())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(1500));
+    // Signal once the first file is out (not after a fixed delay, which a fast machine
+    // outruns): the batch is then surely under way and far from done.
+    let started = std::time::Instant::now();
+    while !out.exists() || std::fs::read_dir(&out).unwrap().next().is_none() {
+        assert!(
+            started.elapsed().as_secs() < 120,
+            "the batch wrote nothing in 120 s"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
     let _ = Command::new("kill")
         .arg("-TERM")
         .arg(child.id().to_string())
@@ -136,7 +145,7 @@ fn an_interrupted_batch_leaves_no_partial_file() {
     } else {
         Vec::new()
     };
-    assert!(written.len() < 200, "the batch was not interrupted");
+    assert!(written.len() < 5000, "the batch was not interrupted");
     for (name, bytes) in written {
         assert!(name.ends_with(".svg"), "stray file {name}");
         let text = String::from_utf8(bytes).unwrap();
