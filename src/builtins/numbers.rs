@@ -361,24 +361,26 @@ fn boole(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 /// Compares two numbers or two strings; None when they are not comparable.
-fn compare(it: &Interp, x: &Value, y: &Value) -> Result<std::cmp::Ordering, Exn> {
+/// The order of two numbers or two strings; `None` when a NaN is involved (unordered).
+fn compare(it: &Interp, x: &Value, y: &Value) -> Result<Option<std::cmp::Ordering>, Exn> {
     match (x, y) {
-        (Value::Int(p), Value::Int(q)) => Ok(p.cmp(q)),
-        (Value::Str(p), Value::Str(q)) => Ok(p.as_bytes().cmp(q.as_bytes())),
+        (Value::Int(p), Value::Int(q)) => Ok(Some(p.cmp(q))),
+        (Value::Str(p), Value::Str(q)) => Ok(Some(p.as_bytes().cmp(q.as_bytes()))),
         _ => {
             let p = x.as_f64().ok_or_else(|| bad_arg(it, "numberp", x))?;
             let q = y.as_f64().ok_or_else(|| bad_arg(it, "numberp", y))?;
-            Ok(p.partial_cmp(&q).unwrap_or(std::cmp::Ordering::Equal))
+            Ok(p.partial_cmp(&q))
         }
     }
 }
 
+/// An unordered pair (a NaN) fails every test, as the compiled fast path's IEEE compares do.
 fn chain(it: &Interp, a: &[Value], ok: fn(std::cmp::Ordering) -> bool) -> LResult {
     if a.len() == 1 {
         compare(it, &a[0], &a[0])?;
     }
     for w in a.windows(2) {
-        if !ok(compare(it, &w[0], &w[1])?) {
+        if !compare(it, &w[0], &w[1])?.is_some_and(ok) {
             return Ok(Value::Nil);
         }
     }

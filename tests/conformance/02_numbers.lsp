@@ -147,3 +147,9 @@ pi
 ;=> nil
 (/= 'a 'b)
 ;=> T
+
+;; A NaN (inf - inf) is unordered: every ordering is nil, compiled or through apply.
+(progn (setq nan (- (* 1e308 10.0) (* 1e308 10.0))) (list (<= nan 1) (>= nan 1) (< nan 1) (> nan 1)))
+;=> (nil nil nil nil)
+(list (apply '<= (list nan 1)) (apply '>= (list nan 1)) (apply '< (list nan 1)) (apply '> (list nan 1)))
+;=> (nil nil nil nil)
