@@ -9,6 +9,8 @@
 //! extremum, so both monotone halves are solved separately: two roots however close stay two,
 //! and an extremum within the tolerance of zero with no sign change is a tangency.
 
+use std::ops::{Add, Mul};
+
 use smallvec::SmallVec;
 
 pub type Coeffs = SmallVec<[f64; 16]>;
@@ -45,21 +47,30 @@ pub fn eval_deriv(c: &[f64], t: f64) -> (f64, f64) {
 
 /// The coefficients of the two halves split at `t`.
 pub fn split(c: &[f64], t: f64) -> (Coeffs, Coeffs) {
+    split_points(c, t)
+}
+
+/// De Casteljau subdivision at `t` of any control points that combine affinely: scalar
+/// coefficients here, homogeneous points in `Bez::split`.
+pub(crate) fn split_points<A>(c: &[A::Item], t: f64) -> (SmallVec<A>, SmallVec<A>)
+where
+    A: smallvec::Array,
+    A::Item: Copy + Add<Output = A::Item> + Mul<f64, Output = A::Item>,
+{
     let n = c.len();
-    let mut b: Coeffs = SmallVec::from_slice(c);
-    let mut left: Coeffs = SmallVec::with_capacity(n);
-    let mut right: Coeffs = SmallVec::from_elem(0.0, n);
+    // Level r rewrites only b[..n - r], so b[n - 1 - r] keeps level r's last point: the
+    // working array ends up holding the right half and needs no copy.
+    let mut b: SmallVec<A> = SmallVec::from_slice(c);
+    let mut left = SmallVec::with_capacity(n);
     let u = 1.0 - t;
     left.push(b[0]);
-    right[n - 1] = b[n - 1];
     for r in 1..n {
         for j in 0..n - r {
             b[j] = b[j] * u + b[j + 1] * t;
         }
         left.push(b[0]);
-        right[n - 1 - r] = b[n - 1 - r];
     }
-    (left, right)
+    (left, b)
 }
 
 /// The derivative's coefficients: n·(c[i+1] − c[i]).
@@ -101,6 +112,24 @@ pub struct Root {
     /// For a pair of simple roots flanking one extremum: that extremum, so the caller can
     /// merge the pair into one tangency when the two points are closer than its tolerance.
     pub extremum: Option<f64>,
+}
+
+impl Root {
+    fn simple(t: f64) -> Root {
+        Root {
+            t,
+            tangent: false,
+            extremum: None,
+        }
+    }
+
+    fn touch(t: f64) -> Root {
+        Root {
+            t,
+            tangent: true,
+            extremum: None,
+        }
+    }
 }
 
 fn sign_changes(c: &[f64]) -> usize {
@@ -168,21 +197,13 @@ pub fn roots(c: &[f64], tol: f64, out: &mut SmallVec<[Root; 8]>) {
     }
     let n = c.len() - 1;
     if c[0].abs() <= tol {
-        out.push(Root {
-            t: 0.0,
-            tangent: false,
-            extremum: None,
-        });
+        out.push(Root::simple(0.0));
     }
     // Below this an extremum's value is rounding noise: a double root, not two roots.
     let noise = 64.0 * f64::EPSILON * c.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     isolate(c, 0.0, 1.0, tol, noise, 0, out);
     if c[n].abs() <= tol && out.last().is_none_or(|r| r.t < 1.0) {
-        out.push(Root {
-            t: 1.0,
-            tangent: false,
-            extremum: None,
-        });
+        out.push(Root::simple(1.0));
     }
 }
 
@@ -217,14 +238,7 @@ fn isolate(
     if depth > 60 || w < 1e-15 {
         let fm = eval(c, 0.5);
         if fm.abs() <= tol {
-            push_interior(
-                out,
-                Root {
-                    t: a + 0.5 * w,
-                    tangent: true,
-                    extremum: None,
-                },
-            );
+            push_interior(out, Root::touch(a + 0.5 * w));
         }
         return;
     }
@@ -234,23 +248,9 @@ fn isolate(
         // Monotone: at most one root, strictly inside only on a sign change; an exact zero at
         // the right end belongs to this interval (the next one starts with it).
         if f0 * f1 < 0.0 {
-            push_interior(
-                out,
-                Root {
-                    t: a + w * solve_bracketed(c),
-                    tangent: false,
-                    extremum: None,
-                },
-            );
+            push_interior(out, Root::simple(a + w * solve_bracketed(c)));
         } else if f1 == 0.0 && f0 != 0.0 {
-            push_interior(
-                out,
-                Root {
-                    t: b,
-                    tangent: false,
-                    extremum: None,
-                },
-            );
+            push_interior(out, Root::simple(b));
         }
         return;
     }
@@ -261,14 +261,7 @@ fn isolate(
         let fe = l[n];
         let tg = a + w * te;
         if fe.abs() <= noise.min(tol) {
-            push_interior(
-                out,
-                Root {
-                    t: tg,
-                    tangent: true,
-                    extremum: None,
-                },
-            );
+            push_interior(out, Root::touch(tg));
             return;
         }
         let left = if f0 * fe < 0.0 {
@@ -294,36 +287,15 @@ fn isolate(
                     );
                 }
             }
-            (Some(x), None) | (None, Some(x)) => push_interior(
-                out,
-                Root {
-                    t: x,
-                    tangent: false,
-                    extremum: None,
-                },
-            ),
+            (Some(x), None) | (None, Some(x)) => push_interior(out, Root::simple(x)),
             (None, None) => {
                 if fe.abs() <= tol {
-                    push_interior(
-                        out,
-                        Root {
-                            t: tg,
-                            tangent: true,
-                            extremum: None,
-                        },
-                    );
+                    push_interior(out, Root::touch(tg));
                 }
             }
         }
         if f1 == 0.0 {
-            push_interior(
-                out,
-                Root {
-                    t: b,
-                    tangent: false,
-                    extremum: None,
-                },
-            );
+            push_interior(out, Root::simple(b));
         }
         return;
     }

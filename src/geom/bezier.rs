@@ -84,20 +84,7 @@ impl Bez {
 
     /// The two halves at `t`.
     pub fn split(&self, t: f64) -> (Bez, Bez) {
-        let n = self.h.len();
-        let mut b: SmallVec<[DVec4; 8]> = SmallVec::from_slice(&self.h);
-        let mut left = SmallVec::with_capacity(n);
-        let mut right: SmallVec<[DVec4; 4]> = SmallVec::from_elem(DVec4::ZERO, n);
-        let u = 1.0 - t;
-        left.push(b[0]);
-        right[n - 1] = b[n - 1];
-        for r in 1..n {
-            for j in 0..n - r {
-                b[j] = b[j] * u + b[j + 1] * t;
-            }
-            left.push(b[0]);
-            right[n - 1 - r] = b[n - 1 - r];
-        }
+        let (left, right) = bernstein::split_points(&self.h, t);
         (
             Bez {
                 h: left,

@@ -3,7 +3,7 @@
 //! Arcs and circles measure their angles from the X axis of this frame, as DXF does, so an
 //! arc made by `(arc ...)` and the ARC entity written to DXF agree without conversion.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 /// The OCS X and Y axes for the (unit or not) extrusion `normal`, per the DXF reference's
 /// "Arbitrary Axis Algorithm": if the normal is close to the world Z axis (|Nx| and |Ny| both
@@ -18,6 +18,37 @@ pub fn arbitrary_axis(normal: DVec3) -> (DVec3, DVec3) {
     .normalize();
     let ay = n.cross(ax).normalize();
     (ax, ay)
+}
+
+/// The OCS of one plane normal, for the two mappings every writer needs: OCS points at an
+/// elevation, and points at an OCS angle on a circle in the plane.
+#[derive(Clone, Copy, Debug)]
+pub struct Ocs {
+    pub x: DVec3,
+    pub y: DVec3,
+    /// The unit normal.
+    pub n: DVec3,
+}
+
+impl Ocs {
+    pub fn new(normal: DVec3) -> Ocs {
+        let (x, y) = arbitrary_axis(normal);
+        Ocs {
+            x,
+            y,
+            n: normal.normalize(),
+        }
+    }
+
+    /// The WCS point of the OCS point `p` at `elevation` along the normal.
+    pub fn to_wcs(&self, p: DVec2, elevation: f64) -> DVec3 {
+        self.x * p.x + self.y * p.y + self.n * elevation
+    }
+
+    /// The point at OCS angle `t` on the circle (`center`, `radius`) in this plane.
+    pub fn on_circle(&self, center: DVec3, radius: f64, t: f64) -> DVec3 {
+        center + (self.x * t.cos() + self.y * t.sin()) * radius
+    }
 }
 
 #[cfg(test)]

@@ -14,7 +14,7 @@ use glam::{DVec2, DVec3};
 use super::biarc::{fit_bspline, fit_span, BulgeChain, Projected};
 use super::drawing::{bulge_arc, ccw_sweep, Drawing, Entity, EntityKind};
 use super::dxf::{degrees, DxfWriter};
-use crate::geom::frame::arbitrary_axis;
+use crate::geom::frame::Ocs;
 
 /// Edges closer than this (drawing units) count as coincident.
 const EPS: f64 = 1e-6;
@@ -77,8 +77,8 @@ fn fit_tilted_arc(
     tol: f64,
     out: &mut BulgeChain,
 ) {
-    let (ax, ay) = arbitrary_axis(normal);
-    let f = Projected(move |t: f64| center + (ax * t.cos() + ay * t.sin()) * radius);
+    let ocs = Ocs::new(normal);
+    let f = Projected(move |t: f64| ocs.on_circle(center, radius, t));
     fit_span(&f, t0, t1, tol, out);
 }
 
@@ -92,9 +92,8 @@ fn ocs_polyline(
     normal: DVec3,
     tol: f64,
 ) -> BulgeChain {
-    let (ax, ay) = arbitrary_axis(normal);
-    let n = normal.normalize();
-    let to_xy = |p: DVec2| (ax * p.x + ay * p.y + n * elevation).truncate();
+    let ocs = Ocs::new(normal);
+    let to_xy = |p: DVec2| ocs.to_wcs(p, elevation).truncate();
     let mut out = BulgeChain::default();
     let flip = parallel_to_z(normal);
     let segs = super::drawing::bulge_segments(points, bulges, closed);
@@ -110,9 +109,8 @@ fn ocs_polyline(
                 out.points.push(to_xy(b));
             }
             (None, Some((c, r, a0, a1))) => {
-                let c3 = ax * c.x + ay * c.y + n * elevation;
                 let mut piece = BulgeChain::default();
-                fit_tilted_arc(c3, r, n, a0, a1, tol, &mut piece);
+                fit_tilted_arc(ocs.to_wcs(c, elevation), r, ocs.n, a0, a1, tol, &mut piece);
                 out.bulges.extend(piece.bulges);
                 out.points.extend(piece.points.into_iter().skip(1));
             }
@@ -155,9 +153,8 @@ fn to_prims(e: &Entity, tol: f64) -> Vec<Prim> {
             let sweep = ccw_sweep(*start, *end);
             match parallel_to_z(*normal) {
                 Some(sign) => {
-                    let (ax, ay) = arbitrary_axis(*normal);
-                    let at =
-                        |t: f64| (*center + (ax * t.cos() + ay * t.sin()) * *radius).truncate();
+                    let ocs = Ocs::new(*normal);
+                    let at = |t: f64| ocs.on_circle(*center, *radius, t).truncate();
                     if sweep >= std::f64::consts::TAU - 1e-15 {
                         return vec![Prim::Circle(center.truncate(), *radius)];
                     }
@@ -680,12 +677,7 @@ fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
     w.str(2, "LTYPE");
     w.int(70, 1);
     w.str(0, "LTYPE");
-    w.str(2, "CONTINUOUS");
-    w.int(70, 0);
-    w.str(3, "Solid line");
-    w.int(72, 65);
-    w.int(73, 0);
-    w.float(40, 0.0);
+    w.solid_linetype_fields("CONTINUOUS", "Solid line");
     w.str(0, "ENDTAB");
 
     let mut names: Vec<(String, i16)> = Vec::new();

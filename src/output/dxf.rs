@@ -218,12 +218,7 @@ pub fn write_cad(d: &Drawing) -> String {
     table(&mut w, "LTYPE", H_LTYPE_TABLE, 3 + linetypes.len());
     let continuous_like = |w: &mut DxfWriter, h: u64, name: &str, desc: &str| {
         record(w, "LTYPE", h, H_LTYPE_TABLE, "AcDbLinetypeTableRecord");
-        w.str(2, name);
-        w.int(70, 0);
-        w.str(3, desc);
-        w.int(72, 65);
-        w.int(73, 0);
-        w.float(40, 0.0);
+        w.solid_linetype_fields(name, desc);
     };
     continuous_like(&mut w, H_LTYPE_BYBLOCK, "ByBlock", "");
     continuous_like(&mut w, H_LTYPE_BYLAYER, "ByLayer", "");

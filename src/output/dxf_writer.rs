@@ -31,6 +31,16 @@ impl DxfWriter {
         self.str(4, "");
     }
 
+    /// The groups of a solid line-type record from its name on (R12 and R2000 alike).
+    pub fn solid_linetype_fields(&mut self, name: &str, description: &str) {
+        self.str(2, name);
+        self.int(70, 0);
+        self.str(3, description);
+        self.int(72, 65);
+        self.int(73, 0);
+        self.float(40, 0.0);
+    }
+
     pub fn new() -> DxfWriter {
         DxfWriter {
             out: String::with_capacity(1 << 16),

@@ -5,7 +5,7 @@ use glam::{DVec2, DVec3, DVec4};
 
 use super::drawing::DrawingError;
 use crate::geom::bspline::BSpline;
-use crate::geom::frame::arbitrary_axis;
+use crate::geom::frame::Ocs;
 
 /// One drawn entity.
 #[derive(Clone, Debug, PartialEq)]
@@ -258,17 +258,12 @@ impl EntityKind {
                 elevation,
                 normal,
             } => {
-                let (ax, ay) = arbitrary_axis(*normal);
-                let n = normal.normalize();
-                let to_wcs = |p: DVec2| ax * p.x + ay * p.y + n * *elevation;
-                for p in points {
-                    out.push(to_wcs(*p));
-                }
+                let ocs = Ocs::new(*normal);
+                out.extend(points.iter().map(|p| ocs.to_wcs(*p, *elevation)));
                 for (a, b, bulge) in bulge_segments(points, bulges, *closed) {
                     if bulge != 0.0 {
                         if let Some((c, r, a0, a1)) = bulge_arc(a, b, bulge) {
-                            let c3 = ax * c.x + ay * c.y + n * *elevation;
-                            arc_extent(c3, r, a0, a1, n, out);
+                            arc_extent(ocs.to_wcs(c, *elevation), r, a0, a1, ocs.n, out);
                         }
                     }
                 }
@@ -425,8 +420,8 @@ pub fn bulge_arc(a: DVec2, b: DVec2, bulge: f64) -> Option<(DVec2, f64, f64, f64
 /// Points bounding the arc from angle a0 to a1 (either direction): the ends, the axis extremes
 /// for plane normals along Z, and a dense sample otherwise.
 fn arc_extent(c: DVec3, r: f64, a0: f64, a1: f64, normal: DVec3, out: &mut Vec<DVec3>) {
-    let (ax, ay) = arbitrary_axis(normal);
-    let at = |t: f64| c + (ax * t.cos() + ay * t.sin()) * r;
+    let ocs = Ocs::new(normal);
+    let at = |t: f64| ocs.on_circle(c, r, t);
     let (lo, hi) = if a0 <= a1 { (a0, a1) } else { (a1, a0) };
     out.push(at(lo));
     out.push(at(hi));

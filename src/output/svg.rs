@@ -19,7 +19,7 @@ use svg::Document;
 use super::aci::aci_to_hex;
 use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, Drawing, Entity, EntityKind};
 use super::OutputOptions;
-use crate::geom::frame::arbitrary_axis;
+use crate::geom::frame::{arbitrary_axis, Ocs};
 
 /// Largest distance (drawing units) between a curve SVG cannot express and its polyline.
 const FLATNESS: f64 = 2e-5;
@@ -163,8 +163,8 @@ fn circle_arc(
     sweep: f64,
     start_new: bool,
 ) {
-    let (ax, ay) = arbitrary_axis(normal);
-    let at3 = |t: f64| center + (ax * t.cos() + ay * t.sin()) * radius;
+    let ocs = Ocs::new(normal);
+    let at3 = |t: f64| ocs.on_circle(center, radius, t);
     match v.facing(normal) {
         Some(sign) => {
             // Facing the viewer the OCS axes map by a rotation (sign +1) or a reflection (-1).
@@ -193,17 +193,17 @@ fn ocs_polyline(
     elevation: f64,
     normal: DVec3,
 ) {
-    let (ax, ay) = arbitrary_axis(normal);
-    let n = normal.normalize();
-    let to3 = |p: DVec2| ax * p.x + ay * p.y + n * elevation;
+    let ocs = Ocs::new(normal);
+    let to3 = |p: DVec2| ocs.to_wcs(p, elevation);
     move_to(d, v.project(to3(points[0])));
     for (a, b, bulge) in bulge_segments(points, bulges, closed) {
         match bulge_arc(a, b, bulge) {
             None => line_to(d, v.project(to3(b))),
             Some((c, r, a0, a1)) => {
                 let c3 = to3(c);
-                // The arc's OCS angle a0 is measured from `ax`, which is exactly the OCS of n.
-                circle_arc(d, v, c3, r, n, a0, a1 - a0, false);
+                // The arc's OCS angle a0 is measured from `ocs.x`, which is exactly the OCS of
+                // ocs.n.
+                circle_arc(d, v, c3, r, ocs.n, a0, a1 - a0, false);
             }
         }
     }
