@@ -28,6 +28,22 @@ pub struct Arc {
     pub(crate) sweep: f64,
 }
 
+/// An atan2 result (in [−π, π]) reduced to [0, 2π): `norm_angle`'s answer with one test in
+/// the common case, for the hit parameters' hot path.
+#[inline(always)]
+fn norm_atan2(a: f64) -> f64 {
+    if a < 0.0 {
+        let r = a + TAU;
+        if r >= TAU {
+            0.0
+        } else {
+            r
+        }
+    } else {
+        a
+    }
+}
+
 /// Angle reduced to [0, 2π).
 #[inline]
 pub(crate) fn norm_angle(a: f64) -> f64 {
@@ -185,7 +201,7 @@ impl Arc {
     #[inline(always)]
     pub fn angle_of(&self, p: DVec3) -> f64 {
         let v = p - self.center;
-        norm_angle(atan2(v.dot(self.y_axis), v.dot(self.x_axis)))
+        norm_atan2(atan2(v.dot(self.y_axis), v.dot(self.x_axis)))
     }
 
     /// The public parameter of the point at angle `a` if it lies on the arc, allowing `slack`
@@ -231,8 +247,8 @@ impl Arc {
         );
         let slack = || tol / self.radius;
         [
-            self.param_of_angle_with(norm_angle(ang[0]), slack),
-            self.param_of_angle_with(norm_angle(ang[1]), slack),
+            self.param_of_angle_with(norm_atan2(ang[0]), slack),
+            self.param_of_angle_with(norm_atan2(ang[1]), slack),
         ]
     }
 

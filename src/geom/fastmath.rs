@@ -108,7 +108,8 @@ fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
 #[inline(always)]
 fn special(y: f64, x: f64) -> bool {
     let big = y.abs().max(x.abs());
-    big.is_nan() || big >= 1e300 || big == 0.0
+    // One test: false for NaN, for zero and from 1e300 up.
+    !(big > 0.0 && big < 1e300)
 }
 
 /// The reduction and the rational approximation, for finite (y, x) not both zero.

@@ -27,14 +27,15 @@ fn kind_by_tangents(t1: DVec3, t2: DVec3) -> LKind {
     }
 }
 
-/// The parameter of `p` on a segment of length `len` if within `tol` of its range.
+/// The parameter of `p` on a segment of length `len()` if within `tol` of its range.
 #[inline]
-fn seg_param(s: f64, len: f64, tol: f64) -> Option<f64> {
+fn seg_param(s: f64, len: impl FnOnce() -> f64, tol: f64) -> Option<f64> {
     if (0.0..=1.0).contains(&s) {
         return Some(s);
     }
-    // Only now the slack (a division): most candidates are inside or far outside.
-    let slack = tol / len;
+    // Only now the length and the slack (a root and a division): most candidates are
+    // inside or far outside.
+    let slack = tol / len();
     if (-slack..=1.0 + slack).contains(&s) {
         Some(s.clamp(0.0, 1.0))
     } else {
@@ -63,7 +64,7 @@ pub fn line_line<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     }
     let s = w.cross(db).dot(cross) / cc;
     let u = w.cross(da).dot(cross) / cc;
-    let (Some(s), Some(u)) = (seg_param(s, la, tol), seg_param(u, lb, tol)) else {
+    let (Some(s), Some(u)) = (seg_param(s, || la, tol), seg_param(u, || lb, tol)) else {
         return;
     };
     let (pa, pb) = (a.eval(s), b.eval(u));
@@ -96,45 +97,54 @@ fn collinear<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     }
 }
 
+/// Up to two candidate hits, then how to classify them: `Some(tangent)` when known for all,
+/// `None` to compare the tangents at each point.
+type Candidates<T> = ([T; 2], usize, Option<bool>);
+
 /// Segment / arc (or full circle).
 pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
+    let Some((cand, count, tangent)) = line_arc_candidates(l, a, tol) else {
+        return;
+    };
     let d = l.dir();
-    let len = d.length();
+    // The segment test first (cheap), then the angles of the points that pass it, side by
+    // side when there are two.
+    let mut on = [(0.0, DVec3::ZERO); 2];
+    let mut k = 0;
+    for &(s, p) in &cand[..count] {
+        if let Some(s) = seg_param(s, || d.length(), tol) {
+            on[k] = (s, p);
+            k += 1;
+        }
+    }
+    let u = match k {
+        0 => return,
+        1 => [a.param_of_point(on[0].1, tol), None],
+        _ => a.params_of2([on[0].1, on[1].1], tol),
+    };
+    for (&(s, p), u) in on.iter().zip(u).take(k) {
+        let Some(u) = u else {
+            continue;
+        };
+        let kind = match tangent {
+            Some(true) => LKind::Tangent,
+            Some(false) => LKind::Cross,
+            None => kind_by_tangents(d, a.tangent_at_point(p)),
+        };
+        out.put(s, u, p, kind);
+    }
+}
+
+/// The points (with their segment parameters) where the segment's carrier meets the circle.
+#[inline(always)]
+fn line_arc_candidates(l: &Line, a: &Arc, tol: f64) -> Option<Candidates<(f64, DVec3)>> {
+    let d = l.dir();
     let n = a.normal;
     let c = a.center;
     let r = a.radius;
     let h0 = (l.p0 - c).dot(n);
     let dn = d.dot(n);
     let h1 = h0 + dn;
-    // Puts the first `count` candidates (segment parameter, point) found on both curves;
-    // both arc angles are computed side by side.
-    let put = |cand: [(f64, DVec3); 2], count: usize, tangent: Option<bool>, out: &mut S| {
-        // The segment test first (cheap), then the angles of the points that pass it.
-        let mut on = [(0.0, DVec3::ZERO); 2];
-        let mut k = 0;
-        for &(s, p) in &cand[..count] {
-            if let Some(s) = seg_param(s, len, tol) {
-                on[k] = (s, p);
-                k += 1;
-            }
-        }
-        let u = match k {
-            0 => return,
-            1 => [a.param_of_point(on[0].1, tol), None],
-            _ => a.params_of2([on[0].1, on[1].1], tol),
-        };
-        for (&(s, p), u) in on.iter().zip(u).take(k) {
-            let Some(u) = u else {
-                continue;
-            };
-            let kind = match tangent {
-                Some(true) => LKind::Tangent,
-                Some(false) => LKind::Cross,
-                None => kind_by_tangents(d, a.tangent_at_point(p)),
-            };
-            out.put(s, u, p, kind);
-        }
-    };
     if h0.abs() <= tol && h1.abs() <= tol {
         // In the circle's plane: project the segment into it.
         let q0 = l.p0 - n * h0;
@@ -144,7 +154,7 @@ pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
         let foot = q0 + dq * sf;
         let h = (foot - c).length();
         if h > r + tol {
-            return;
+            return None;
         }
         let half = ((r - h) * (r + h)).max(0.0).sqrt();
         if 2.0 * half <= tol {
@@ -153,36 +163,59 @@ pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
             } else {
                 foot
             };
-            put([(sf, p); 2], 1, Some(true), out);
-        } else {
-            let ds = half / dq2.sqrt();
-            let (s1, s2) = (sf - ds, sf + ds);
-            // The circle's tangent is perpendicular to the radius, so the sine of its angle
-            // with the line is the cosine of the radius's: half / r at both points.
-            let tangent = half <= TANGENT_SIN * r;
-            put(
-                [(s1, q0 + dq * s1), (s2, q0 + dq * s2)],
-                2,
-                Some(tangent),
-                out,
-            );
+            return Some(([(sf, p); 2], 1, Some(true)));
         }
-    } else {
-        if dn == 0.0 {
-            return;
-        }
-        // Pierces the plane once: on the circle there or nowhere.
-        let s = -h0 / dn;
-        let p = l.p0 + d * s;
-        let rho = (p - c).length();
-        if (rho - r).abs() <= tol {
-            put([(s, p); 2], 1, None, out);
-        }
+        let ds = half / dq2.sqrt();
+        let (s1, s2) = (sf - ds, sf + ds);
+        // The circle's tangent is perpendicular to the radius, so the sine of its angle with
+        // the line is the cosine of the radius's: half / r at both points.
+        let tangent = half <= TANGENT_SIN * r;
+        return Some(([(s1, q0 + dq * s1), (s2, q0 + dq * s2)], 2, Some(tangent)));
     }
+    if dn == 0.0 {
+        return None;
+    }
+    // Pierces the plane once: on the circle there or nowhere.
+    let s = -h0 / dn;
+    let p = l.p0 + d * s;
+    let rho = (p - c).length();
+    ((rho - r).abs() <= tol).then_some(([(s, p); 2], 1, None))
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
 pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
+    let Some((p, count, tangent)) = arc_arc_candidates(a, b, tol, out) else {
+        return;
+    };
+    // The angles are computed two at a time: both points on a, then, if either is on a,
+    // both on b.
+    let s = a.params_of2(p, tol);
+    if s[..count].iter().all(Option::is_none) {
+        return;
+    }
+    let u = b.params_of2(p, tol);
+    for i in 0..count {
+        let (Some(s), Some(u)) = (s[i], u[i]) else {
+            continue;
+        };
+        let kind = match tangent {
+            Some(true) => LKind::Tangent,
+            Some(false) => LKind::Cross,
+            None => kind_by_tangents(a.tangent_at_point(p[i]), b.tangent_at_point(p[i])),
+        };
+        out.put(s, u, p[i], kind);
+    }
+}
+
+/// The points where the two circles meet. Two arcs of one circle are put as overlaps (or
+/// touch points) straight away, and give no candidates.
+#[inline(always)]
+fn arc_arc_candidates<S: Sink>(
+    a: &Arc,
+    b: &Arc,
+    tol: f64,
+    out: &mut S,
+) -> Option<Candidates<DVec3>> {
     let (n1, n2) = (a.normal, b.normal);
     let (c1, c2) = (a.center, b.center);
     let (r1, r2) = (a.radius, b.radius);
@@ -196,26 +229,6 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         (cross, cross.length())
     };
     let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
-    // Puts the first `count` candidate points found on both arcs. The angles are computed
-    // two at a time: both points on a, then, if either is on a, both on b.
-    let put = |p: [DVec3; 2], count: usize, tangent: Option<bool>, out: &mut S| {
-        let s = a.params_of2(p, tol);
-        if s[..count].iter().all(Option::is_none) {
-            return;
-        }
-        let u = b.params_of2(p, tol);
-        for i in 0..count {
-            let (Some(s), Some(u)) = (s[i], u[i]) else {
-                continue;
-            };
-            let kind = match tangent {
-                Some(true) => LKind::Tangent,
-                Some(false) => LKind::Cross,
-                None => kind_by_tangents(a.tangent_at_point(p[i]), b.tangent_at_point(p[i])),
-            };
-            out.put(s, u, p[i], kind);
-        }
-    };
     if off_plane <= tol {
         let vp = v - n1 * v.dot(n1);
         let d = vp.length();
@@ -223,10 +236,10 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
             if (r1 - r2).abs() <= tol {
                 cocircular(a, b, tol, out);
             }
-            return;
+            return None;
         }
         if d > r1 + r2 + tol || d < (r1 - r2).abs() - tol {
-            return;
+            return None;
         }
         let h2 = (r1 + r2 - d).max(0.0)
             * (d - r1 + r2).max(0.0)
@@ -239,17 +252,15 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         let x = (d * d + (r1 - r2) * (r1 + r2)) / (2.0 * d);
         let base = c1 + ex * x;
         if 2.0 * h <= tol {
-            put([base; 2], 1, Some(true), out);
-        } else {
-            // The tangents are perpendicular to the radii, so the sine of their angle is
-            // that of the radii: twice the area of the triangle c1 c2 p over r1 r2.
-            let tangent = d * h <= TANGENT_SIN * r1 * r2;
-            put([base - ey * h, base + ey * h], 2, Some(tangent), out);
+            return Some(([base; 2], 1, Some(true)));
         }
-        return;
+        // The tangents are perpendicular to the radii, so the sine of their angle is that of
+        // the radii: twice the area of the triangle c1 c2 p over r1 r2.
+        let tangent = d * h <= TANGENT_SIN * r1 * r2;
+        return Some(([base - ey * h, base + ey * h], 2, Some(tangent)));
     }
     if sin <= 1e-15 {
-        return; // parallel planes apart
+        return None; // parallel planes apart
     }
     // The line plane1 ∩ plane2 through x0 (the foot of c1 on it), direction n1 × n2.
     let k = n1.dot(n2);
@@ -259,7 +270,7 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     let hvec = x0 - c1;
     let h = hvec.length();
     if h > r1 + tol {
-        return;
+        return None;
     }
     let half = ((r1 - h) * (r1 + h)).max(0.0).sqrt();
     let on_b = |p: DVec3| {
@@ -281,17 +292,14 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     };
     if 2.0 * half <= tol {
         let p = on_a_circle(x0);
-        if on_b(p) {
-            put([p; 2], 1, None, out);
-        }
-    } else {
-        let p = [-1.0, 1.0].map(|sgn| on_a_circle(x0 + dir * (sgn * half)));
-        match (on_b(p[0]), on_b(p[1])) {
-            (true, true) => put(p, 2, None, out),
-            (true, false) => put(p, 1, None, out),
-            (false, true) => put([p[1], p[0]], 1, None, out),
-            (false, false) => {}
-        }
+        return on_b(p).then_some(([p; 2], 1, None));
+    }
+    let p = [-1.0, 1.0].map(|sgn| on_a_circle(x0 + dir * (sgn * half)));
+    match (on_b(p[0]), on_b(p[1])) {
+        (true, true) => Some((p, 2, None)),
+        (true, false) => Some((p, 1, None)),
+        (false, true) => Some(([p[1], p[0]], 1, None)),
+        (false, false) => None,
     }
 }
 

@@ -343,29 +343,44 @@ pub fn intersect(a: &Curve, b: &Curve, tol: f64) -> Vec<Hit> {
 /// As `intersect`, writing into `out` (cleared first) so a caller can reuse its allocation.
 pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
     out.clear();
-    let tol = if tol.is_finite() && tol > 0.0 {
+    let tol = if tol > 0.0 && tol < f64::INFINITY {
         tol
     } else {
         GEOMTOL
     };
-    if canonical_cmp(a, b) == Ordering::Greater {
-        compute(b, a, tol, out);
-        for h in out.iter_mut() {
-            std::mem::swap(&mut h.t1, &mut h.t2);
-            if let HitKind::Overlap(c) = &mut h.kind {
-                // Give the shared piece the direction of the (new) first curve.
-                if let Some(rev) = reversed_if_against(c, a) {
-                    **c = rev;
-                    h.point = c.eval(0.0);
-                    h.t1 = a.closest_point(h.point).0;
-                    h.t2 = b.closest_point(h.point).0;
-                }
+    let swapped = canonical_cmp(a, b) == Ordering::Greater;
+    let (x, y) = if swapped { (b, a) } else { (a, b) };
+    if simple_pair(x, y, tol, out) {
+        // The closed forms give distinct points (a double root comes out once) and no point
+        // inside an overlap: only the order is left to fix.
+        if out.len() == 2 && out[1].t1 < out[0].t1 {
+            out.swap(0, 1);
+        } else if out.len() > 2 {
+            out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+        }
+    } else {
+        by_pieces(x, y, tol, out);
+    }
+    if swapped {
+        swap_back(a, b, out);
+    }
+}
+
+/// Turn hits computed for (b, a) into hits of (a, b).
+fn swap_back(a: &Curve, b: &Curve, out: &mut [Hit]) {
+    for h in out.iter_mut() {
+        std::mem::swap(&mut h.t1, &mut h.t2);
+        if let HitKind::Overlap(c) = &mut h.kind {
+            // Give the shared piece the direction of the (new) first curve.
+            if let Some(rev) = reversed_if_against(c, a) {
+                **c = rev;
+                h.point = c.eval(0.0);
+                h.t1 = a.closest_point(h.point).0;
+                h.t2 = b.closest_point(h.point).0;
             }
         }
-        out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
-    } else {
-        compute(a, b, tol, out);
     }
+    out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
 }
 
 /// The overlap piece `c` reversed when it runs against curve `a`.
@@ -404,6 +419,7 @@ fn as_arc(c: &Curve) -> Option<&Arc> {
 
 /// Closed forms for two lines, circles or arcs, straight into `out` (their piece parameters
 /// are the public ones). False when the pair is not of that kind.
+#[inline(always)]
 fn simple_pair(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) -> bool {
     match (a, b) {
         (Curve::Line(x), Curve::Line(y)) => analytic::line_line(x, y, tol, out),
@@ -421,17 +437,10 @@ fn simple_pair(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) -> bool {
     true
 }
 
-fn compute(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
-    if simple_pair(a, b, tol, out) {
-        // The closed forms give distinct points (a double root comes out once) and no point
-        // inside an overlap: only the order is left to fix.
-        if out.len() == 2 && out[1].t1 < out[0].t1 {
-            out.swap(0, 1);
-        } else if out.len() > 2 {
-            out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
-        }
-        return;
-    }
+/// Any other pair: cut both curves into pieces, intersect the pieces whose boxes meet, and
+/// merge the results.
+#[inline(never)]
+fn by_pieces(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
     let mut hits = LHits::new();
     let sa = a.spans();
     let sb = b.spans();
@@ -475,13 +484,19 @@ fn to_hit(h: LHit, a0: f64, a1: f64, b0: f64, b1: f64) -> Hit {
     }
 }
 
-#[inline]
+#[inline(always)]
 fn hit_kind(k: LKind) -> HitKind {
     match k {
         LKind::Cross => HitKind::Cross,
         LKind::Tangent => HitKind::Tangent,
-        LKind::Overlap(p, _, _) => HitKind::Overlap(Box::new(piece_to_curve(*p))),
+        LKind::Overlap(p, _, _) => overlap_kind(*p),
     }
+}
+
+/// Kept out of line: point hits are the hot path.
+#[cold]
+fn overlap_kind(p: Piece) -> HitKind {
+    HitKind::Overlap(Box::new(piece_to_curve(p)))
 }
 
 /// Merge hits closer than `tol` (a merged pair of roots around one extremum is a tangency),
