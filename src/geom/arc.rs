@@ -32,15 +32,13 @@ pub struct Arc {
 /// the common case, for the hit parameters' hot path.
 #[inline(always)]
 fn norm_atan2(a: f64) -> f64 {
-    if a < 0.0 {
-        let r = a + TAU;
-        if r >= TAU {
-            0.0
-        } else {
-            r
-        }
+    // Written as selects, not branches: the sign of a hit's angle is a coin toss.
+    let r = a + if a < 0.0 { TAU } else { 0.0 };
+    // −ε + 2π rounds to 2π: that point is at the seam.
+    if r >= TAU {
+        0.0
     } else {
-        a
+        r
     }
 }
 
@@ -206,21 +204,11 @@ impl Arc {
 
     /// The public parameter of the point at angle `a` if it lies on the arc, allowing `slack`
     /// radians beyond either end (clamped to [0, 1]).
-    #[inline]
     pub(crate) fn param_of_angle(&self, a: f64, slack: f64) -> Option<f64> {
-        self.param_of_angle_with(a, || slack)
-    }
-
-    /// `param_of_angle` with the slack computed only when the angle is off the arc (the
-    /// slack is a division, and most points are on it).
-    #[inline(always)]
-    fn param_of_angle_with(&self, a: f64, slack: impl FnOnce() -> f64) -> Option<f64> {
         let rel = norm_angle(a - self.start);
         if rel <= self.sweep {
-            return Some(rel / self.sweep);
-        }
-        let slack = slack();
-        if rel <= self.sweep + slack {
+            Some(rel / self.sweep)
+        } else if rel <= self.sweep + slack {
             Some(1.0)
         } else if rel >= TAU - slack {
             Some(0.0)
@@ -229,15 +217,17 @@ impl Arc {
         }
     }
 
-    /// `param_of_angle(angle_of(p), tol / radius)`, dividing only for a point off the arc.
+    /// The public parameter of a point `p` of the circle, `None` when it is more than `tol`
+    /// beyond the arc's ends (`params_of_atan2` of its angle).
     #[inline(always)]
     pub(crate) fn param_of_point(&self, p: DVec3, tol: f64) -> Option<f64> {
-        self.param_of_angle_with(self.angle_of(p), || tol / self.radius)
+        let v = p - self.center;
+        let (y, x) = (v.dot(self.y_axis), v.dot(self.x_axis));
+        self.params_of_atan2(atan2_2([y, y], [x, x]), tol)[0]
     }
 
-    /// The public parameters of two points of the circle, as
-    /// `param_of_angle(angle_of(p), tol / radius)` gives them (bit for bit), with both angles
-    /// computed side by side (the two hits of a pair).
+    /// `param_of_point` of two points, their angles computed side by side (the two hits of a
+    /// pair).
     #[inline(always)]
     pub(crate) fn params_of2(&self, p: [DVec3; 2], tol: f64) -> [Option<f64>; 2] {
         let (v0, v1) = (p[0] - self.center, p[1] - self.center);
@@ -245,11 +235,54 @@ impl Arc {
             [v0.dot(self.y_axis), v1.dot(self.y_axis)],
             [v0.dot(self.x_axis), v1.dot(self.x_axis)],
         );
-        let slack = || tol / self.radius;
+        self.params_of_atan2(ang, tol)
+    }
+
+    /// The public parameters of two points of the circle from their angles in the arc's
+    /// frame as `atan2` gives them (in [−π, π]); `None` for a point more than `tol` beyond
+    /// the arc's ends (a point within `tol` of an end gets that end). The closed forms' hot
+    /// path: one division for both points (none for a full circle), no branch on the sign
+    /// of an angle, and the end slack tol / r tested as a product.
+    #[inline(always)]
+    pub(crate) fn params_of_atan2(&self, ang: [f64; 2], tol: f64) -> [Option<f64>; 2] {
+        let inv = if self.is_full() {
+            1.0 / TAU
+        } else {
+            1.0 / self.sweep
+        };
+        // Not `ang.map` or a closure: those are not always inlined.
         [
-            self.param_of_angle_with(norm_atan2(ang[0]), slack),
-            self.param_of_angle_with(norm_atan2(ang[1]), slack),
+            self.param_from_atan2(ang[0], inv, tol),
+            self.param_from_atan2(ang[1], inv, tol),
         ]
+    }
+
+    /// `params_of_atan2` of one angle, `inv` the reciprocal of the sweep.
+    #[inline(always)]
+    fn param_from_atan2(&self, a: f64, inv: f64, tol: f64) -> Option<f64> {
+        // a in [−π, π], start in [0, 2π): up to two turns to add, as selects.
+        let d = a - self.start;
+        let rel = d + if d < 0.0 { TAU } else { 0.0 } + if d < -TAU { TAU } else { 0.0 };
+        // Just below a turn rounds up to 2π: that point is at the start.
+        let rel = if rel >= TAU { 0.0 } else { rel };
+        if rel <= self.sweep {
+            let t = rel * inv;
+            // A full circle's seam is t = 0; an arc's end is t = 1.
+            return Some(if t < 1.0 {
+                t
+            } else if self.is_full() {
+                0.0
+            } else {
+                1.0
+            });
+        }
+        if (rel - self.sweep) * self.radius <= tol {
+            Some(1.0)
+        } else if (TAU - rel) * self.radius <= tol {
+            Some(0.0)
+        } else {
+            None
+        }
     }
 
     /// The tangent direction (increasing angle) at a point `p` of the circle, length r.

@@ -65,9 +65,8 @@ fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
 
 /// `kernel` on two lanes, operation for operation (so the results are identical).
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-#[target_feature(enable = "sse2")]
-#[inline]
-fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
+#[inline(always)]
+unsafe fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
     use std::arch::x86_64::*;
     let k = _mm_set1_pd;
     let sel = |m: __m128d, a: __m128d, b: __m128d| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b));

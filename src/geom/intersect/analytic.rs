@@ -13,6 +13,7 @@ use glam::DVec3;
 
 use super::{LKind, Sink, TANGENT_SIN};
 use crate::geom::arc::{norm_angle, Arc};
+use crate::geom::fastmath::atan2_2;
 use crate::geom::line::Line;
 use crate::geom::piece::Piece;
 use crate::geom::traits::ParamCurve;
@@ -97,210 +98,287 @@ fn collinear<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     }
 }
 
-/// Up to two candidate hits, then how to classify them: `Some(tangent)` when known for all,
-/// `None` to compare the tangents at each point.
-type Candidates<T> = ([T; 2], usize, Option<bool>);
-
-/// Segment / arc (or full circle).
-pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
-    let Some((cand, count, tangent)) = line_arc_candidates(l, a, tol) else {
-        return;
-    };
-    let d = l.dir();
-    // The segment test first (cheap), then the angles of the points that pass it, side by
-    // side when there are two.
-    let mut on = [(0.0, DVec3::ZERO); 2];
-    let mut k = 0;
-    for &(s, p) in &cand[..count] {
-        if let Some(s) = seg_param(s, || d.length(), tol) {
-            on[k] = (s, p);
-            k += 1;
+/// Put the candidates that lie on both curves (`s`, `u` both found, within the first
+/// `count`), in the order the sink wants (the caller's t1): chosen by index, not by moving
+/// written hits.
+#[inline(always)]
+fn put_hits<S: Sink>(
+    out: &mut S,
+    s: [Option<f64>; 2],
+    u: [Option<f64>; 2],
+    count: usize,
+    mut hit: impl FnMut(usize) -> (DVec3, LKind),
+) {
+    let key = if out.by_u() { u } else { s };
+    let both = |i: usize| s[i].is_some() && u[i].is_some();
+    let flip = count == 2 && both(0) && both(1) && key[1] < key[0];
+    let order = if flip { [1, 0] } else { [0, 1] };
+    for i in order.into_iter().take(count) {
+        if let (Some(s), Some(u)) = (s[i], u[i]) {
+            let (p, kind) = hit(i);
+            out.put(s, u, p, kind);
         }
-    }
-    let u = match k {
-        0 => return,
-        1 => [a.param_of_point(on[0].1, tol), None],
-        _ => a.params_of2([on[0].1, on[1].1], tol),
-    };
-    for (&(s, p), u) in on.iter().zip(u).take(k) {
-        let Some(u) = u else {
-            continue;
-        };
-        let kind = match tangent {
-            Some(true) => LKind::Tangent,
-            Some(false) => LKind::Cross,
-            None => kind_by_tangents(d, a.tangent_at_point(p)),
-        };
-        out.put(s, u, p, kind);
     }
 }
 
-/// The points (with their segment parameters) where the segment's carrier meets the circle.
-#[inline(always)]
-fn line_arc_candidates(l: &Line, a: &Arc, tol: f64) -> Option<Candidates<(f64, DVec3)>> {
+/// Segment / arc (or full circle).
+pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     let d = l.dir();
-    let n = a.normal;
-    let c = a.center;
-    let r = a.radius;
-    let h0 = (l.p0 - c).dot(n);
+    let (n, c) = (a.normal, a.center);
+    let w0 = l.p0 - c;
+    let h0 = w0.dot(n);
     let dn = d.dot(n);
-    let h1 = h0 + dn;
-    if h0.abs() <= tol && h1.abs() <= tol {
-        // In the circle's plane: project the segment into it.
-        let q0 = l.p0 - n * h0;
-        let dq = d - n * dn;
-        let dq2 = dq.length_squared();
-        let sf = -(q0 - c).dot(dq) / dq2;
-        let foot = q0 + dq * sf;
-        let h = (foot - c).length();
-        if h > r + tol {
-            return None;
-        }
-        let half = ((r - h) * (r + h)).max(0.0).sqrt();
-        if 2.0 * half <= tol {
-            let p = if h > 0.0 {
-                c + (foot - c) * (r / h)
-            } else {
-                foot
-            };
-            return Some(([(sf, p); 2], 1, Some(true)));
-        }
-        let ds = half / dq2.sqrt();
-        let (s1, s2) = (sf - ds, sf + ds);
-        // The circle's tangent is perpendicular to the radius, so the sine of its angle with
-        // the line is the cosine of the radius's: half / r at both points.
-        let tangent = half <= TANGENT_SIN * r;
-        return Some(([(s1, q0 + dq * s1), (s2, q0 + dq * s2)], 2, Some(tangent)));
+    if h0.abs() <= tol && (h0 + dn).abs() <= tol {
+        line_arc_flat(l, a, w0, tol, out);
+        return;
     }
     if dn == 0.0 {
-        return None;
+        return;
     }
     // Pierces the plane once: on the circle there or nowhere.
     let s = -h0 / dn;
     let p = l.p0 + d * s;
-    let rho = (p - c).length();
-    ((rho - r).abs() <= tol).then_some(([(s, p); 2], 1, None))
+    if ((p - c).length() - a.radius).abs() > tol {
+        return;
+    }
+    let Some(s) = seg_param(s, || d.length(), tol) else {
+        return;
+    };
+    if let Some(u) = a.param_of_point(p, tol) {
+        out.put(s, u, p, kind_by_tangents(d, a.tangent_at_point(p)));
+    }
+}
+
+/// A segment in the arc's plane (within tol at both ends), worked in the arc's 2D frame:
+/// the foot F of the perpendicular from the centre ± the half chord √(r² − |F|²).
+#[inline(always)]
+fn line_arc_flat<S: Sink>(l: &Line, a: &Arc, w0: DVec3, tol: f64, out: &mut S) {
+    let d = l.dir();
+    let (x, y, r) = (a.x_axis, a.y_axis, a.radius);
+    let (u0, v0) = (w0.dot(x), w0.dot(y));
+    let (du, dv) = (d.dot(x), d.dot(y));
+    let dq2 = du * du + dv * dv;
+    let sf = -(u0 * du + v0 * dv) / dq2;
+    let (fu, fv) = (u0 + du * sf, v0 + dv * sf);
+    let hh = fu * fu + fv * fv;
+    if hh > (r + tol) * (r + tol) {
+        return;
+    }
+    let at = |s: f64| (u0 + du * s, v0 + dv * s);
+    let to_3d = |(pu, pv): (f64, f64)| a.center + x * pu + y * pv;
+    // half² = (r − h)(r + h).
+    let half2 = (r * r - hh).max(0.0);
+    if 4.0 * half2 <= tol * tol {
+        // Touches: the foot, put on the circle.
+        let h = hh.sqrt();
+        let q = if h > 0.0 {
+            (fu * (r / h), fv * (r / h))
+        } else {
+            (fu, fv)
+        };
+        let Some(s) = seg_param(sf, || d.length(), tol) else {
+            return;
+        };
+        if let Some(u) = a.params_of_atan2(atan2_2([q.1; 2], [q.0; 2]), tol)[0] {
+            out.put(s, u, to_3d(q), LKind::Tangent);
+        }
+        return;
+    }
+    let ds = (half2 / dq2).sqrt();
+    let (s1, s2) = (sf - ds, sf + ds);
+    let (q1, q2) = (at(s1), at(s2));
+    let u = a.params_of_atan2(atan2_2([q1.1, q2.1], [q1.0, q2.0]), tol);
+    // The circle's tangent is perpendicular to the radius, so the sine of its angle with
+    // the line is the cosine of the radius's: half / r at both points.
+    let kind = || {
+        if half2 <= (TANGENT_SIN * r) * (TANGENT_SIN * r) {
+            LKind::Tangent
+        } else {
+            LKind::Cross
+        }
+    };
+    let s = [
+        seg_param(s1, || d.length(), tol),
+        seg_param(s2, || d.length(), tol),
+    ];
+    let q = [q1, q2];
+    put_hits(out, s, u, 2, |i| (to_3d(q[i]), kind()));
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
 pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
-    let Some((p, count, tangent)) = arc_arc_candidates(a, b, tol, out) else {
-        return;
-    };
-    // The angles are computed two at a time: both points on a, then, if either is on a,
-    // both on b.
-    let s = a.params_of2(p, tol);
-    if s[..count].iter().all(Option::is_none) {
+    if a.normal == b.normal {
+        // One normal, so one OCS frame (the common case: circles drawn in one plane).
+        arc_arc_flat(a, b, tol, out);
         return;
     }
-    let u = b.params_of2(p, tol);
-    for i in 0..count {
-        let (Some(s), Some(u)) = (s[i], u[i]) else {
-            continue;
-        };
-        let kind = match tangent {
-            Some(true) => LKind::Tangent,
-            Some(false) => LKind::Cross,
-            None => kind_by_tangents(a.tangent_at_point(p[i]), b.tangent_at_point(p[i])),
-        };
-        out.put(s, u, p[i], kind);
+    let v = b.center - a.center;
+    // b's normal in a's frame: its in-plane part m has length sin(angle of the normals).
+    let m = (b.normal.dot(a.x_axis), b.normal.dot(a.y_axis));
+    let m2 = m.0 * m.0 + m.1 * m.1;
+    let e = b.normal.dot(v);
+    let off = v.dot(a.normal).abs().max(e.abs());
+    let rmax = a.radius.max(b.radius);
+    if off <= tol && rmax * rmax * m2 <= (tol - off) * (tol - off) {
+        // Coplanar within tol: opposite normals, or nearly equal ones.
+        arc_arc_coplanar(a, b, v, tol, out);
+    } else if m2 > 1e-30 {
+        arc_arc_3d(a, b, v, m, e, tol, out);
     }
+    // else: parallel planes apart.
 }
 
-/// The points where the two circles meet. Two arcs of one circle are put as overlaps (or
-/// touch points) straight away, and give no candidates.
+/// Two arcs with the same normal, in their shared 2D frame. With d = |c1c2|, the chord's
+/// foot is at x = (d² + r1² − r2²) / 2d from c1, and the half chord h comes from Heron's
+/// factored form 4d²h² = ((r1+r2)² − d²)(d² − (r1−r2)²), free of cancellation at tangency.
+/// Both are taken as fractions of d (x/d, h/d), so no root of d² is needed.
 #[inline(always)]
-fn arc_arc_candidates<S: Sink>(
-    a: &Arc,
-    b: &Arc,
-    tol: f64,
-    out: &mut S,
-) -> Option<Candidates<DVec3>> {
-    let (n1, n2) = (a.normal, b.normal);
-    let (c1, c2) = (a.center, b.center);
+fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
+    let (x, y) = (a.x_axis, a.y_axis);
+    let v = b.center - a.center;
+    if v.dot(a.normal).abs() > tol {
+        return; // parallel planes apart
+    }
+    let (vx, vy) = (v.dot(x), v.dot(y));
+    let dd = vx * vx + vy * vy;
     let (r1, r2) = (a.radius, b.radius);
-    let v = c2 - c1;
-    // Equal normals (circles drawn in one plane, the common case) give a zero cross product
-    // exactly: skip computing it.
-    let (cross, sin) = if n1 == n2 {
-        (DVec3::ZERO, 0.0)
+    if dd <= tol * tol {
+        if (r1 - r2).abs() <= tol {
+            cocircular(a, b, tol, out);
+        }
+        return;
+    }
+    let (sum, dif) = (r1 + r2, r1 - r2);
+    let gap = dif.abs() - tol;
+    if dd > (sum + tol) * (sum + tol) || (gap > 0.0 && dd < gap * gap) {
+        return;
+    }
+    let n = (sum * sum - dd).max(0.0) * (dd - dif * dif).max(0.0);
+    let inv = 0.5 / dd;
+    // x/d from c1, and (x − d)/d from c2 (formed directly: no cancellation).
+    let (k1, m1) = ((dd + dif * sum) * inv, (dif * sum - dd) * inv);
+    // h/d; a zero half chord (2h <= tol) is one touch point.
+    let (k2, count, tangent) = if n <= tol * tol * dd {
+        (0.0, 1, true)
     } else {
-        let cross = n1.cross(n2);
-        (cross, cross.length())
+        // The tangents are perpendicular to the radii, so the sine of their angle is that
+        // of the radii: twice the area of the triangle c1 c2 p over r1 r2, i.e. d·h / r1r2.
+        let t = TANGENT_SIN * r1 * r2;
+        (n.sqrt() * inv, 2, 0.25 * n <= t * t)
     };
-    let off_plane = v.dot(n1).abs().max(v.dot(n2).abs()) + r1.max(r2) * sin;
-    if off_plane <= tol {
-        let vp = v - n1 * v.dot(n1);
-        let d = vp.length();
-        if d <= tol {
-            if (r1 - r2).abs() <= tol {
-                cocircular(a, b, tol, out);
-            }
-            return None;
+    // The two points (the first at base − (n × ex)·h, as the 3D forms order them), from c1
+    // and from c2.
+    let pa = [
+        (vx * k1 + vy * k2, vy * k1 - vx * k2),
+        (vx * k1 - vy * k2, vy * k1 + vx * k2),
+    ];
+    let pb = [
+        (vx * m1 + vy * k2, vy * m1 - vx * k2),
+        (vx * m1 - vy * k2, vy * m1 + vx * k2),
+    ];
+    let s = a.params_of_atan2(atan2_2([pa[0].1, pa[1].1], [pa[0].0, pa[1].0]), tol);
+    let u = b.params_of_atan2(atan2_2([pb[0].1, pb[1].1], [pb[0].0, pb[1].0]), tol);
+    let kind = if tangent {
+        LKind::Tangent
+    } else {
+        LKind::Cross
+    };
+    put_hits(out, s, u, count, |i| {
+        (a.center + x * pa[i].0 + y * pa[i].1, kind.clone())
+    });
+}
+
+/// Two arcs in one plane with different normals (opposite, or equal within tol): as
+/// `arc_arc_flat`, in 3D.
+#[cold]
+fn arc_arc_coplanar<S: Sink>(a: &Arc, b: &Arc, v: DVec3, tol: f64, out: &mut S) {
+    let (n1, c1, r1, r2) = (a.normal, a.center, a.radius, b.radius);
+    let vp = v - n1 * v.dot(n1);
+    let d = vp.length();
+    if d <= tol {
+        if (r1 - r2).abs() <= tol {
+            cocircular(a, b, tol, out);
         }
-        if d > r1 + r2 + tol || d < (r1 - r2).abs() - tol {
-            return None;
-        }
-        let h2 = (r1 + r2 - d).max(0.0)
-            * (d - r1 + r2).max(0.0)
-            * (d + r1 - r2).max(0.0)
-            * (r1 + r2 + d)
+        return;
+    }
+    if d > r1 + r2 + tol || d < (r1 - r2).abs() - tol {
+        return;
+    }
+    let h2 =
+        (r1 + r2 - d).max(0.0) * (d - r1 + r2).max(0.0) * (d + r1 - r2).max(0.0) * (r1 + r2 + d)
             / (4.0 * d * d);
-        let h = h2.sqrt();
-        let ex = vp / d;
-        let ey = n1.cross(ex);
-        let x = (d * d + (r1 - r2) * (r1 + r2)) / (2.0 * d);
-        let base = c1 + ex * x;
-        if 2.0 * h <= tol {
-            return Some(([base; 2], 1, Some(true)));
-        }
-        // The tangents are perpendicular to the radii, so the sine of their angle is that of
-        // the radii: twice the area of the triangle c1 c2 p over r1 r2.
-        let tangent = d * h <= TANGENT_SIN * r1 * r2;
-        return Some(([base - ey * h, base + ey * h], 2, Some(tangent)));
-    }
-    if sin <= 1e-15 {
-        return None; // parallel planes apart
-    }
-    // The line plane1 ∩ plane2 through x0 (the foot of c1 on it), direction n1 × n2.
-    let k = n1.dot(n2);
-    let d2 = n2.dot(v);
-    let x0 = c1 + (n2 - n1 * k) * (d2 / (sin * sin));
-    let dir = cross / sin;
-    let hvec = x0 - c1;
-    let h = hvec.length();
-    if h > r1 + tol {
-        return None;
-    }
-    let half = ((r1 - h) * (r1 + h)).max(0.0).sqrt();
-    let on_b = |p: DVec3| {
-        let w = p - c2;
-        let z = w.dot(n2);
-        let rho = (w - n2 * z).length();
-        (z * z + (rho - r2) * (rho - r2)) <= tol * tol
+    let h = h2.sqrt();
+    let ex = vp / d;
+    let ey = n1.cross(ex);
+    let base = c1 + ex * ((d * d + (r1 - r2) * (r1 + r2)) / (2.0 * d));
+    let (p, count, kind) = if 2.0 * h <= tol {
+        ([base; 2], 1, LKind::Tangent)
+    } else if d * h <= TANGENT_SIN * r1 * r2 {
+        ([base - ey * h, base + ey * h], 2, LKind::Tangent)
+    } else {
+        ([base - ey * h, base + ey * h], 2, LKind::Cross)
     };
-    let on_a_circle = |p: DVec3| {
-        // Project to circle 1 exactly (keeps the point on the first curve).
-        let w = p - c1;
-        let wp = w - n1 * w.dot(n1);
-        let l = wp.length();
-        if l > 0.0 {
-            c1 + wp * (r1 / l)
+    let (s, u) = (a.params_of2(p, tol), b.params_of2(p, tol));
+    put_hits(out, s, u, count, |i| (p[i], kind.clone()));
+}
+
+/// Two arcs in different planes: the line plane1 ∩ plane2 cuts circle a, and each point is
+/// tested against circle b. In a's 2D frame the line is m·q = e (m the in-plane part of
+/// b's normal, e = n2·(c2 − c1)), so the points are (m e ± m⊥ √(r1²|m|² − e²)) / |m|².
+#[inline(always)]
+fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f64, out: &mut S) {
+    let (x, y, r1, r2) = (a.x_axis, a.y_axis, a.radius, b.radius);
+    let m2 = m.0 * m.0 + m.1 * m.1;
+    // The line's distance from c1 is |e| / |m|.
+    if e * e > (r1 + tol) * (r1 + tol) * m2 {
+        return;
+    }
+    // |m|² times the half chord squared.
+    let w2 = (r1 * r1 * m2 - e * e).max(0.0);
+    let inv = 1.0 / m2;
+    let (q, count) = if 4.0 * w2 <= tol * tol * m2 {
+        // Touches circle a: the foot, put on the circle.
+        let f = (m.0 * e * inv, m.1 * e * inv);
+        let l = f.0.hypot(f.1);
+        let q = if l > 0.0 {
+            (f.0 * (r1 / l), f.1 * (r1 / l))
         } else {
-            p
-        }
+            f
+        };
+        ([q; 2], 1)
+    } else {
+        // Unscaled (times |m|²): the angles on a need no division.
+        let w = w2.sqrt();
+        (
+            [
+                (m.0 * e + m.1 * w, m.1 * e - m.0 * w),
+                (m.0 * e - m.1 * w, m.1 * e + m.0 * w),
+            ],
+            2,
+        )
     };
-    if 2.0 * half <= tol {
-        let p = on_a_circle(x0);
-        return on_b(p).then_some(([p; 2], 1, None));
-    }
-    let p = [-1.0, 1.0].map(|sgn| on_a_circle(x0 + dir * (sgn * half)));
-    match (on_b(p[0]), on_b(p[1])) {
-        (true, true) => Some((p, 2, None)),
-        (true, false) => Some((p, 1, None)),
-        (false, true) => Some(([p[1], p[0]], 1, None)),
-        (false, false) => None,
-    }
+    let s = a.params_of_atan2(atan2_2([q[0].1, q[1].1], [q[0].0, q[1].0]), tol);
+    let scale = if count == 2 { inv } else { 1.0 };
+    let at = |(qx, qy): (f64, f64)| a.center + x * (qx * scale) + y * (qy * scale);
+    let p = [at(q[0]), at(q[1])];
+    let (wb0, wb1) = (p[0] - v - a.center, p[1] - v - a.center);
+    let u = b.params_of_atan2(
+        atan2_2(
+            [wb0.dot(b.y_axis), wb1.dot(b.y_axis)],
+            [wb0.dot(b.x_axis), wb1.dot(b.x_axis)],
+        ),
+        tol,
+    );
+    // On circle b: p is on b's plane by construction, so its distance from c2 is within tol
+    // of r2.
+    let lo = (r2 - tol).max(0.0);
+    let on_b = |w: DVec3| (lo * lo..=(r2 + tol) * (r2 + tol)).contains(&w.length_squared());
+    let wb = [wb0, wb1];
+    let s = [s[0].filter(|_| on_b(wb0)), s[1].filter(|_| on_b(wb1))];
+    put_hits(out, s, u, count, |i| {
+        let kind = kind_by_tangents(a.tangent_at_point(p[i]), b.normal.cross(wb[i]));
+        (p[i], kind)
+    });
 }
 
 /// Two arcs on the same circle: the shared angular ranges as overlap arcs, or touch points.

@@ -115,6 +115,14 @@ pub(crate) type LHits = SmallVec<[LHit; 4]>;
 /// ones), which spares an intermediate copy per hit.
 pub(crate) trait Sink {
     fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind);
+
+    /// True when the hits should come in the order of the second piece's parameter (the
+    /// caller's first curve is that piece): the closed forms put their points in the
+    /// caller's order, so no hit is moved after it is written.
+    #[inline(always)]
+    fn by_u(&self) -> bool {
+        false
+    }
 }
 
 impl Sink for LHits {
@@ -136,15 +144,20 @@ impl Sink for Vec<Hit> {
     }
 }
 
-/// The public list with the two curves' roles swapped. Only for `line_arc` with the line
-/// second: a line and an arc never overlap, so swapping the parameters is the whole job.
+/// The public list of a pair computed in swapped order: the second piece is the caller's
+/// first curve. Overlap pieces still run along the piece computed first (`fix_overlaps`
+/// turns them round).
 struct Swapped<'a>(&'a mut Vec<Hit>);
 
 impl Sink for Swapped<'_> {
     #[inline]
     fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind) {
-        debug_assert!(!matches!(kind, LKind::Overlap(..)));
         self.0.put(u, s, p, kind);
+    }
+
+    #[inline(always)]
+    fn by_u(&self) -> bool {
+        true
     }
 }
 
@@ -348,39 +361,44 @@ pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
     } else {
         GEOMTOL
     };
-    let swapped = canonical_cmp(a, b) == Ordering::Greater;
-    let (x, y) = if swapped { (b, a) } else { (a, b) };
-    if simple_pair(x, y, tol, out) {
-        // The closed forms give distinct points (a double root comes out once) and no point
-        // inside an overlap: only the order is left to fix.
-        if out.len() == 2 && out[1].t1 < out[0].t1 {
-            out.swap(0, 1);
-        } else if out.len() > 2 {
-            out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+    if canonical_cmp(a, b) != Ordering::Greater {
+        if !simple_pair(a, b, tol, out) {
+            by_pieces(a, b, tol, out);
         }
+    } else if simple_pair(b, a, tol, &mut Swapped(out)) {
+        fix_overlaps(a, b, out);
     } else {
-        by_pieces(x, y, tol, out);
+        by_pieces(b, a, tol, out);
+        for h in out.iter_mut() {
+            std::mem::swap(&mut h.t1, &mut h.t2);
+        }
+        fix_overlaps(a, b, out);
     }
-    if swapped {
-        swap_back(a, b, out);
+    // The closed forms put their points in order of t1, with a double root once and no
+    // point inside an overlap; only several overlaps (arcs of one circle) need a sort.
+    if out.len() > 2 || (out.len() == 2 && out[1].t1 < out[0].t1) {
+        out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
     }
 }
 
-/// Turn hits computed for (b, a) into hits of (a, b).
-fn swap_back(a: &Curve, b: &Curve, out: &mut [Hit]) {
+/// Hits of (a, b) computed as (b, a), parameters already swapped: give each overlap piece
+/// the direction of `a`, and restore the order of t1.
+fn fix_overlaps(a: &Curve, b: &Curve, out: &mut [Hit]) {
+    let mut moved = false;
     for h in out.iter_mut() {
-        std::mem::swap(&mut h.t1, &mut h.t2);
         if let HitKind::Overlap(c) = &mut h.kind {
-            // Give the shared piece the direction of the (new) first curve.
             if let Some(rev) = reversed_if_against(c, a) {
                 **c = rev;
                 h.point = c.eval(0.0);
                 h.t1 = a.closest_point(h.point).0;
                 h.t2 = b.closest_point(h.point).0;
+                moved = true;
             }
         }
     }
-    out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+    if moved {
+        out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
+    }
 }
 
 /// The overlap piece `c` reversed when it runs against curve `a`.
@@ -418,16 +436,14 @@ fn as_arc(c: &Curve) -> Option<&Arc> {
 }
 
 /// Closed forms for two lines, circles or arcs, straight into `out` (their piece parameters
-/// are the public ones). False when the pair is not of that kind.
+/// are the public ones). False when the pair is not of that kind. (In canonical order a
+/// line always comes first.)
 #[inline(always)]
-fn simple_pair(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) -> bool {
+fn simple_pair<S: Sink>(a: &Curve, b: &Curve, tol: f64, out: &mut S) -> bool {
     match (a, b) {
         (Curve::Line(x), Curve::Line(y)) => analytic::line_line(x, y, tol, out),
         (Curve::Line(x), _) if as_arc(b).is_some() => {
             analytic::line_arc(x, as_arc(b).unwrap(), tol, out)
-        }
-        (_, Curve::Line(y)) if as_arc(a).is_some() => {
-            analytic::line_arc(y, as_arc(a).unwrap(), tol, &mut Swapped(out))
         }
         _ => match (as_arc(a), as_arc(b)) {
             (Some(x), Some(y)) => analytic::arc_arc(x, y, tol, out),
