@@ -10,8 +10,9 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 
 use super::error::{finite, finite3, invalid, Result};
-use super::fastmath::{atan2, atan2_2};
+use super::fastmath::{atan2, atan2_lanes};
 use super::frame::arbitrary_axis;
+use super::lanes::F2;
 use super::traits::*;
 
 /// A circular arc (or, with sweep 2π, the full circle used by `Circle`).
@@ -222,67 +223,48 @@ impl Arc {
     #[inline(always)]
     pub(crate) fn param_of_point(&self, p: DVec3, tol: f64) -> Option<f64> {
         let v = p - self.center;
-        let (y, x) = (v.dot(self.y_axis), v.dot(self.x_axis));
-        self.params_of_atan2(atan2_2([y, y], [x, x]), tol)[0]
+        let (y, x) = (F2::splat(v.dot(self.y_axis)), F2::splat(v.dot(self.x_axis)));
+        let (t, on) = self.params_of_atan2(atan2_lanes(y, x), tol);
+        (on & 1 == 1).then_some(t.get()[0])
     }
 
     /// `param_of_point` of two points, their angles computed side by side (the two hits of a
-    /// pair).
+    /// pair), as `params_of_atan2` gives them.
     #[inline(always)]
-    pub(crate) fn params_of2(&self, p: [DVec3; 2], tol: f64) -> [Option<f64>; 2] {
+    pub(crate) fn params_of2(&self, p: [DVec3; 2], tol: f64) -> (F2, u32) {
         let (v0, v1) = (p[0] - self.center, p[1] - self.center);
-        let ang = atan2_2(
-            [v0.dot(self.y_axis), v1.dot(self.y_axis)],
-            [v0.dot(self.x_axis), v1.dot(self.x_axis)],
-        );
-        self.params_of_atan2(ang, tol)
+        let y = F2::new(v0.dot(self.y_axis), v1.dot(self.y_axis));
+        let x = F2::new(v0.dot(self.x_axis), v1.dot(self.x_axis));
+        self.params_of_atan2(atan2_lanes(y, x), tol)
     }
 
     /// The public parameters of two points of the circle from their angles in the arc's
-    /// frame as `atan2` gives them (in [−π, π]); `None` for a point more than `tol` beyond
-    /// the arc's ends (a point within `tol` of an end gets that end). The closed forms' hot
-    /// path: one division for both points (none for a full circle), no branch on the sign
-    /// of an angle, and the end slack tol / r tested as a product.
+    /// frame as `atan2` gives them (in [−π, π]), and a mask with bit i set when point i is
+    /// on the arc: within `tol` of it (a point beyond an end by at most `tol` gets that
+    /// end). The closed forms' hot path: both points at once, no branch on the sign of an
+    /// angle or on which side of the arc it falls, one division (none for a full circle),
+    /// and the end slack tol / r tested as a product.
     #[inline(always)]
-    pub(crate) fn params_of_atan2(&self, ang: [f64; 2], tol: f64) -> [Option<f64>; 2] {
-        let inv = if self.is_full() {
-            1.0 / TAU
-        } else {
-            1.0 / self.sweep
-        };
-        // Not `ang.map` or a closure: those are not always inlined.
-        [
-            self.param_from_atan2(ang[0], inv, tol),
-            self.param_from_atan2(ang[1], inv, tol),
-        ]
-    }
-
-    /// `params_of_atan2` of one angle, `inv` the reciprocal of the sweep.
-    #[inline(always)]
-    fn param_from_atan2(&self, a: f64, inv: f64, tol: f64) -> Option<f64> {
-        // a in [−π, π], start in [0, 2π): up to two turns to add, as selects.
-        let d = a - self.start;
-        let rel = d + if d < 0.0 { TAU } else { 0.0 } + if d < -TAU { TAU } else { 0.0 };
+    pub(crate) fn params_of_atan2(&self, ang: F2, tol: f64) -> (F2, u32) {
+        let k = F2::splat;
+        let full = self.is_full();
+        let inv = if full { 1.0 / TAU } else { 1.0 / self.sweep };
+        let (sweep, turn) = (k(self.sweep), k(TAU));
+        // ang in [−π, π], start in [0, 2π): up to two turns to add.
+        let d = ang - k(self.start);
+        let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn);
         // Just below a turn rounds up to 2π: that point is at the start.
-        let rel = if rel >= TAU { 0.0 } else { rel };
-        if rel <= self.sweep {
-            let t = rel * inv;
-            // A full circle's seam is t = 0; an arc's end is t = 1.
-            return Some(if t < 1.0 {
-                t
-            } else if self.is_full() {
-                0.0
-            } else {
-                1.0
-            });
-        }
-        if (rel - self.sweep) * self.radius <= tol {
-            Some(1.0)
-        } else if (TAU - rel) * self.radius <= tol {
-            Some(0.0)
-        } else {
-            None
-        }
+        let rel = rel.ge(turn).drop(rel);
+        let on = rel.le(sweep);
+        // t rounds up to 1 only at the end: a full circle's seam is t = 0.
+        let t = rel * k(inv);
+        let t = t.ge(k(1.0)).select(k(if full { 0.0 } else { 1.0 }), t);
+        // Beyond the end or before the start by at most tol (tol / r radians).
+        let r = k(self.radius);
+        let past_end = ((rel - sweep) * r).le(k(tol));
+        let before_start = ((turn - rel) * r).le(k(tol));
+        let t = on.select(t, past_end.keep(k(1.0)));
+        (t, on.or(past_end).or(before_start).bits())
     }
 
     /// The tangent direction (increasing angle) at a point `p` of the circle, length r.

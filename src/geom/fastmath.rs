@@ -10,6 +10,8 @@
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
 
+use super::lanes::{F2, M2};
+
 /// tan(3π/8).
 const T3P8: f64 = 2.414_213_562_373_095;
 /// The low part of π/2 (π/2 − FRAC_PI_2 in exact arithmetic).
@@ -34,115 +36,71 @@ const Q: [f64; 5] = [
 /// (zeros, infinities and NaN fall back to std).
 #[inline(always)]
 pub fn atan2(y: f64, x: f64) -> f64 {
-    if special(y, x) {
-        return y.atan2(x);
-    }
-    kernel(y, x)
+    atan2_2([y, y], [x, x])[0]
 }
 
 /// `atan2` of two pairs at once (the two hits of a circle pair), bit for bit the same as
-/// two calls of `atan2`. On x86-64 both lanes run in one SSE2 register.
+/// two calls of `atan2`.
 #[inline(always)]
 pub fn atan2_2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-    // SAFETY: SSE2 is enabled for this build (it is part of the x86-64 baseline).
-    let mut r = unsafe { kernel2(y, x) };
-    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
-    let mut r = kernel2(y, x);
-    for i in 0..2 {
-        if special(y[i], x[i]) {
-            r[i] = y[i].atan2(x[i]);
-        }
-    }
-    r
+    atan2_lanes(F2::new(y[0], y[1]), F2::new(x[0], x[1])).get()
 }
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+/// `atan2` lane by lane.
 #[inline(always)]
-fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
-    [kernel(y[0], x[0]), kernel(y[1], x[1])]
-}
-
-/// `kernel` on two lanes, operation for operation (so the results are identical).
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-#[inline(always)]
-unsafe fn kernel2(y: [f64; 2], x: [f64; 2]) -> [f64; 2] {
-    use std::arch::x86_64::*;
-    let k = _mm_set1_pd;
-    let sel = |m: __m128d, a: __m128d, b: __m128d| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b));
-    let sign = k(-0.0);
-    let (y, x) = (_mm_set_pd(y[1], y[0]), _mm_set_pd(x[1], x[0]));
-    let (ay, ax) = (_mm_andnot_pd(sign, y), _mm_andnot_pd(sign, x));
-    let hi = _mm_cmpgt_pd(ay, _mm_mul_pd(k(T3P8), ax));
-    let lo = _mm_cmple_pd(ay, _mm_mul_pd(k(0.66), ax));
-    let pick = |h: __m128d, l: __m128d, m: __m128d| sel(hi, h, sel(lo, l, m));
-    let num = pick(_mm_xor_pd(ax, sign), ay, _mm_sub_pd(ay, ax));
-    let den = pick(ay, ax, _mm_add_pd(ay, ax));
-    let base = pick(k(FRAC_PI_2), k(0.0), k(FRAC_PI_4));
-    let more = pick(k(MOREBITS), k(0.0), k(0.5 * MOREBITS));
-    let (add, mul) = (_mm_add_pd, _mm_mul_pd);
-    let t = _mm_div_pd(num, den);
-    let z = mul(t, t);
-    let (z2, tz) = (mul(z, z), mul(t, z));
-    let z4 = mul(z2, z2);
-    let p = add(
-        mul(add(mul(k(P[0]), z2), add(mul(k(P[1]), z), k(P[2]))), z2),
-        add(mul(k(P[3]), z), k(P[4])),
-    );
-    let q = add(
-        mul(add(z, k(Q[0])), z4),
-        add(
-            mul(add(mul(k(Q[1]), z), k(Q[2])), z2),
-            add(mul(k(Q[3]), z), k(Q[4])),
-        ),
-    );
-    let r = add(base, add(add(_mm_div_pd(mul(tz, p), q), t), more));
-    let left = add(_mm_sub_pd(k(PI), r), k(2.0 * MOREBITS));
-    let r = sel(_mm_cmplt_pd(x, k(0.0)), left, r);
-    let r = _mm_or_pd(_mm_andnot_pd(sign, r), _mm_and_pd(sign, y));
-    [_mm_cvtsd_f64(r), _mm_cvtsd_f64(_mm_unpackhi_pd(r, r))]
-}
-
-/// Both zero, non-finite or near overflow (|y| + |x| in the kernel): std handles those.
-#[inline(always)]
-fn special(y: f64, x: f64) -> bool {
-    let big = y.abs().max(x.abs());
-    // One test: false for NaN, for zero and from 1e300 up.
-    !(big > 0.0 && big < 1e300)
-}
-
-/// The reduction and the rational approximation, for finite (y, x) not both zero.
-#[inline(always)]
-fn kernel(y: f64, x: f64) -> f64 {
+pub(crate) fn atan2_lanes(y: F2, x: F2) -> F2 {
     let (ay, ax) = (y.abs(), x.abs());
-    // The reduction is chosen by selects, as `kernel2` must do it lane by lane: the two
-    // stay operation for operation the same, so their results are bit for bit equal.
-    let (hi, lo) = (ay > T3P8 * ax, ay <= 0.66 * ax);
-    let pick = |h: f64, l: f64, m: f64| {
-        if hi {
-            h
-        } else if lo {
-            l
+    // Both zero, non-finite or near overflow (|y| + |x| below): std handles those. One test
+    // per lane: false for NaN, for zero and from 1e300 up.
+    let big = ay.max(ax);
+    let fine = big.gt(F2::splat(0.0)).and(big.lt(F2::splat(1e300)));
+    if fine.bits() != 0b11 {
+        return special(y, x, fine);
+    }
+    kernel(y, x, ay, ax)
+}
+
+#[cold]
+fn special(y: F2, x: F2, fine: M2) -> F2 {
+    let r = kernel(y, x, y.abs(), x.abs()).get();
+    let (y, x) = (y.get(), x.get());
+    let f = |i: usize| {
+        if fine.bits() >> i & 1 == 1 {
+            r[i]
         } else {
-            m
+            y[i].atan2(x[i])
         }
     };
-    let num = pick(-ax, ay, ay - ax);
-    let den = pick(ay, ax, ay + ax);
-    let base = pick(FRAC_PI_2, 0.0, FRAC_PI_4);
-    let more = pick(MOREBITS, 0.0, 0.5 * MOREBITS);
+    F2::new(f(0), f(1))
+}
+
+/// The reduction and the rational approximation, for finite (y, x) not both zero. The
+/// reduction is chosen by masks (num and den built from |y| and |x| with a lane zeroed,
+/// which is exact), so no branch depends on the angle.
+#[inline(always)]
+fn kernel(y: F2, x: F2, ay: F2, ax: F2) -> F2 {
+    let k = F2::splat;
+    // |y|/|x| above tan(3π/8): about π/2; at most 0.66: about 0; else about π/4.
+    let hi = ay.gt(k(T3P8) * ax);
+    let lo = ay.le(k(0.66) * ax);
+    let not_mid = hi.or(lo);
+    // hi: −|x| / |y|; lo: |y| / |x|; mid: (|y| − |x|) / (|y| + |x|).
+    let num = hi.drop(ay) - lo.drop(ax);
+    let den = lo.drop(ay) + hi.drop(ax);
+    // π/2, 0 or π/4 (and the low parts): one of the two terms is zero.
+    let base = hi.keep(k(FRAC_PI_2)).max(not_mid.drop(k(FRAC_PI_4)));
+    let more = hi.keep(k(MOREBITS)).max(not_mid.drop(k(0.5 * MOREBITS)));
     let t = num / den;
     let z = t * t;
     // P and Q by Estrin's scheme (shorter dependency chains than Horner).
     let (z2, tz) = (z * z, t * z);
     let z4 = z2 * z2;
-    let p = (P[0] * z2 + (P[1] * z + P[2])) * z2 + (P[3] * z + P[4]);
-    let q = (z + Q[0]) * z4 + ((Q[1] * z + Q[2]) * z2 + (Q[3] * z + Q[4]));
+    let p = (k(P[0]) * z2 + (k(P[1]) * z + k(P[2]))) * z2 + (k(P[3]) * z + k(P[4]));
+    let q = (z + k(Q[0])) * z4 + ((k(Q[1]) * z + k(Q[2])) * z2 + (k(Q[3]) * z + k(Q[4])));
     let r = base + ((tz * p / q + t) + more);
     // r = atan(|y| / |x|) in [0, π/2]; the left half-plane is π − r (π's low part added back).
-    let left = (PI - r) + 2.0 * MOREBITS;
-    let r = if x < 0.0 { left } else { r };
-    r.copysign(y)
+    let left = (k(PI) - r) + k(2.0 * MOREBITS);
+    x.lt(k(0.0)).select(left, r).copysign(y)
 }
 
 #[cfg(test)]

@@ -19,6 +19,7 @@ pub mod error;
 pub(crate) mod fastmath;
 pub mod frame;
 pub mod intersect;
+pub(crate) mod lanes;
 pub mod line;
 pub mod mesh;
 pub mod minimize;

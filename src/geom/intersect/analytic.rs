@@ -13,7 +13,8 @@ use glam::DVec3;
 
 use super::{LKind, Sink, TANGENT_SIN};
 use crate::geom::arc::{norm_angle, Arc};
-use crate::geom::fastmath::atan2_2;
+use crate::geom::fastmath::atan2_lanes;
+use crate::geom::lanes::F2;
 use crate::geom::line::Line;
 use crate::geom::piece::Piece;
 use crate::geom::traits::ParamCurve;
@@ -98,25 +99,39 @@ fn collinear<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     }
 }
 
-/// Put the candidates that lie on both curves (`s`, `u` both found, within the first
-/// `count`), in the order the sink wants (the caller's t1): chosen by index, not by moving
-/// written hits.
+/// Parameters of two candidate points on one curve, and a mask with bit i set when point i
+/// lies on it (as `Arc::params_of_atan2` gives them).
+type Params = (F2, u32);
+
+/// The angles (raw `atan2`) of two points given in a circle's 2D frame, relative to its
+/// centre.
+#[inline(always)]
+fn angles(q: [(f64, f64); 2]) -> F2 {
+    atan2_lanes(F2::new(q[0].1, q[1].1), F2::new(q[0].0, q[1].0))
+}
+
+/// Put the candidates that lie on both curves (among the first `count`), in the order the
+/// sink wants (the caller's t1): chosen by index, not by moving written hits.
 #[inline(always)]
 fn put_hits<S: Sink>(
     out: &mut S,
-    s: [Option<f64>; 2],
-    u: [Option<f64>; 2],
+    (s, on_s): Params,
+    (u, on_u): Params,
     count: usize,
     mut hit: impl FnMut(usize) -> (DVec3, LKind),
 ) {
+    let on = on_s & on_u & if count == 2 { 0b11 } else { 0b01 };
+    let (s, u) = (s.get(), u.get());
     let key = if out.by_u() { u } else { s };
-    let both = |i: usize| s[i].is_some() && u[i].is_some();
-    let flip = count == 2 && both(0) && both(1) && key[1] < key[0];
-    let order = if flip { [1, 0] } else { [0, 1] };
-    for i in order.into_iter().take(count) {
-        if let (Some(s), Some(u)) = (s[i], u[i]) {
+    let order = if on == 0b11 && key[1] < key[0] {
+        [1, 0]
+    } else {
+        [0, 1]
+    };
+    for i in order {
+        if on >> i & 1 == 1 {
             let (p, kind) = hit(i);
-            out.put(s, u, p, kind);
+            out.put(s[i], u[i], p, kind);
         }
     }
 }
@@ -179,15 +194,16 @@ fn line_arc_flat<S: Sink>(l: &Line, a: &Arc, w0: DVec3, tol: f64, out: &mut S) {
         let Some(s) = seg_param(sf, || d.length(), tol) else {
             return;
         };
-        if let Some(u) = a.params_of_atan2(atan2_2([q.1; 2], [q.0; 2]), tol)[0] {
-            out.put(s, u, to_3d(q), LKind::Tangent);
+        let (u, on) = a.params_of_atan2(angles([q; 2]), tol);
+        if on & 1 == 1 {
+            out.put(s, u.get()[0], to_3d(q), LKind::Tangent);
         }
         return;
     }
     let ds = (half2 / dq2).sqrt();
     let (s1, s2) = (sf - ds, sf + ds);
     let (q1, q2) = (at(s1), at(s2));
-    let u = a.params_of_atan2(atan2_2([q1.1, q2.1], [q1.0, q2.0]), tol);
+    let u = a.params_of_atan2(angles([q1, q2]), tol);
     // The circle's tangent is perpendicular to the radius, so the sine of its angle with
     // the line is the cosine of the radius's: half / r at both points.
     let kind = || {
@@ -197,10 +213,14 @@ fn line_arc_flat<S: Sink>(l: &Line, a: &Arc, w0: DVec3, tol: f64, out: &mut S) {
             LKind::Cross
         }
     };
-    let s = [
+    let (s1, s2) = (
         seg_param(s1, || d.length(), tol),
         seg_param(s2, || d.length(), tol),
-    ];
+    );
+    let s = (
+        F2::new(s1.unwrap_or(0.0), s2.unwrap_or(0.0)),
+        s1.is_some() as u32 | (s2.is_some() as u32) << 1,
+    );
     let q = [q1, q2];
     put_hits(out, s, u, 2, |i| (to_3d(q[i]), kind()));
 }
@@ -276,8 +296,8 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         (vx * m1 + vy * k2, vy * m1 - vx * k2),
         (vx * m1 - vy * k2, vy * m1 + vx * k2),
     ];
-    let s = a.params_of_atan2(atan2_2([pa[0].1, pa[1].1], [pa[0].0, pa[1].0]), tol);
-    let u = b.params_of_atan2(atan2_2([pb[0].1, pb[1].1], [pb[0].0, pb[1].0]), tol);
+    let s = a.params_of_atan2(angles(pa), tol);
+    let u = b.params_of_atan2(angles(pb), tol);
     let kind = if tangent {
         LKind::Tangent
     } else {
@@ -357,15 +377,15 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
             2,
         )
     };
-    let s = a.params_of_atan2(atan2_2([q[0].1, q[1].1], [q[0].0, q[1].0]), tol);
+    let s = a.params_of_atan2(angles(q), tol);
     let scale = if count == 2 { inv } else { 1.0 };
     let at = |(qx, qy): (f64, f64)| a.center + x * (qx * scale) + y * (qy * scale);
     let p = [at(q[0]), at(q[1])];
     let (wb0, wb1) = (p[0] - v - a.center, p[1] - v - a.center);
     let u = b.params_of_atan2(
-        atan2_2(
-            [wb0.dot(b.y_axis), wb1.dot(b.y_axis)],
-            [wb0.dot(b.x_axis), wb1.dot(b.x_axis)],
+        atan2_lanes(
+            F2::new(wb0.dot(b.y_axis), wb1.dot(b.y_axis)),
+            F2::new(wb0.dot(b.x_axis), wb1.dot(b.x_axis)),
         ),
         tol,
     );
@@ -374,7 +394,7 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     let lo = (r2 - tol).max(0.0);
     let on_b = |w: DVec3| (lo * lo..=(r2 + tol) * (r2 + tol)).contains(&w.length_squared());
     let wb = [wb0, wb1];
-    let s = [s[0].filter(|_| on_b(wb0)), s[1].filter(|_| on_b(wb1))];
+    let s = (s.0, s.1 & (on_b(wb0) as u32 | (on_b(wb1) as u32) << 1));
     put_hits(out, s, u, count, |i| {
         let kind = kind_by_tangents(a.tangent_at_point(p[i]), b.normal.cross(wb[i]));
         (p[i], kind)
