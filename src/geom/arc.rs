@@ -239,7 +239,7 @@ impl Arc {
     }
 
     /// The public parameters of two points of the circle from their angles in the arc's
-    /// frame as `atan2` gives them (in [−π, π]), and a mask with bit i set when point i is
+    /// frame (in [−2π, 2π]: an `atan2`, or a sum of two), and a mask with bit i set when point i is
     /// on the arc: within `tol` of it (a point beyond an end by at most `tol` gets that
     /// end). The closed forms' hot path: both points at once, no branch on the sign of an
     /// angle or on which side of the arc it falls, one division (none for a full circle),
@@ -250,9 +250,9 @@ impl Arc {
         let full = self.is_full();
         let inv = if full { 1.0 / TAU } else { 1.0 / self.sweep };
         let (sweep, turn) = (k(self.sweep), k(TAU));
-        // ang in [−π, π], start in [0, 2π): up to two turns to add.
+        // ang in [−2π, 2π], start in [0, 2π): up to two turns to add, or one to take away.
         let d = ang - k(self.start);
-        let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn);
+        let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn) - d.ge(turn).keep(turn);
         // Just below a turn rounds up to 2π: that point is at the start.
         let rel = rel.ge(turn).drop(rel);
         let on = rel.le(sweep);
@@ -265,6 +265,28 @@ impl Arc {
         let before_start = ((turn - rel) * r).le(k(tol));
         let t = on.select(t, past_end.keep(k(1.0)));
         (t, on.or(past_end).or(before_start).bits())
+    }
+
+    /// The coordinates of the vector `w` in the arc's frame: along X, along Y, along the
+    /// normal. With the normal +Z (most drawings) the frame is the world's, and these are
+    /// w's components: the same numbers as the three dot products, sooner.
+    #[inline(always)]
+    pub(crate) fn in_frame(&self, w: DVec3) -> (f64, f64, f64) {
+        if self.normal == DVec3::Z {
+            (w.x, w.y, w.z)
+        } else {
+            (w.dot(self.x_axis), w.dot(self.y_axis), w.dot(self.normal))
+        }
+    }
+
+    /// The point at frame coordinates (u, v) from the centre, in the arc's plane.
+    #[inline(always)]
+    pub(crate) fn point_in_frame(&self, u: f64, v: f64) -> DVec3 {
+        if self.normal == DVec3::Z {
+            DVec3::new(self.center.x + u, self.center.y + v, self.center.z)
+        } else {
+            self.center + self.x_axis * u + self.y_axis * v
+        }
     }
 
     /// The tangent direction (increasing angle) at a point `p` of the circle, length r.

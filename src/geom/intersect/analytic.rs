@@ -139,12 +139,12 @@ fn put_hits<S: Sink>(
 /// Segment / arc (or full circle).
 pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     let d = l.dir();
-    let (n, c) = (a.normal, a.center);
-    let w0 = l.p0 - c;
-    let h0 = w0.dot(n);
-    let dn = d.dot(n);
+    let c = a.center;
+    // Start and direction in the arc's frame.
+    let (u0, v0, h0) = a.in_frame(l.p0 - c);
+    let (du, dv, dn) = a.in_frame(d);
     if h0.abs() <= tol && (h0 + dn).abs() <= tol {
-        line_arc_flat(l, a, w0, tol, out);
+        line_arc_flat(l, a, (u0, v0), (du, dv), tol, out);
         return;
     }
     if dn == 0.0 {
@@ -164,23 +164,30 @@ pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     }
 }
 
-/// A segment in the arc's plane (within tol at both ends), worked in the arc's 2D frame:
-/// the foot F of the perpendicular from the centre ± the half chord √(r² − |F|²).
+/// A segment in the arc's plane (within tol at both ends), worked in the arc's 2D frame
+/// (start and direction given there): the foot F of the perpendicular from the centre ± the half chord √(r² − |F|²).
 #[inline(always)]
-fn line_arc_flat<S: Sink>(l: &Line, a: &Arc, w0: DVec3, tol: f64, out: &mut S) {
+fn line_arc_flat<S: Sink>(
+    l: &Line,
+    a: &Arc,
+    (u0, v0): (f64, f64),
+    (du, dv): (f64, f64),
+    tol: f64,
+    out: &mut S,
+) {
     let d = l.dir();
-    let (x, y, r) = (a.x_axis, a.y_axis, a.radius);
-    let (u0, v0) = (w0.dot(x), w0.dot(y));
-    let (du, dv) = (d.dot(x), d.dot(y));
+    let r = a.radius;
     let dq2 = du * du + dv * dv;
-    let sf = -(u0 * du + v0 * dv) / dq2;
+    // Reciprocals first, off the dependency chain that leads to the angles.
+    let (inv2, inv) = (1.0 / dq2, 1.0 / dq2.sqrt());
+    let sf = -(u0 * du + v0 * dv) * inv2;
     let (fu, fv) = (u0 + du * sf, v0 + dv * sf);
     let hh = fu * fu + fv * fv;
     if hh > (r + tol) * (r + tol) {
         return;
     }
     let at = |s: f64| (u0 + du * s, v0 + dv * s);
-    let to_3d = |(pu, pv): (f64, f64)| a.center + x * pu + y * pv;
+    let to_3d = |(pu, pv): (f64, f64)| a.point_in_frame(pu, pv);
     // half² = (r − h)(r + h).
     let half2 = (r * r - hh).max(0.0);
     if 4.0 * half2 <= tol * tol {
@@ -200,7 +207,7 @@ fn line_arc_flat<S: Sink>(l: &Line, a: &Arc, w0: DVec3, tol: f64, out: &mut S) {
         }
         return;
     }
-    let ds = (half2 / dq2).sqrt();
+    let ds = half2.sqrt() * inv;
     let (s1, s2) = (sf - ds, sf + ds);
     let (q1, q2) = (at(s1), at(s2));
     let u = a.params_of_atan2(angles([q1, q2]), tol);
@@ -254,12 +261,10 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
 /// Both are taken as fractions of d (x/d, h/d), so no root of d² is needed.
 #[inline(always)]
 fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
-    let (x, y) = (a.x_axis, a.y_axis);
-    let v = b.center - a.center;
-    if v.dot(a.normal).abs() > tol {
+    let (vx, vy, vz) = a.in_frame(b.center - a.center);
+    if vz.abs() > tol {
         return; // parallel planes apart
     }
-    let (vx, vy) = (v.dot(x), v.dot(y));
     let dd = vx * vx + vy * vy;
     let (r1, r2) = (a.radius, b.radius);
     if dd <= tol * tol {
@@ -292,19 +297,20 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         (vx * k1 + vy * k2, vy * k1 - vx * k2),
         (vx * k1 - vy * k2, vy * k1 + vx * k2),
     ];
-    let pb = [
-        (vx * m1 + vy * k2, vy * m1 - vx * k2),
-        (vx * m1 - vy * k2, vy * m1 + vx * k2),
-    ];
-    let s = a.params_of_atan2(angles(pa), tol);
-    let u = b.params_of_atan2(angles(pb), tol);
+    // Their angles about c1 are θ ∓ φa, about c2 θ ∓ φb: θ the direction of c1c2, φa the
+    // triangle's angle at c1 (atan2(h, x)), φb the outer angle at c2 (atan2(h, x − d)). So
+    // three atan2 instead of four, and θ's is ready before the root of the half chord.
+    let theta = atan2_lanes(F2::splat(vy), F2::splat(vx));
+    let phi = atan2_lanes(F2::splat(k2), F2::new(k1, m1)).get();
+    let s = a.params_of_atan2(theta + F2::new(-phi[0], phi[0]), tol);
+    let u = b.params_of_atan2(theta + F2::new(-phi[1], phi[1]), tol);
     let kind = if tangent {
         LKind::Tangent
     } else {
         LKind::Cross
     };
     put_hits(out, s, u, count, |i| {
-        (a.center + x * pa[i].0 + y * pa[i].1, kind.clone())
+        (a.point_in_frame(pa[i].0, pa[i].1), kind.clone())
     });
 }
 
