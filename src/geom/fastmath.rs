@@ -84,12 +84,18 @@ fn kernel(y: F2, x: F2, ay: F2, ax: F2) -> F2 {
     let hi = ay.gt(k(T3P8) * ax);
     let lo = ay.le(k(0.66) * ax);
     let not_mid = hi.or(lo);
+    // The left half-plane is π − atan(|y| / |x|): there the reduced argument is negated and
+    // the base is π − base (exact for 0, π/4 and π/2), low parts included, so the result
+    // comes out of one sum.
+    let left = x.lt(k(0.0));
     // hi: −|x| / |y|; lo: |y| / |x|; mid: (|y| − |x|) / (|y| + |x|).
-    let num = hi.drop(ay) - lo.drop(ax);
+    let num = left.negate(hi.drop(ay) - lo.drop(ax));
     let den = lo.drop(ay) + hi.drop(ax);
-    // π/2, 0 or π/4 (and the low parts): one of the two terms is zero.
+    // π/2, 0 or π/4 (and their low parts): one of the two terms is zero.
     let base = hi.keep(k(FRAC_PI_2)).max(not_mid.drop(k(FRAC_PI_4)));
     let more = hi.keep(k(MOREBITS)).max(not_mid.drop(k(0.5 * MOREBITS)));
+    let base = left.keep(k(PI)) + left.negate(base);
+    let more = left.keep(k(2.0 * MOREBITS)) + left.negate(more);
     let t = num / den;
     let z = t * t;
     // P and Q by Estrin's scheme (shorter dependency chains than Horner).
@@ -97,10 +103,7 @@ fn kernel(y: F2, x: F2, ay: F2, ax: F2) -> F2 {
     let z4 = z2 * z2;
     let p = (k(P[0]) * z2 + (k(P[1]) * z + k(P[2]))) * z2 + (k(P[3]) * z + k(P[4]));
     let q = (z + k(Q[0])) * z4 + ((k(Q[1]) * z + k(Q[2])) * z2 + (k(Q[3]) * z + k(Q[4])));
-    let r = base + ((tz * p / q + t) + more);
-    // r = atan(|y| / |x|) in [0, π/2]; the left half-plane is π − r (π's low part added back).
-    let left = (k(PI) - r) + k(2.0 * MOREBITS);
-    x.lt(k(0.0)).select(left, r).copysign(y)
+    (base + ((tz * p / q + t) + more)).copysign(y)
 }
 
 #[cfg(test)]

@@ -104,6 +104,11 @@ mod imp {
     pub fn select(m: M, a: F, b: F) -> F {
         unsafe { _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)) }
     }
+    /// −a where the mask is set.
+    #[inline(always)]
+    pub fn negate(m: M, a: F) -> F {
+        unsafe { _mm_xor_pd(a, _mm_and_pd(m, sign())) }
+    }
     #[inline(always)]
     pub fn bits(m: M) -> u32 {
         unsafe { _mm_movemask_pd(m) as u32 }
@@ -194,6 +199,9 @@ mod imp {
     pub fn bits(m: M) -> u32 {
         m[0] as u32 | (m[1] as u32) << 1
     }
+    pub fn negate(m: M, a: F) -> F {
+        select(m, neg(a), a)
+    }
 }
 
 /// Two f64 lanes.
@@ -271,6 +279,11 @@ impl M2 {
     #[inline(always)]
     pub fn drop(self, a: F2) -> F2 {
         F2(imp::drop(self.0, a.0))
+    }
+    /// −a in the set lanes, a in the others.
+    #[inline(always)]
+    pub fn negate(self, a: F2) -> F2 {
+        F2(imp::negate(self.0, a.0))
     }
     /// Bit i set when lane i is.
     #[inline(always)]

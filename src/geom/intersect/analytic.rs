@@ -351,6 +351,8 @@ fn arc_arc_coplanar<S: Sink>(a: &Arc, b: &Arc, v: DVec3, tol: f64, out: &mut S) 
 /// Two arcs in different planes: the line plane1 ∩ plane2 cuts circle a, and each point is
 /// tested against circle b. In a's 2D frame the line is m·q = e (m the in-plane part of
 /// b's normal, e = n2·(c2 − c1)), so the points are (m e ± m⊥ √(r1²|m|² − e²)) / |m|².
+/// Their coordinates in b's frame come from a's through the frames' 2×2 products, so both
+/// curves' angles are ready as soon as the root is.
 #[inline(always)]
 fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f64, out: &mut S) {
     let (x, y, r1, r2) = (a.x_axis, a.y_axis, a.radius, b.radius);
@@ -361,9 +363,14 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     }
     // |m|² times the half chord squared.
     let w2 = (r1 * r1 * m2 - e * e).max(0.0);
-    let inv = 1.0 / m2;
-    let (q, count) = if 4.0 * w2 <= tol * tol * m2 {
+    // a's frame in b's (computed while the root is), and c1 − c2 in b's frame.
+    let (bx, by) = (b.x_axis, b.y_axis);
+    let (xx, yx, xy, yy) = (x.dot(bx), y.dot(bx), x.dot(by), y.dot(by));
+    let (gx, gy) = (-v.dot(bx), -v.dot(by));
+    // The points in a's frame, times `scale`.
+    let (q, count, scale) = if 4.0 * w2 <= tol * tol * m2 {
         // Touches circle a: the foot, put on the circle.
+        let inv = 1.0 / m2;
         let f = (m.0 * e * inv, m.1 * e * inv);
         let l = f.0.hypot(f.1);
         let q = if l > 0.0 {
@@ -371,9 +378,9 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
         } else {
             f
         };
-        ([q; 2], 1)
+        ([q; 2], 1, 1.0)
     } else {
-        // Unscaled (times |m|²): the angles on a need no division.
+        // Times |m|²: no division before the angles (atan2 does not mind the scale).
         let w = w2.sqrt();
         (
             [
@@ -381,29 +388,36 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
                 (m.0 * e - m.1 * w, m.1 * e + m.0 * w),
             ],
             2,
+            m2,
         )
     };
+    // The same points in b's frame, relative to c2, times `scale`.
+    let qb = [q[0], q[1]].map(|(qx, qy)| {
+        (
+            gx * scale + qx * xx + qy * yx,
+            gy * scale + qx * xy + qy * yy,
+        )
+    });
     let s = a.params_of_atan2(angles(q), tol);
-    let scale = if count == 2 { inv } else { 1.0 };
-    let at = |(qx, qy): (f64, f64)| a.center + x * (qx * scale) + y * (qy * scale);
-    let p = [at(q[0]), at(q[1])];
-    let (wb0, wb1) = (p[0] - v - a.center, p[1] - v - a.center);
-    let u = b.params_of_atan2(
-        atan2_lanes(
-            F2::new(wb0.dot(b.y_axis), wb1.dot(b.y_axis)),
-            F2::new(wb0.dot(b.x_axis), wb1.dot(b.x_axis)),
-        ),
-        tol,
-    );
-    // On circle b: p is on b's plane by construction, so its distance from c2 is within tol
-    // of r2.
-    let lo = (r2 - tol).max(0.0);
-    let on_b = |w: DVec3| (lo * lo..=(r2 + tol) * (r2 + tol)).contains(&w.length_squared());
-    let wb = [wb0, wb1];
-    let s = (s.0, s.1 & (on_b(wb0) as u32 | (on_b(wb1) as u32) << 1));
+    let u = b.params_of_atan2(angles(qb), tol);
+    // On circle b: each point is on b's plane by construction, so its distance from c2,
+    // in the plane, is within tol of r2.
+    let (lo, hi) = ((r2 - tol).max(0.0) * scale, (r2 + tol) * scale);
+    let on_b = |(bx, by): (f64, f64)| (lo * lo..=hi * hi).contains(&(bx * bx + by * by));
+    let s = (s.0, s.1 & (on_b(qb[0]) as u32 | (on_b(qb[1]) as u32) << 1));
+    let inv = 1.0 / scale;
+    let at = |(qx, qy): (f64, f64)| a.center + x * (qx * inv) + y * (qy * inv);
+    // Two points w/|m| apart from the foot: the sine of the tangents' angle is at least
+    // (half chord / r1)·|m| = w / r1, so above TANGENT_SIN they cross.
+    let surely_cross = count == 2 && w2 > (TANGENT_SIN * r1) * (TANGENT_SIN * r1);
     put_hits(out, s, u, count, |i| {
-        let kind = kind_by_tangents(a.tangent_at_point(p[i]), b.normal.cross(wb[i]));
-        (p[i], kind)
+        let p = at(q[i]);
+        let kind = if surely_cross {
+            LKind::Cross
+        } else {
+            kind_by_tangents(a.tangent_at_point(p), b.tangent_at_point(p))
+        };
+        (p, kind)
     });
 }
 
