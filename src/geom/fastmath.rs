@@ -8,7 +8,7 @@
 //! exactly: the result always has the sign of `y`, as std's, so an angle just below the seam
 //! never flips to just above it.
 
-use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+use std::f64::consts::FRAC_PI_2;
 
 use super::lanes::{F2, M2};
 
@@ -91,11 +91,11 @@ fn kernel(y: F2, x: F2, ay: F2, ax: F2) -> F2 {
     // hi: −|x| / |y|; lo: |y| / |x|; mid: (|y| − |x|) / (|y| + |x|).
     let num = left.negate(hi.drop(ay) - lo.drop(ax));
     let den = lo.drop(ay) + hi.drop(ax);
-    // π/2, 0 or π/4 (and their low parts): one of the two terms is zero.
-    let base = hi.keep(k(FRAC_PI_2)).max(not_mid.drop(k(FRAC_PI_4)));
-    let more = hi.keep(k(MOREBITS)).max(not_mid.drop(k(0.5 * MOREBITS)));
-    let base = left.keep(k(PI)) + left.negate(base);
-    let more = left.keep(k(2.0 * MOREBITS)) + left.negate(more);
+    // The base angle is c·π/2 for c = 1, 0 or 1/2 (2 − c on the left), with low part
+    // c·MOREBITS: both products exact (c·FRAC_PI_2 needs at most one more bit).
+    let c = hi.keep(k(1.0)).max(not_mid.drop(k(0.5)));
+    let c = left.keep(k(2.0)) + left.negate(c);
+    let (base, more) = (c * k(FRAC_PI_2), c * k(MOREBITS));
     let t = num / den;
     let z = t * t;
     // P and Q by Estrin's scheme (shorter dependency chains than Horner).

@@ -348,27 +348,38 @@ fn arc_arc_coplanar<S: Sink>(a: &Arc, b: &Arc, v: DVec3, tol: f64, out: &mut S) 
     put_hits(out, s, u, count, |i| (p[i], kind.clone()));
 }
 
-/// Two arcs in different planes: the line plane1 ∩ plane2 cuts circle a, and each point is
-/// tested against circle b. In a's 2D frame the line is m·q = e (m the in-plane part of
-/// b's normal, e = n2·(c2 − c1)), so the points are (m e ± m⊥ √(r1²|m|² − e²)) / |m|².
-/// Their coordinates in b's frame come from a's through the frames' 2×2 products, so both
-/// curves' angles are ready as soon as the root is.
+/// Two arcs in different planes: the line L = plane1 ∩ plane2 cuts circle a, and each point
+/// is tested against circle b. In a's 2D frame L is m·q = e (m the in-plane part of n2,
+/// |m| = sin of the planes' angle, e = n2·(c2 − c1)), so the points are
+/// (m e ± m⊥ w) / |m|² with w = √(r1²|m|² − e²); in b's frame L is m'·q = e' likewise
+/// (m' the in-plane part of n1, e' = n1·(c1 − c2)). Along L, with lengths times |m|, a's
+/// points lie at o = g ± w from the foot of c2 (g = (c2 − c1)·(n1 × n2)), so in b's plane
+/// their distance ρ from c2 has |m|²(ρ² − r2²) = o² − (r2²|m|² − e'²): the test against b
+/// and b's coordinates need neither a root nor 3D points.
 #[inline(always)]
 fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f64, out: &mut S) {
-    let (x, y, r1, r2) = (a.x_axis, a.y_axis, a.radius, b.radius);
+    let (r1, r2) = (a.radius, b.radius);
     let m2 = m.0 * m.0 + m.1 * m.1;
-    // The line's distance from c1 is |e| / |m|.
+    // L's distance from c1 is |e| / |m|.
     if e * e > (r1 + tol) * (r1 + tol) * m2 {
         return;
     }
-    // |m|² times the half chord squared.
+    // |m|² times a's half chord squared.
     let w2 = (r1 * r1 * m2 - e * e).max(0.0);
-    // a's frame in b's (computed while the root is), and c1 − c2 in b's frame.
-    let (bx, by) = (b.x_axis, b.y_axis);
-    let (xx, yx, xy, yy) = (x.dot(bx), y.dot(bx), x.dot(by), y.dot(by));
-    let (gx, gy) = (-v.dot(bx), -v.dot(by));
-    // The points in a's frame, times `scale`.
-    let (q, count, scale) = if 4.0 * w2 <= tol * tol * m2 {
+    // Ready while the root is computed: b's side of the construction.
+    let mb = (a.normal.dot(b.x_axis), a.normal.dot(b.y_axis));
+    let eb = -a.normal.dot(v);
+    let g = v.dot(a.normal.cross(b.normal));
+    let wb2 = r2 * r2 * m2 - eb * eb;
+    // ρ within tol of r2: |m|²(ρ² − r2²) between these.
+    let lo = if r2 > tol {
+        tol * (tol - 2.0 * r2)
+    } else {
+        -r2 * r2
+    } * m2;
+    let hi = tol * (tol + 2.0 * r2) * m2;
+    // The points in a's frame (times `scale`) and their offsets along L.
+    let (q, o, count, scale) = if 4.0 * w2 <= tol * tol * m2 {
         // Touches circle a: the foot, put on the circle.
         let inv = 1.0 / m2;
         let f = (m.0 * e * inv, m.1 * e * inv);
@@ -378,7 +389,7 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
         } else {
             f
         };
-        ([q; 2], 1, 1.0)
+        ([q; 2], [g; 2], 1, 1.0)
     } else {
         // Times |m|²: no division before the angles (atan2 does not mind the scale).
         let w = w2.sqrt();
@@ -387,25 +398,26 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
                 (m.0 * e + m.1 * w, m.1 * e - m.0 * w),
                 (m.0 * e - m.1 * w, m.1 * e + m.0 * w),
             ],
+            [g + w, g - w],
             2,
             m2,
         )
     };
-    // The same points in b's frame, relative to c2, times `scale`.
-    let qb = [q[0], q[1]].map(|(qx, qy)| {
-        (
-            gx * scale + qx * xx + qy * yx,
-            gy * scale + qx * xy + qy * yy,
-        )
-    });
+    // In b's frame (times |m|²): m'e' + o·m'⊥ (L runs along −m'⊥ there).
+    let at_b = |o: f64| (mb.0 * eb - mb.1 * o, mb.1 * eb + mb.0 * o);
+    let on_b = |o: f64| (lo..=hi).contains(&(o * o - wb2));
+    let on_b = on_b(o[0]) as u32 | (on_b(o[1]) as u32) << 1;
+    if on_b == 0 {
+        return;
+    }
     let s = a.params_of_atan2(angles(q), tol);
-    let u = b.params_of_atan2(angles(qb), tol);
-    // On circle b: each point is on b's plane by construction, so its distance from c2,
-    // in the plane, is within tol of r2.
-    let (lo, hi) = ((r2 - tol).max(0.0) * scale, (r2 + tol) * scale);
-    let on_b = |(bx, by): (f64, f64)| (lo * lo..=hi * hi).contains(&(bx * bx + by * by));
-    let s = (s.0, s.1 & (on_b(qb[0]) as u32 | (on_b(qb[1]) as u32) << 1));
+    let s = (s.0, s.1 & on_b);
+    if s.1 == 0 {
+        return;
+    }
+    let u = b.params_of_atan2(angles([at_b(o[0]), at_b(o[1])]), tol);
     let inv = 1.0 / scale;
+    let (x, y) = (a.x_axis, a.y_axis);
     let at = |(qx, qy): (f64, f64)| a.center + x * (qx * inv) + y * (qy * inv);
     // Two points w/|m| apart from the foot: the sine of the tangents' angle is at least
     // (half chord / r1)·|m| = w / r1, so above TANGENT_SIN they cross.

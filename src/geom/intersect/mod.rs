@@ -274,18 +274,11 @@ fn canonical_cmp(a: &Curve, b: &Curve) -> Ordering {
     if by_kind != Ordering::Equal {
         return by_kind;
     }
-    let arc = |x: &Arc, y: &Arc| {
-        lex(&x.center.to_array(), &y.center.to_array())
-            .then_with(|| lex(&x.normal.to_array(), &y.normal.to_array()))
-            .then_with(|| x.radius.total_cmp(&y.radius))
-    };
     match (a, b) {
         (Curve::Line(x), Curve::Line(y)) => lex(&x.p0.to_array(), &y.p0.to_array())
             .then_with(|| lex(&x.p1.to_array(), &y.p1.to_array())),
-        (Curve::Circle(x), Curve::Circle(y)) => arc(&x.arc, &y.arc),
-        (Curve::Arc(x), Curve::Arc(y)) => {
-            arc(x, y).then_with(|| lex(&[x.start, x.sweep], &[y.start, y.sweep]))
-        }
+        (Curve::Circle(x), Curve::Circle(y)) => arc_cmp(&x.arc, &y.arc),
+        (Curve::Arc(x), Curve::Arc(y)) => arc_cmp(x, y),
         _ => {
             let mut fa: SmallVec<[f64; 16]> = SmallVec::new();
             let mut fb: SmallVec<[f64; 16]> = SmallVec::new();
@@ -294,6 +287,19 @@ fn canonical_cmp(a: &Curve, b: &Curve) -> Ordering {
             lex(&fa, &fb)
         }
     }
+}
+
+/// Arcs (and circles) by their defining numbers: centre, normal, radius, start, sweep. The
+/// first number nearly always decides, so the rest is kept out of line.
+#[inline(always)]
+fn arc_cmp(x: &Arc, y: &Arc) -> Ordering {
+    #[inline(never)]
+    fn rest(x: &Arc, y: &Arc) -> Ordering {
+        lex(&x.center.to_array()[1..], &y.center.to_array()[1..])
+            .then_with(|| lex(&x.normal.to_array(), &y.normal.to_array()))
+            .then_with(|| lex(&[x.radius, x.start, x.sweep], &[y.radius, y.start, y.sweep]))
+    }
+    x.center.x.total_cmp(&y.center.x).then_with(|| rest(x, y))
 }
 
 fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
