@@ -21,12 +21,18 @@ pub struct Arc {
     pub(crate) center: DVec3,
     pub(crate) radius: f64,
     pub(crate) normal: DVec3,
-    pub(crate) x_axis: DVec3,
-    pub(crate) y_axis: DVec3,
     /// Start angle in [0, 2π).
     pub(crate) start: f64,
     /// Swept angle in (0, 2π].
     pub(crate) sweep: f64,
+    /// The unit vector (in the frame) at the middle of the arc, and cos(sweep / 2): a point
+    /// q of the circle (about the centre) is on the arc when q·mid ≥ r·cos_half. Cached for
+    /// the closed forms, which reject points far off the arc before any atan2. Derived from
+    /// start and sweep: set those only through `from_parts` or `with_range`.
+    pub(crate) cos_half: f64,
+    pub(crate) mid: (f64, f64),
+    pub(crate) x_axis: DVec3,
+    pub(crate) y_axis: DVec3,
 }
 
 /// An atan2 result (in [−π, π]) reduced to [0, 2π): `norm_angle`'s answer with one test in
@@ -116,6 +122,7 @@ impl Arc {
         sweep: f64,
     ) -> Arc {
         let (x_axis, y_axis) = arbitrary_axis(normal);
+        let (sin, cos) = (start + 0.5 * sweep).sin_cos();
         Arc {
             center,
             radius,
@@ -124,6 +131,20 @@ impl Arc {
             y_axis,
             start,
             sweep,
+            mid: (cos, sin),
+            cos_half: (0.5 * sweep).cos(),
+        }
+    }
+
+    /// The same circle with another angle range (start in [0, 2π), sweep in (0, 2π]).
+    pub(crate) fn with_range(&self, start: f64, sweep: f64) -> Arc {
+        let (sin, cos) = (start + 0.5 * sweep).sin_cos();
+        Arc {
+            start,
+            sweep,
+            mid: (cos, sin),
+            cos_half: (0.5 * sweep).cos(),
+            ..*self
         }
     }
 
@@ -238,6 +259,22 @@ impl Arc {
         self.params_of_atan2(atan2_lanes(y, x), tol)
     }
 
+    /// A mask of the two points of the circle (given in the frame about the centre, times
+    /// `scale` > 0) that may be on the arc: no atan2, and it never drops a point that
+    /// `params_of_atan2` keeps. A point δ ≤ tol/r beyond an end has q·mid ≥
+    /// r·cos_half − tol − tol²/2r; the bound allows 2·tol + 1e-9·r, which also covers the
+    /// rounding of q.
+    #[inline(always)]
+    pub(crate) fn maybe_on(&self, q: [(f64, f64); 2], scale: f64, tol: f64) -> u32 {
+        let r = self.radius;
+        if self.is_full() || r <= tol {
+            return 0b11;
+        }
+        let lim = scale * (r * self.cos_half - (2.0 * tol + 1e-9 * r));
+        let on = |(x, y): (f64, f64)| (x * self.mid.0 + y * self.mid.1 >= lim) as u32;
+        on(q[0]) | on(q[1]) << 1
+    }
+
     /// The public parameters of two points of the circle from their angles in the arc's
     /// frame (in [−2π, 2π]: an `atan2`, or a sum of two), and a mask with bit i set when point i is
     /// on the arc: within `tol` of it (a point beyond an end by at most `tol` gets that
@@ -247,18 +284,20 @@ impl Arc {
     #[inline(always)]
     pub(crate) fn params_of_atan2(&self, ang: F2, tol: f64) -> (F2, u32) {
         let k = F2::splat;
-        let full = self.is_full();
-        let inv = if full { 1.0 / TAU } else { 1.0 / self.sweep };
-        let (sweep, turn) = (k(self.sweep), k(TAU));
+        let turn = k(TAU);
         // ang in [−2π, 2π], start in [0, 2π): up to two turns to add, or one to take away.
         let d = ang - k(self.start);
         let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn) - d.ge(turn).keep(turn);
         // Just below a turn rounds up to 2π: that point is at the start.
         let rel = rel.ge(turn).drop(rel);
+        if self.is_full() {
+            // Every point is on it; t rounds up to 1 only at the seam, which is t = 0.
+            let t = rel * k(1.0 / TAU);
+            return (t.ge(k(1.0)).drop(t), 0b11);
+        }
+        let sweep = k(self.sweep);
         let on = rel.le(sweep);
-        // t rounds up to 1 only at the end: a full circle's seam is t = 0.
-        let t = rel * k(inv);
-        let t = t.ge(k(1.0)).select(k(if full { 0.0 } else { 1.0 }), t);
+        let t = (rel * k(1.0 / self.sweep)).min(k(1.0));
         // Beyond the end or before the start by at most tol (tol / r radians).
         let r = k(self.radius);
         let past_end = ((rel - sweep) * r).le(k(tol));
@@ -267,12 +306,20 @@ impl Arc {
         (t, on.or(past_end).or(before_start).bits())
     }
 
+    /// Whether the normal is exactly +Z, so that the arc's frame is the world's (compared
+    /// as bits: integer tests, and a −0 component just takes the general path).
+    #[inline(always)]
+    pub(crate) fn world_frame(&self) -> bool {
+        (self.normal.x.to_bits() | self.normal.y.to_bits()) == 0
+            && self.normal.z.to_bits() == 1f64.to_bits()
+    }
+
     /// The coordinates of the vector `w` in the arc's frame: along X, along Y, along the
     /// normal. With the normal +Z (most drawings) the frame is the world's, and these are
     /// w's components: the same numbers as the three dot products, sooner.
     #[inline(always)]
     pub(crate) fn in_frame(&self, w: DVec3) -> (f64, f64, f64) {
-        if self.normal == DVec3::Z {
+        if self.world_frame() {
             (w.x, w.y, w.z)
         } else {
             (w.dot(self.x_axis), w.dot(self.y_axis), w.dot(self.normal))
@@ -282,7 +329,7 @@ impl Arc {
     /// The point at frame coordinates (u, v) from the centre, in the arc's plane.
     #[inline(always)]
     pub(crate) fn point_in_frame(&self, u: f64, v: f64) -> DVec3 {
-        if self.normal == DVec3::Z {
+        if self.world_frame() {
             DVec3::new(self.center.x + u, self.center.y + v, self.center.z)
         } else {
             self.center + self.x_axis * u + self.y_axis * v
@@ -368,10 +415,74 @@ impl ParamCurveBbox for Arc {
 
 impl ParamCurveSubdivide for Arc {
     fn subsegment(&self, t0: f64, t1: f64) -> Arc {
-        Arc {
-            start: norm_angle(self.start + self.sweep * t0),
-            sweep: self.sweep * (t1 - t0),
-            ..*self
+        self.with_range(
+            norm_angle(self.start + self.sweep * t0),
+            self.sweep * (t1 - t0),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    struct Rng(u64);
+    impl Rng {
+        fn f(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
         }
+    }
+
+    /// The quick rejection never drops a point the exact parameter test keeps: points at
+    /// random angles, and points just inside and just beyond both ends (within and past
+    /// the end slack), on arcs of every sweep and radii from 1e-6 to 1e6.
+    #[test]
+    fn maybe_on_keeps_every_point_params_keep() {
+        let mut r = Rng(0x2545F4914F6CDD1D);
+        let tol = 1e-9;
+        let mut kept = 0;
+        for i in 0..200_000 {
+            let radius = 10f64.powf(r.f() * 12.0 - 6.0);
+            let start = r.f() * TAU;
+            let sweep = if i % 50 == 0 { TAU } else { r.f() * TAU };
+            let Ok(a) = Arc::new(DVec3::ZERO, radius, start, start + sweep, DVec3::Z) else {
+                continue;
+            };
+            let slack = tol / radius;
+            let ang = match i % 5 {
+                0 => r.f() * TAU,
+                1 => a.start - slack * r.f() * 2.0,
+                2 => a.start + a.sweep + slack * r.f() * 2.0,
+                3 => a.start + a.sweep - slack * r.f(),
+                _ => a.start + slack * r.f(),
+            };
+            // The point in the frame, relative to the centre, times a scale.
+            let scale = 10f64.powf(r.f() * 4.0 - 2.0);
+            let q = (radius * ang.cos() * scale, radius * ang.sin() * scale);
+            let (_, on) = a.params_of_atan2(
+                crate::geom::fastmath::atan2_lanes(F2::splat(q.1), F2::splat(q.0)),
+                tol,
+            );
+            if on & 1 == 1 {
+                kept += 1;
+                assert_eq!(a.maybe_on([q; 2], scale, tol), 0b11, "{a:?} at angle {ang}");
+            }
+        }
+        assert!(kept > 50_000, "only {kept} points on their arcs");
+    }
+
+    /// The cached middle direction and cos(sweep/2) follow every change of range.
+    #[test]
+    fn with_range_recomputes_the_cache() {
+        let a = Arc::new(DVec3::new(1.0, 2.0, 3.0), 2.0, 0.5, 2.0, DVec3::Y).unwrap();
+        let b = a.with_range(4.0, 3.0);
+        let c = Arc::from_parts(a.center, a.radius, a.normal, 4.0, 3.0);
+        assert_eq!(b, c);
+        let s = a.subsegment(0.25, 0.75);
+        assert_eq!(s, a.with_range(s.start, s.sweep));
+        assert!((s.mid.0 - (s.start + 0.5 * s.sweep).cos()).abs() < 1e-15);
     }
 }

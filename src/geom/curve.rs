@@ -605,9 +605,8 @@ fn transform_arc(a: &Arc, m: &DMat4, lin: DMat3) -> Result<Arc> {
     let normal = (lin * a.x_axis).cross(lin * a.y_axis).normalize();
     let center = m.transform_point3(a.center);
     finite3("center", center)?;
-    let mut out = Arc::from_parts(center, a.radius * s, normal, 0.0, a.sweep);
-    out.start = out.angle_of(m.transform_point3(a.eval(0.0)));
-    Ok(out)
+    let out = Arc::from_parts(center, a.radius * s, normal, 0.0, a.sweep);
+    Ok(out.with_range(out.angle_of(m.transform_point3(a.eval(0.0))), a.sweep))
 }
 
 /// The affine maps behind `move`, `rotate`, `scale` and `mirror`.

@@ -48,6 +48,10 @@ mod imp {
     pub fn max(a: F, b: F) -> F {
         unsafe { _mm_max_pd(a, b) }
     }
+    #[inline(always)]
+    pub fn min(a: F, b: F) -> F {
+        unsafe { _mm_min_pd(a, b) }
+    }
     /// The sign bit of every lane.
     #[inline(always)]
     fn sign() -> F {
@@ -157,6 +161,10 @@ mod imp {
     pub fn max(a: F, b: F) -> F {
         zip(a, b, |x, y| if x > y { x } else { y })
     }
+    /// As `minpd`: the second operand unless the first is less.
+    pub fn min(a: F, b: F) -> F {
+        zip(a, b, |x, y| if x < y { x } else { y })
+    }
     pub fn abs(a: F) -> F {
         map(a, f64::abs)
     }
@@ -228,6 +236,10 @@ impl F2 {
     #[inline(always)]
     pub fn max(self, o: F2) -> F2 {
         F2(imp::max(self.0, o.0))
+    }
+    #[inline(always)]
+    pub fn min(self, o: F2) -> F2 {
+        F2(imp::min(self.0, o.0))
     }
     #[inline(always)]
     pub fn abs(self) -> F2 {

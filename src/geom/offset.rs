@@ -162,7 +162,7 @@ fn offset_polyline(p: &Polyline, d: f64) -> Result<Polyline> {
             Off::Arc(a, s, e) => {
                 let sweep = norm_angle(a.angle_of(*e) - a.angle_of(*s));
                 let sweep = if sweep == 0.0 { a.sweep } else { sweep };
-                arc_bulge(&Arc { sweep, ..*a }, n)
+                arc_bulge(&a.with_range(a.start, sweep), n)
             }
         });
         if extra[i].is_some() {
@@ -211,11 +211,7 @@ fn join(a: &Off, b: &Off, v: DVec3, n: DVec3, ext: f64) -> Option<DVec3> {
                 })
             }
             Off::Arc(a, ..) => Curve::Circle(Circle {
-                arc: Arc {
-                    start: 0.0,
-                    sweep: std::f64::consts::TAU,
-                    ..*a
-                },
+                arc: a.with_range(0.0, std::f64::consts::TAU),
             }),
         }
     };

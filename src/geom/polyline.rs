@@ -160,9 +160,8 @@ pub(crate) fn bulge_segment(a: DVec3, b: DVec3, bulge: f64, normal: DVec3) -> Se
     let radius = c * (1.0 + bulge * bulge) / (4.0 * bulge.abs());
     let arc_normal = if bulge > 0.0 { normal } else { -normal };
     let sweep = 4.0 * bulge.atan().abs();
-    let mut arc = Arc::from_parts(center, radius, arc_normal, 0.0, sweep);
-    arc.start = arc.angle_of(a);
-    Segment::Arc(arc)
+    let arc = Arc::from_parts(center, radius, arc_normal, 0.0, sweep);
+    Segment::Arc(arc.with_range(arc.angle_of(a), sweep))
 }
 
 /// The bulge of an arc segment running CCW about `normal` (negative when the arc runs CW).

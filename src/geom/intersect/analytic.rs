@@ -209,8 +209,20 @@ fn line_arc_flat<S: Sink>(
     }
     let ds = half2.sqrt() * inv;
     let (s1, s2) = (sf - ds, sf + ds);
-    let (q1, q2) = (at(s1), at(s2));
-    let u = a.params_of_atan2(angles([q1, q2]), tol);
+    let q = [at(s1), at(s2)];
+    let (s1, s2) = (
+        seg_param(s1, || d.length(), tol),
+        seg_param(s2, || d.length(), tol),
+    );
+    let s = (
+        F2::new(s1.unwrap_or(0.0), s2.unwrap_or(0.0)),
+        s1.is_some() as u32 | (s2.is_some() as u32) << 1,
+    );
+    // No atan2 when neither point is on the segment and (maybe) on the arc.
+    if s.1 & a.maybe_on(q, 1.0, tol) == 0 {
+        return;
+    }
+    let u = a.params_of_atan2(angles(q), tol);
     // The circle's tangent is perpendicular to the radius, so the sine of its angle with
     // the line is the cosine of the radius's: half / r at both points.
     let kind = || {
@@ -220,22 +232,14 @@ fn line_arc_flat<S: Sink>(
             LKind::Cross
         }
     };
-    let (s1, s2) = (
-        seg_param(s1, || d.length(), tol),
-        seg_param(s2, || d.length(), tol),
-    );
-    let s = (
-        F2::new(s1.unwrap_or(0.0), s2.unwrap_or(0.0)),
-        s1.is_some() as u32 | (s2.is_some() as u32) << 1,
-    );
-    let q = [q1, q2];
     put_hits(out, s, u, 2, |i| (to_3d(q[i]), kind()));
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
 pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
-    if a.normal == b.normal {
-        // One normal, so one OCS frame (the common case: circles drawn in one plane).
+    let bits = |n: DVec3| n.to_array().map(f64::to_bits);
+    if bits(a.normal) == bits(b.normal) {
+        // One normal (bit for bit), so one OCS frame: circles drawn in one plane.
         arc_arc_flat(a, b, tol, out);
         return;
     }
@@ -297,6 +301,17 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         (vx * k1 + vy * k2, vy * k1 - vx * k2),
         (vx * k1 - vy * k2, vy * k1 + vx * k2),
     ];
+    if !(a.is_full() && b.is_full()) {
+        // Arcs: no atan2 when neither point may be on both.
+        let pb = [
+            (vx * m1 + vy * k2, vy * m1 - vx * k2),
+            (vx * m1 - vy * k2, vy * m1 + vx * k2),
+        ];
+        let first = if count == 2 { 0b11 } else { 0b01 };
+        if first & a.maybe_on(pa, 1.0, tol) & b.maybe_on(pb, 1.0, tol) == 0 {
+            return;
+        }
+    }
     // Their angles about c1 are θ ∓ φa, about c2 θ ∓ φb: θ the direction of c1c2, φa the
     // triangle's angle at c1 (atan2(h, x)), φb the outer angle at c2 (atan2(h, x − d)). So
     // three atan2 instead of four, and θ's is ready before the root of the half chord.
@@ -407,15 +422,14 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     let at_b = |o: f64| (mb.0 * eb - mb.1 * o, mb.1 * eb + mb.0 * o);
     let on_b = |o: f64| (lo..=hi).contains(&(o * o - wb2));
     let on_b = on_b(o[0]) as u32 | (on_b(o[1]) as u32) << 1;
-    if on_b == 0 {
+    // No atan2 when no point is on circle b and (maybe) on both arcs.
+    let qb = [at_b(o[0]), at_b(o[1])];
+    if on_b & a.maybe_on(q, scale, tol) & b.maybe_on(qb, scale, tol) == 0 {
         return;
     }
     let s = a.params_of_atan2(angles(q), tol);
     let s = (s.0, s.1 & on_b);
-    if s.1 == 0 {
-        return;
-    }
-    let u = b.params_of_atan2(angles([at_b(o[0]), at_b(o[1])]), tol);
+    let u = b.params_of_atan2(angles(qb), tol);
     let inv = 1.0 / scale;
     let (x, y) = (a.x_axis, a.y_axis);
     let at = |(qx, qy): (f64, f64)| a.center + x * (qx * inv) + y * (qy * inv);
@@ -449,17 +463,9 @@ fn cocircular<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         let (ul, uh) = b_piece(lo, hi);
         if (hi - lo) * a.radius > tol {
             let piece = if hi - lo >= TAU - 1e-15 {
-                Arc {
-                    start: 0.0,
-                    sweep: TAU,
-                    ..*a
-                }
+                a.with_range(0.0, TAU)
             } else {
-                Arc {
-                    start: norm_angle(a.start + lo),
-                    sweep: hi - lo,
-                    ..*a
-                }
+                a.with_range(norm_angle(a.start + lo), hi - lo)
             };
             let s0 = lo / a.sweep;
             out.put(
@@ -509,11 +515,7 @@ fn cocircular<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         // b crosses a's seam: report it as one piece starting at b's start.
         let (lo, hi) = (merged[1].0, merged[0].1 + TAU);
         let (ul, uh) = b_piece(lo, hi);
-        let piece = Arc {
-            start: norm_angle(a.start + lo),
-            sweep: hi - lo,
-            ..*a
-        };
+        let piece = a.with_range(norm_angle(a.start + lo), hi - lo);
         out.put(
             lo / sw1,
             ul,

@@ -232,9 +232,8 @@ fn reverse_piece(p: &Piece) -> Piece {
         Piece::Line(l) => Piece::Line(Line { p0: l.p1, p1: l.p0 }),
         Piece::Arc(a) => {
             let end = a.eval(1.0);
-            let mut r = Arc::from_parts(a.center, a.radius, -a.normal, 0.0, a.sweep);
-            r.start = r.angle_of(end);
-            Piece::Arc(r)
+            let r = Arc::from_parts(a.center, a.radius, -a.normal, 0.0, a.sweep);
+            Piece::Arc(r.with_range(r.angle_of(end), a.sweep))
         }
         Piece::Bez(b) => {
             let mut h = b.h.clone();
