@@ -326,6 +326,17 @@ impl Arc {
         }
     }
 
+    /// `point_in_frame` of two points.
+    #[inline(always)]
+    pub(crate) fn points_in_frame(&self, q: [(f64, f64); 2]) -> [DVec3; 2] {
+        if self.world_frame() {
+            let c = self.center;
+            q.map(|(u, v)| DVec3::new(c.x + u, c.y + v, c.z))
+        } else {
+            q.map(|(u, v)| self.center + self.x_axis * u + self.y_axis * v)
+        }
+    }
+
     /// The point at frame coordinates (u, v) from the centre, in the arc's plane.
     #[inline(always)]
     pub(crate) fn point_in_frame(&self, u: f64, v: f64) -> DVec3 {

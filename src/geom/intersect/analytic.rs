@@ -110,15 +110,16 @@ fn angles(q: [(f64, f64); 2]) -> F2 {
     atan2_lanes(F2::new(q[0].1, q[1].1), F2::new(q[0].0, q[1].0))
 }
 
-/// Put the candidates that lie on both curves (among the first `count`), in the order the
-/// sink wants (the caller's t1): chosen by index, not by moving written hits.
+/// Put the candidates `p` that lie on both curves (among the first `count`), in the order
+/// the sink wants (the caller's t1).
 #[inline(always)]
 fn put_hits<S: Sink>(
     out: &mut S,
     (s, on_s): Params,
     (u, on_u): Params,
     count: usize,
-    mut hit: impl FnMut(usize) -> (DVec3, LKind),
+    p: [DVec3; 2],
+    kind: impl Fn(usize) -> LKind,
 ) {
     let on = on_s & on_u & if count == 2 { 0b11 } else { 0b01 };
     let (s, u) = (s.get(), u.get());
@@ -130,8 +131,7 @@ fn put_hits<S: Sink>(
     };
     for i in order {
         if on >> i & 1 == 1 {
-            let (p, kind) = hit(i);
-            out.put(s[i], u[i], p, kind);
+            out.put(s[i], u[i], p[i], kind(i));
         }
     }
 }
@@ -187,7 +187,6 @@ fn line_arc_flat<S: Sink>(
         return;
     }
     let at = |s: f64| (u0 + du * s, v0 + dv * s);
-    let to_3d = |(pu, pv): (f64, f64)| a.point_in_frame(pu, pv);
     // half² = (r − h)(r + h).
     let half2 = (r * r - hh).max(0.0);
     if 4.0 * half2 <= tol * tol {
@@ -203,7 +202,7 @@ fn line_arc_flat<S: Sink>(
         };
         let (u, on) = a.params_of_atan2(angles([q; 2]), tol);
         if on & 1 == 1 {
-            out.put(s, u.get()[0], to_3d(q), LKind::Tangent);
+            out.put(s, u.get()[0], a.point_in_frame(q.0, q.1), LKind::Tangent);
         }
         return;
     }
@@ -232,7 +231,7 @@ fn line_arc_flat<S: Sink>(
             LKind::Cross
         }
     };
-    put_hits(out, s, u, 2, |i| (to_3d(q[i]), kind()));
+    put_hits(out, s, u, 2, a.points_in_frame(q), |_| kind());
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
@@ -283,18 +282,20 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
         return;
     }
     let n = (sum * sum - dd).max(0.0) * (dd - dif * dif).max(0.0);
-    let inv = 0.5 / dd;
-    // x/d from c1, and (x − d)/d from c2 (formed directly: no cancellation).
-    let (k1, m1) = ((dd + dif * sum) * inv, (dif * sum - dd) * inv);
-    // h/d; a zero half chord (2h <= tol) is one touch point.
-    let (k2, count, tangent) = if n <= tol * tol * dd {
+    // x, x − d (formed directly: no cancellation) and h, all times 2d.
+    let (x2, xd2) = (dd + dif * sum, dif * sum - dd);
+    // A zero half chord (2h <= tol) is one touch point.
+    let (h2, count, tangent) = if n <= tol * tol * dd {
         (0.0, 1, true)
     } else {
         // The tangents are perpendicular to the radii, so the sine of their angle is that
         // of the radii: twice the area of the triangle c1 c2 p over r1 r2, i.e. d·h / r1r2.
         let t = TANGENT_SIN * r1 * r2;
-        (n.sqrt() * inv, 2, 0.25 * n <= t * t)
+        (n.sqrt(), 2, 0.25 * n <= t * t)
     };
+    // x/d, (x − d)/d and h/d.
+    let inv = 0.5 / dd;
+    let (k1, m1, k2) = (x2 * inv, xd2 * inv, h2 * inv);
     // The two points (the first at base − (n × ex)·h, as the 3D forms order them), from c1
     // and from c2.
     let pa = [
@@ -316,17 +317,18 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     // triangle's angle at c1 (atan2(h, x)), φb the outer angle at c2 (atan2(h, x − d)). So
     // three atan2 instead of four, and θ's is ready before the root of the half chord.
     let theta = atan2_lanes(F2::splat(vy), F2::splat(vx));
-    let phi = atan2_lanes(F2::splat(k2), F2::new(k1, m1)).get();
+    let phi = atan2_lanes(F2::splat(h2), F2::new(x2, xd2)).get();
     let s = a.params_of_atan2(theta + F2::new(-phi[0], phi[0]), tol);
     let u = b.params_of_atan2(theta + F2::new(-phi[1], phi[1]), tol);
-    let kind = if tangent {
-        LKind::Tangent
-    } else {
-        LKind::Cross
+    let kind = |_| {
+        if tangent {
+            LKind::Tangent
+        } else {
+            LKind::Cross
+        }
     };
-    put_hits(out, s, u, count, |i| {
-        (a.point_in_frame(pa[i].0, pa[i].1), kind.clone())
-    });
+    let p = a.points_in_frame(pa);
+    put_hits(out, s, u, count, p, kind);
 }
 
 /// Two arcs in one plane with different normals (opposite, or equal within tol): as
@@ -360,7 +362,7 @@ fn arc_arc_coplanar<S: Sink>(a: &Arc, b: &Arc, v: DVec3, tol: f64, out: &mut S) 
         ([base - ey * h, base + ey * h], 2, LKind::Cross)
     };
     let (s, u) = (a.params_of2(p, tol), b.params_of2(p, tol));
-    put_hits(out, s, u, count, |i| (p[i], kind.clone()));
+    put_hits(out, s, u, count, p, |_| kind.clone());
 }
 
 /// Two arcs in different planes: the line L = plane1 ∩ plane2 cuts circle a, and each point
@@ -436,14 +438,13 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     // Two points w/|m| apart from the foot: the sine of the tangents' angle is at least
     // (half chord / r1)·|m| = w / r1, so above TANGENT_SIN they cross.
     let surely_cross = count == 2 && w2 > (TANGENT_SIN * r1) * (TANGENT_SIN * r1);
-    put_hits(out, s, u, count, |i| {
-        let p = at(q[i]);
-        let kind = if surely_cross {
+    let p = [at(q[0]), at(q[1])];
+    put_hits(out, s, u, count, p, |i| {
+        if surely_cross {
             LKind::Cross
         } else {
-            kind_by_tangents(a.tangent_at_point(p), b.tangent_at_point(p))
-        };
-        (p, kind)
+            kind_by_tangents(a.tangent_at_point(p[i]), b.tangent_at_point(p[i]))
+        }
     });
 }
 
