@@ -285,6 +285,13 @@ impl Arc {
     pub(crate) fn params_of_atan2(&self, ang: F2, tol: f64) -> (F2, u32) {
         let k = F2::splat;
         let turn = k(TAU);
+        if self.is_full() && self.start == 0.0 {
+            // A circle: ang in [−2π, 2π] needs at most one turn. Every point is on it; t
+            // rounds up to 1 only at the seam, which is t = 0.
+            let rel = ang + ang.lt(k(0.0)).keep(turn);
+            let t = rel.ge(turn).drop(rel) * k(1.0 / TAU);
+            return (t.ge(k(1.0)).drop(t), 0b11);
+        }
         // ang in [−2π, 2π], start in [0, 2π): up to two turns to add, or one to take away.
         let d = ang - k(self.start);
         let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn) - d.ge(turn).keep(turn);

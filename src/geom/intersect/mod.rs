@@ -361,7 +361,9 @@ pub fn intersect(a: &Curve, b: &Curve, tol: f64) -> Vec<Hit> {
 /// As `intersect`, writing into `out` (cleared first) so a caller can reuse its allocation.
 pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
     out.clear();
-    let tol = if tol > 0.0 && tol < f64::INFINITY {
+    // One range test on the bits (a positive finite tol is 1..=MAX as an integer); the two
+    // float tests became a long classification sequence.
+    let tol = if tol.to_bits().wrapping_sub(1) < f64::MAX.to_bits() {
         tol
     } else {
         GEOMTOL
