@@ -4,9 +4,11 @@
 //! intersections only need ~1 ulp. This is Cephes' `atan` (S. L. Moshier, Cephes Math Library,
 //! atan.c: range reduction to |t| ≤ tan(π/8) about 0, π/4 or π/2, then the rational
 //! approximation t + t³·P(t²)/Q(t²), peak relative error ≈ 1e-16), with the reduction done
-//! directly on |y| and |x| so no ratio is rounded twice. Quadrant and sign are restored
-//! exactly: the result always has the sign of `y`, as std's, so an angle just below the seam
-//! never flips to just above it.
+//! directly on |y| and |x| so no ratio is rounded twice. The left half-plane is folded into
+//! the reduction (negated argument, base π − base), so the result is one final sum. The sign
+//! is restored exactly: the result always has the sign of `y`, as std's, so an angle just
+//! below the seam never flips to just above it. Written on two lanes (`lanes::F2`) with the
+//! reduction chosen by masks: the two hits of a pair at once, and no branch on the angle.
 
 use std::f64::consts::FRAC_PI_2;
 
