@@ -535,3 +535,77 @@ fn spline_and_a_piece_of_itself_overlap() {
     );
     assert!((h[0].t1 - 0.25).abs() < 1e-9 && h[0].t2.abs() < 1e-9);
 }
+
+/// Geometry far beyond drawing sizes: the closed forms square lengths (and multiply two
+/// squares), so pairs this large are scaled down before solving. The answers are those of
+/// the same pair at unit size, scaled; pieces too far apart for their distance to be a
+/// double meet nowhere, without a NaN on the way.
+#[test]
+fn huge_circles_and_lines_meet_as_at_unit_size() {
+    for s in [1e80, 1e160, 1e300] {
+        let rel = |p: DVec3, q: DVec3| (p - q).length() <= 1e-12 * s;
+        // Two circles through (s/2, ±s·√3/2).
+        let h = intersect(&circle(v(0.0, 0.0), s), &circle(v(s, 0.0), s), TOL);
+        assert_eq!(kinds(&h), ["CROSS", "CROSS"], "scale {s:e}: {h:?}");
+        let y = s * 3f64.sqrt() / 2.0;
+        assert!(rel(h[0].point, v(s / 2.0, y)) && rel(h[1].point, v(s / 2.0, -y)));
+        assert!((h[0].t1 - 1.0 / 6.0).abs() < 1e-12 && (h[1].t1 - 5.0 / 6.0).abs() < 1e-12);
+        // A line across a circle.
+        let h = intersect(
+            &line(v(-s, 0.0), v(s, 0.0)),
+            &circle(v(0.0, 0.0), s / 2.0),
+            TOL,
+        );
+        assert_eq!(kinds(&h), ["CROSS", "CROSS"], "scale {s:e}: {h:?}");
+        assert!(rel(h[0].point, v(-s / 2.0, 0.0)) && rel(h[1].point, v(s / 2.0, 0.0)));
+        assert!((h[0].t1 - 0.25).abs() < 1e-12 && (h[0].t2 - 0.5).abs() < 1e-12);
+        // Circles in the XY and XZ planes through (±s, 0, 0).
+        let xz = Curve::circle(v(0.0, 0.0), s, Some(DVec3::Y)).unwrap();
+        let h = intersect(&circle(v(0.0, 0.0), s), &xz, TOL);
+        assert_eq!(kinds(&h), ["CROSS", "CROSS"], "scale {s:e}: {h:?}");
+        assert!(rel(h[0].point, v(s, 0.0)) && rel(h[1].point, v(-s, 0.0)));
+        for h in &h {
+            assert!(h.t1.is_finite() && h.t2.is_finite());
+        }
+        // Huge segments crossing each other.
+        let h = intersect(&line(v(-s, -s), v(s, s)), &line(v(-s, s), v(s, -s)), TOL);
+        assert_eq!(kinds(&h), ["CROSS"], "scale {s:e}: {h:?}");
+        assert!(h[0].point.length() <= 1e-12 * s && (h[0].t1 - 0.5).abs() < 1e-12);
+    }
+    // Mixed scales past double precision (a unit circle against a 1e300 segment or circle:
+    // the unit is below the large piece's ulp): finite answers, no NaN.
+    let mixed = [
+        (
+            line(v(-1e300, 3.0), v(1e300, -1.0)),
+            circle(v(0.0, 0.0), 1.0),
+        ),
+        (circle(v(0.0, 0.0), 1e300), circle(v(1e300, 0.0), 1.0)),
+    ];
+    for (a, b) in &mixed {
+        for h in intersect(a, b, TOL) {
+            assert!(
+                h.point.is_finite() && h.t1.is_finite() && h.t2.is_finite(),
+                "{h:?}"
+            );
+        }
+    }
+    // Pieces whose separation overflows: no hit, and nothing NaN on the way.
+    let far = [
+        (
+            line(v(-1.7e308, 0.0), v(-1.6e308, 1.0)),
+            circle(v(1.7e308, 0.0), 1.0),
+        ),
+        (circle(v(-1.7e308, 0.0), 1.0), circle(v(1.7e308, 0.0), 1.0)),
+        (
+            circle(v3(-1.7e308, 0.0, 1.0), 1.0),
+            Curve::circle(v(1.7e308, 1.0), 1.0, Some(DVec3::X)).unwrap(),
+        ),
+        (
+            line(v(-1.7e308, 0.0), v(-1.6e308, 1.0)),
+            line(v(1.7e308, 0.0), v(1.6e308, 1.0)),
+        ),
+    ];
+    for (a, b) in &far {
+        assert!(intersect(a, b, TOL).is_empty() && intersect(b, a, TOL).is_empty());
+    }
+}

@@ -136,6 +136,15 @@ impl Arc {
         }
     }
 
+    /// The arc scaled by `k` about the origin (same angles and frame).
+    pub(crate) fn scaled(&self, k: f64) -> Arc {
+        Arc {
+            center: self.center * k,
+            radius: self.radius * k,
+            ..*self
+        }
+    }
+
     /// The same circle with another angle range (start in [0, 2π), sweep in (0, 2π]).
     pub(crate) fn with_range(&self, start: f64, sweep: f64) -> Arc {
         let (sin, cos) = (start + 0.5 * sweep).sin_cos();

@@ -13,6 +13,14 @@ pub struct Line {
 }
 
 impl Line {
+    /// The segment scaled by `k` about the origin.
+    pub(crate) fn scaled(&self, k: f64) -> Line {
+        Line {
+            p0: self.p0 * k,
+            p1: self.p1 * k,
+        }
+    }
+
     /// A checked segment: finite end points that are not the same point.
     pub fn new(p0: DVec3, p1: DVec3) -> Result<Line> {
         finite3("line start point", p0)?;

@@ -54,8 +54,26 @@ fn seg_param(s: f64, len: impl FnOnce() -> f64, tol: f64) -> Option<f64> {
 /// Segment / segment: the closest points of the two carriers; collinear pieces give an
 /// overlap segment (or a touch point when they only share an end).
 pub fn line_line<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
+    let (la, lb) = (a.dir().length(), b.dir().length());
+    if la.max(lb) < HUGE {
+        line_line_fitting(a, b, (la, lb), tol, out);
+    } else {
+        let size = size_of(a.p0)
+            .max(size_of(a.p1))
+            .max(size_of(b.p0))
+            .max(size_of(b.p1));
+        rescaled(size, tol, out, |s, tol, out| {
+            let (a, b) = (a.scaled(s), b.scaled(s));
+            let lengths = (a.dir().length(), b.dir().length());
+            line_line_fitting(&a, &b, lengths, tol, out)
+        });
+    }
+}
+
+/// `line_line` for segments (of lengths `la`, `lb`) shorter than `HUGE`.
+#[inline(always)]
+fn line_line_fitting<S: Sink>(a: &Line, b: &Line, (la, lb): (f64, f64), tol: f64, out: &mut S) {
     let (da, db) = (a.dir(), b.dir());
-    let (la, lb) = (da.length(), db.length());
     let w = b.p0 - a.p0;
     let cross = da.cross(db);
     let cc = cross.length_squared();
@@ -105,6 +123,73 @@ fn collinear<S: Sink>(a: &Line, b: &Line, tol: f64, out: &mut S) {
     }
 }
 
+/// Radii and segment lengths up to which the closed forms run as they are: they multiply
+/// two squared lengths (4d²h², the cross products of two segments), which must stay
+/// finite. Larger pairs are solved scaled down by a power of two (`rescaled`). (Far-apart
+/// pieces need no scaling: their overflows give NaN or infinity, and every test is written
+/// so that these mean "no hit", which is the answer when a piece is that far.)
+const HUGE: f64 = 1e75;
+
+/// A pair solved scaled by 1/k: points and shared pieces are scaled back by k on the way
+/// out (exactly: k is a power of two); parameters do not depend on scale.
+struct Unscale<'a, S: Sink> {
+    out: &'a mut S,
+    k: f64,
+}
+
+impl<S: Sink> Sink for Unscale<'_, S> {
+    fn put(&mut self, s: f64, u: f64, p: DVec3, kind: LKind) {
+        let kind = match kind {
+            LKind::Overlap(piece, se, ue) => {
+                let piece = match *piece {
+                    Piece::Line(l) => Piece::Line(l.scaled(self.k)),
+                    Piece::Arc(a) => Piece::Arc(a.scaled(self.k)),
+                    // The closed forms share only lines and arcs.
+                    bez @ Piece::Bez(_) => bez,
+                };
+                LKind::Overlap(Box::new(piece), se, ue)
+            }
+            kind => kind,
+        };
+        self.out.put(s, u, p * self.k, kind);
+    }
+
+    fn by_u(&self) -> bool {
+        self.out.by_u()
+    }
+}
+
+/// Solve a pair too large for the closed forms at unit size: `solve` gets the factor 1/k,
+/// with k the power of two at `size` (the pair's largest magnitude), the tolerance scaled
+/// likewise, and a sink that scales the answers back.
+#[cold]
+#[inline(never)]
+fn rescaled<S: Sink>(
+    size: f64,
+    tol: f64,
+    out: &mut S,
+    solve: impl FnOnce(f64, f64, &mut Unscale<S>),
+) {
+    // 2^⌊log2 size⌋ from the exponent bits (size is finite and past HUGE, so normal).
+    let k = f64::from_bits(size.to_bits() & 0x7ff0_0000_0000_0000);
+    if k.is_finite() && k > 0.0 {
+        let s = 1.0 / k;
+        solve(s, tol * s, &mut Unscale { out, k });
+    }
+}
+
+/// x ≤ lim, false for a NaN: the rejection tests use it so that a NaN from an overflow
+/// (pieces too far apart for their distance to be a double) means "no hit".
+#[inline(always)]
+fn at_most(x: f64, lim: f64) -> bool {
+    x <= lim
+}
+
+/// The largest coordinate magnitude of a point, for `rescaled`.
+fn size_of(p: DVec3) -> f64 {
+    p.abs().max_element()
+}
+
 /// Parameters of two candidate points on one curve, and a mask with bit i set when point i
 /// lies on it (as `Arc::params_of_atan2` gives them).
 type Params = (F2, u32);
@@ -144,6 +229,22 @@ fn put_hits<S: Sink>(
 
 /// Segment / arc (or full circle).
 pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
+    if a.radius < HUGE && l.dir().length_squared() < HUGE * HUGE {
+        line_arc_fitting(l, a, tol, out);
+    } else {
+        let size = size_of(l.p0)
+            .max(size_of(l.p1))
+            .max(size_of(a.center))
+            .max(a.radius);
+        rescaled(size, tol, out, |s, tol, out| {
+            line_arc_fitting(&l.scaled(s), &a.scaled(s), tol, out)
+        });
+    }
+}
+
+/// `line_arc` for a radius and a segment below `HUGE`.
+#[inline(always)]
+fn line_arc_fitting<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     let d = l.dir();
     let c = a.center;
     // Start and direction in the arc's frame.
@@ -159,7 +260,7 @@ pub fn line_arc<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     // Pierces the plane once: on the circle there or nowhere.
     let s = -h0 / dn;
     let p = l.p0 + d * s;
-    if ((p - c).length() - a.radius).abs() > tol {
+    if !at_most(((p - c).length() - a.radius).abs(), tol) {
         return;
     }
     let Some(s) = seg_param(s, || d.length(), tol) else {
@@ -189,7 +290,7 @@ fn line_arc_flat<S: Sink>(
     let sf = -(u0 * du + v0 * dv) * inv2;
     let (fu, fv) = (u0 + du * sf, v0 + dv * sf);
     let hh = fu * fu + fv * fv;
-    if hh > (r + tol) * (r + tol) {
+    if !at_most(hh, (r + tol) * (r + tol)) {
         return;
     }
     let at = |s: f64| (u0 + du * s, v0 + dv * s);
@@ -242,6 +343,22 @@ fn line_arc_flat<S: Sink>(
 
 /// Arc / arc (either may be a full circle), coplanar or not.
 pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
+    if a.radius.max(b.radius) < HUGE {
+        arc_arc_fitting(a, b, tol, out);
+    } else {
+        let size = size_of(a.center)
+            .max(size_of(b.center))
+            .max(a.radius)
+            .max(b.radius);
+        rescaled(size, tol, out, |s, tol, out| {
+            arc_arc_fitting(&a.scaled(s), &b.scaled(s), tol, out)
+        });
+    }
+}
+
+/// `arc_arc` for radii below `HUGE`.
+#[inline(always)]
+fn arc_arc_fitting<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     let bits = |n: DVec3| n.to_array().map(f64::to_bits);
     if bits(a.normal) == bits(b.normal) {
         // One normal (bit for bit), so one OCS frame: circles drawn in one plane.
@@ -271,7 +388,7 @@ pub fn arc_arc<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
 #[inline(always)]
 fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     let (vx, vy, vz) = a.in_frame(b.center - a.center);
-    if vz.abs() > tol {
+    if !at_most(vz.abs(), tol) {
         return; // parallel planes apart
     }
     let dd = vx * vx + vy * vy;
@@ -284,7 +401,7 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     }
     let (sum, dif) = (r1 + r2, r1 - r2);
     let gap = dif.abs() - tol;
-    if dd > (sum + tol) * (sum + tol) || (gap > 0.0 && dd < gap * gap) {
+    if !at_most(dd, (sum + tol) * (sum + tol)) || (gap > 0.0 && dd < gap * gap) {
         return;
     }
     let n = (sum * sum - dd).max(0.0) * (dd - dif * dif).max(0.0);
@@ -350,7 +467,7 @@ fn arc_arc_coplanar<S: Sink>(a: &Arc, b: &Arc, v: DVec3, tol: f64, out: &mut S) 
         }
         return;
     }
-    if d > r1 + r2 + tol || d < (r1 - r2).abs() - tol {
+    if !at_most(d, r1 + r2 + tol) || d < (r1 - r2).abs() - tol {
         return;
     }
     let h2 =
@@ -384,7 +501,7 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     let (r1, r2) = (a.radius, b.radius);
     let m2 = m.0 * m.0 + m.1 * m.1;
     // L's distance from c1 is |e| / |m|.
-    if e * e > (r1 + tol) * (r1 + tol) * m2 {
+    if !at_most(e * e, (r1 + tol) * (r1 + tol) * m2) {
         return;
     }
     // |m|² times a's half chord squared.
