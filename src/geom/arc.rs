@@ -322,45 +322,14 @@ impl Arc {
         (t, on.or(past_end).or(before_start).bits())
     }
 
-    /// Whether the normal is exactly +Z, so that the arc's frame is the world's (compared
-    /// as bits: integer tests, and a −0 component just takes the general path).
+    /// The arc's 2D frame, for the closed forms (`Frame`).
     #[inline(always)]
-    pub(crate) fn world_frame(&self) -> bool {
-        (self.normal.x.to_bits() | self.normal.y.to_bits()) == 0
-            && self.normal.z.to_bits() == 1f64.to_bits()
-    }
-
-    /// The coordinates of the vector `w` in the arc's frame: along X, along Y, along the
-    /// normal. With the normal +Z (most drawings) the frame is the world's, and these are
-    /// w's components: the same numbers as the three dot products, sooner.
-    #[inline(always)]
-    pub(crate) fn in_frame(&self, w: DVec3) -> (f64, f64, f64) {
-        if self.world_frame() {
-            (w.x, w.y, w.z)
-        } else {
-            (w.dot(self.x_axis), w.dot(self.y_axis), w.dot(self.normal))
-        }
-    }
-
-    /// `point_in_frame` of two points.
-    #[inline(always)]
-    pub(crate) fn points_in_frame(&self, q: [(f64, f64); 2]) -> [DVec3; 2] {
-        if self.world_frame() {
-            let c = self.center;
-            q.map(|(u, v)| DVec3::new(c.x + u, c.y + v, c.z))
-        } else {
-            q.map(|(u, v)| self.center + self.x_axis * u + self.y_axis * v)
-        }
-    }
-
-    /// The point at frame coordinates (u, v) from the centre, in the arc's plane.
-    #[inline(always)]
-    pub(crate) fn point_in_frame(&self, u: f64, v: f64) -> DVec3 {
-        if self.world_frame() {
-            DVec3::new(self.center.x + u, self.center.y + v, self.center.z)
-        } else {
-            self.center + self.x_axis * u + self.y_axis * v
-        }
+    pub(crate) fn frame_view(&self) -> Frame<'_> {
+        // The normal exactly +Z, compared as bits: integer tests, and a −0 component just
+        // takes the general path.
+        let world = (self.normal.x.to_bits() | self.normal.y.to_bits()) == 0
+            && self.normal.z.to_bits() == 1f64.to_bits();
+        Frame { arc: self, world }
     }
 
     /// The tangent direction (increasing angle) at a point `p` of the circle, length r.
@@ -373,6 +342,45 @@ impl Arc {
     pub(crate) fn tangent_at_angle(&self, a: f64) -> DVec3 {
         let (s, c) = a.sin_cos();
         self.y_axis * c - self.x_axis * s
+    }
+}
+
+/// An arc's frame (X, Y, normal) for the closed forms, with one test done up front: when
+/// the normal is +Z (most drawings) the frame is the world's, and coordinates in it are
+/// the components themselves, the same numbers as the dot products, sooner.
+#[derive(Clone, Copy)]
+pub(crate) struct Frame<'a> {
+    arc: &'a Arc,
+    world: bool,
+}
+
+impl Frame<'_> {
+    /// The coordinates of the vector `w`: along X, along Y, along the normal.
+    #[inline(always)]
+    pub(crate) fn coords(&self, w: DVec3) -> (f64, f64, f64) {
+        let a = self.arc;
+        if self.world {
+            (w.x, w.y, w.z)
+        } else {
+            (w.dot(a.x_axis), w.dot(a.y_axis), w.dot(a.normal))
+        }
+    }
+
+    /// The point at frame coordinates (u, v) from the centre, in the arc's plane.
+    #[inline(always)]
+    pub(crate) fn point(&self, (u, v): (f64, f64)) -> DVec3 {
+        let a = self.arc;
+        if self.world {
+            DVec3::new(a.center.x + u, a.center.y + v, a.center.z)
+        } else {
+            a.center + a.x_axis * u + a.y_axis * v
+        }
+    }
+
+    /// `point` of two points (not `map`: that is not always inlined).
+    #[inline(always)]
+    pub(crate) fn points(&self, q: [(f64, f64); 2]) -> [DVec3; 2] {
+        [self.point(q[0]), self.point(q[1])]
     }
 }
 

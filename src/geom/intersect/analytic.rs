@@ -18,7 +18,7 @@ use std::f64::consts::TAU;
 use glam::DVec3;
 
 use super::{LKind, Sink, TANGENT_SIN};
-use crate::geom::arc::{norm_angle, Arc};
+use crate::geom::arc::{norm_angle, Arc, Frame};
 use crate::geom::fastmath::atan2_lanes;
 use crate::geom::lanes::F2;
 use crate::geom::line::Line;
@@ -248,10 +248,11 @@ fn line_arc_fitting<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
     let d = l.dir();
     let c = a.center;
     // Start and direction in the arc's frame.
-    let (u0, v0, h0) = a.in_frame(l.p0 - c);
-    let (du, dv, dn) = a.in_frame(d);
+    let frame = a.frame_view();
+    let (u0, v0, h0) = frame.coords(l.p0 - c);
+    let (du, dv, dn) = frame.coords(d);
     if h0.abs() <= tol && (h0 + dn).abs() <= tol {
-        line_arc_flat(l, a, (u0, v0), (du, dv), tol, out);
+        line_arc_flat(l, a, frame, (u0, v0), (du, dv), tol, out);
         return;
     }
     if dn == 0.0 {
@@ -277,6 +278,7 @@ fn line_arc_fitting<S: Sink>(l: &Line, a: &Arc, tol: f64, out: &mut S) {
 fn line_arc_flat<S: Sink>(
     l: &Line,
     a: &Arc,
+    frame: Frame,
     (u0, v0): (f64, f64),
     (du, dv): (f64, f64),
     tol: f64,
@@ -309,7 +311,7 @@ fn line_arc_flat<S: Sink>(
         };
         let (u, on) = a.params_of_atan2(angles([q; 2]), tol);
         if on & 1 == 1 {
-            out.put(s, u.get()[0], a.point_in_frame(q.0, q.1), LKind::Tangent);
+            out.put(s, u.get()[0], frame.point(q), LKind::Tangent);
         }
         return;
     }
@@ -338,7 +340,7 @@ fn line_arc_flat<S: Sink>(
             LKind::Cross
         }
     };
-    put_hits(out, s, u, 2, a.points_in_frame(q), |_| kind());
+    put_hits(out, s, u, 2, frame.points(q), |_| kind());
 }
 
 /// Arc / arc (either may be a full circle), coplanar or not.
@@ -387,7 +389,8 @@ fn arc_arc_fitting<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
 /// Both are taken as fractions of d (x/d, h/d), so no root of d² is needed.
 #[inline(always)]
 fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
-    let (vx, vy, vz) = a.in_frame(b.center - a.center);
+    let frame = a.frame_view();
+    let (vx, vy, vz) = frame.coords(b.center - a.center);
     if !at_most(vz.abs(), tol) {
         return; // parallel planes apart
     }
@@ -450,7 +453,7 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
             LKind::Cross
         }
     };
-    let p = a.points_in_frame(pa);
+    let p = frame.points(pa);
     put_hits(out, s, u, count, p, kind);
 }
 

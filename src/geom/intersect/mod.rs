@@ -360,7 +360,14 @@ pub fn intersect(a: &Curve, b: &Curve, tol: f64) -> Vec<Hit> {
 
 /// As `intersect`, writing into `out` (cleared first) so a caller can reuse its allocation.
 pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
-    out.clear();
+    // Only an overlap hit owns memory. (`clear` alone is a drop loop the compiler keeps out
+    // of line: a call per pair.)
+    if out.iter().any(|h| matches!(h.kind, HitKind::Overlap(_))) {
+        out.clear();
+    } else {
+        // SAFETY: shortening is always sound; the point hits dropped here own nothing.
+        unsafe { out.set_len(0) };
+    }
     // One range test on the bits (a positive finite tol is 1..=MAX as an integer); the two
     // float tests became a long classification sequence.
     let tol = if tol.to_bits().wrapping_sub(1) < f64::MAX.to_bits() {
