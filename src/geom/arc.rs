@@ -299,7 +299,8 @@ impl Arc {
             // rounds up to 1 only at the seam, which is t = 0.
             let rel = ang + ang.lt(k(0.0)).keep(turn);
             let t = rel.ge(turn).drop(rel) * k(1.0 / TAU);
-            return (t.ge(k(1.0)).drop(t), 0b11);
+            // (The mask is false only for a NaN angle: no NaN reaches a result.)
+            return (t.ge(k(1.0)).drop(t), rel.ge(k(0.0)).bits());
         }
         // ang in [−2π, 2π], start in [0, 2π): up to two turns to add, or one to take away.
         let d = ang - k(self.start);
@@ -309,7 +310,7 @@ impl Arc {
         if self.is_full() {
             // Every point is on it; t rounds up to 1 only at the seam, which is t = 0.
             let t = rel * k(1.0 / TAU);
-            return (t.ge(k(1.0)).drop(t), 0b11);
+            return (t.ge(k(1.0)).drop(t), rel.ge(k(0.0)).bits());
         }
         let sweep = k(self.sweep);
         let on = rel.le(sweep);
@@ -507,6 +508,18 @@ mod tests {
             }
         }
         assert!(kept > 50_000, "only {kept} points on their arcs");
+    }
+
+    /// A NaN angle is never a point of the curve, full circle or arc.
+    #[test]
+    fn nan_angles_are_off_every_arc() {
+        let circle = Arc::from_parts(DVec3::ZERO, 1.0, DVec3::Z, 0.0, TAU);
+        let turned = circle.with_range(1.0, TAU);
+        let arc = Arc::new(DVec3::ZERO, 1.0, 1.0, 2.0, DVec3::Z).unwrap();
+        for a in [circle, turned, arc] {
+            let (_, on) = a.params_of_atan2(F2::new(f64::NAN, 0.5), 1e-9);
+            assert_eq!(on & 1, 0, "{a:?}");
+        }
     }
 
     /// The cached middle direction and cos(sweep/2) follow every change of range.

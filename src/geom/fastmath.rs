@@ -62,6 +62,18 @@ pub(crate) fn atan2_lanes(y: F2, x: F2) -> F2 {
     kernel(y, x, ay, ax)
 }
 
+/// `atan2_lanes` for lanes known finite, below 1e300 in magnitude and not both zero (the
+/// direction between two distinct centres of a fitting pair): no special-value test.
+#[inline(always)]
+pub(crate) fn atan2_lanes_regular(y: F2, x: F2) -> F2 {
+    let (ay, ax) = (y.abs(), x.abs());
+    debug_assert!({
+        let big = ay.max(ax);
+        big.gt(F2::splat(0.0)).and(big.lt(F2::splat(1e300))).bits() == 0b11
+    });
+    kernel(y, x, ay, ax)
+}
+
 #[cold]
 fn special(y: F2, x: F2, fine: M2) -> F2 {
     let r = kernel(y, x, y.abs(), x.abs()).get();

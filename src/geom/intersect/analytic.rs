@@ -19,7 +19,7 @@ use glam::DVec3;
 
 use super::{LKind, Sink, TANGENT_SIN};
 use crate::geom::arc::{norm_angle, Arc, Frame};
-use crate::geom::fastmath::atan2_lanes;
+use crate::geom::fastmath::{atan2_lanes, atan2_lanes_regular};
 use crate::geom::lanes::F2;
 use crate::geom::line::Line;
 use crate::geom::piece::Piece;
@@ -442,7 +442,8 @@ fn arc_arc_flat<S: Sink>(a: &Arc, b: &Arc, tol: f64, out: &mut S) {
     // Their angles about c1 are θ ∓ φa, about c2 θ ∓ φb: θ the direction of c1c2, φa the
     // triangle's angle at c1 (atan2(h, x)), φb the outer angle at c2 (atan2(h, x − d)). So
     // three atan2 instead of four, and θ's is ready before the root of the half chord.
-    let theta = atan2_lanes(F2::splat(vy), F2::splat(vx));
+    // (vx, vy: below 2·HUGE, and not both zero as d > tol.)
+    let theta = atan2_lanes_regular(F2::splat(vy), F2::splat(vx));
     let phi = atan2_lanes(F2::splat(h2), F2::new(x2, xd2)).get();
     let s = a.params_of_atan2(theta + F2::new(-phi[0], phi[0]), tol);
     let u = b.params_of_atan2(theta + F2::new(-phi[1], phi[1]), tol);
