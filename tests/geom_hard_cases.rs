@@ -609,3 +609,25 @@ fn huge_circles_and_lines_meet_as_at_unit_size() {
         assert!(intersect(a, b, TOL).is_empty() && intersect(b, a, TOL).is_empty());
     }
 }
+
+/// Two circles in planes 30° apart, both tangent to the planes' common line at one point:
+/// one TANGENT hit, also when the second is a short arc around that point (its quick
+/// rejection must see the point at the scale it was computed at).
+#[test]
+fn tilted_circles_touching_on_their_common_line() {
+    let a = circle(v(0.0, 0.0), 1.0);
+    let touch = v(0.0, 1.0);
+    let alpha = 30f64.to_radians();
+    let n = v3(0.0, -alpha.sin(), alpha.cos());
+    let c = touch + v3(0.0, alpha.cos(), alpha.sin());
+    let (x, y) = lispcad::geom::frame::arbitrary_axis(n);
+    let at = (touch - c).dot(y).atan2((touch - c).dot(x));
+    for b in [
+        Curve::circle(c, 1.0, Some(n)).unwrap(),
+        Curve::arc(c, 1.0, at - 0.1, at + 0.1, Some(n)).unwrap(),
+    ] {
+        let h = both(&a, &b);
+        assert_eq!(kinds(&h), ["TANGENT"], "{b:?}: {h:?}");
+        assert!(close(h[0].point, touch, 1e-9), "{h:?}");
+    }
+}

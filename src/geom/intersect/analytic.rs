@@ -547,13 +547,13 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
             m2,
         )
     };
-    // In b's frame (times |m|²): m'e' + o·m'⊥ (L runs along −m'⊥ there).
+    // In b's frame, times |m|² whatever `scale` is: m'e' + o·m'⊥ (L runs along −m'⊥ there).
     let at_b = |o: f64| (mb.0 * eb - mb.1 * o, mb.1 * eb + mb.0 * o);
     let on_b = |o: f64| (lo..=hi).contains(&(o * o - wb2));
     let on_b = on_b(o[0]) as u32 | (on_b(o[1]) as u32) << 1;
     // No atan2 when no point is on circle b and (maybe) on both arcs.
     let qb = [at_b(o[0]), at_b(o[1])];
-    if on_b & a.maybe_on(q, scale, tol) & b.maybe_on(qb, scale, tol) == 0 {
+    if on_b & a.maybe_on(q, scale, tol) & b.maybe_on(qb, m2, tol) == 0 {
         return;
     }
     let s = a.params_of_atan2(angles(q), tol);
