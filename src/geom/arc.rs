@@ -122,18 +122,18 @@ impl Arc {
         sweep: f64,
     ) -> Arc {
         let (x_axis, y_axis) = arbitrary_axis(normal);
-        let (sin, cos) = (start + 0.5 * sweep).sin_cos();
         Arc {
             center,
             radius,
             normal,
             x_axis,
             y_axis,
-            start,
-            sweep,
-            mid: (cos, sin),
-            cos_half: (0.5 * sweep).cos(),
+            start: 0.0,
+            sweep: 0.0,
+            mid: (1.0, 0.0),
+            cos_half: 1.0,
         }
+        .with_range(start, sweep)
     }
 
     /// The arc scaled by `k` about the origin (same angles and frame).
@@ -294,21 +294,19 @@ impl Arc {
     pub(crate) fn params_of_atan2(&self, ang: F2, tol: f64) -> (F2, u32) {
         let k = F2::splat;
         let turn = k(TAU);
-        if self.is_full() && self.start == 0.0 {
-            // A circle: ang in [−2π, 2π] needs at most one turn. Every point is on it; t
-            // rounds up to 1 only at the seam, which is t = 0.
-            let rel = ang + ang.lt(k(0.0)).keep(turn);
-            let t = rel.ge(turn).drop(rel) * k(1.0 / TAU);
-            // (The mask is false only for a NaN angle: no NaN reaches a result.)
-            return (t.ge(k(1.0)).drop(t), rel.ge(k(0.0)).bits());
-        }
-        // ang in [−2π, 2π], start in [0, 2π): up to two turns to add, or one to take away.
-        let d = ang - k(self.start);
-        let rel = d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn) - d.ge(turn).keep(turn);
+        let rel = if self.start == 0.0 {
+            // ang in [−2π, 2π]: one turn at most (circles start at 0).
+            ang + ang.lt(k(0.0)).keep(turn)
+        } else {
+            // ang − start in (−4π, 2π]: up to two turns to add, or one to take away.
+            let d = ang - k(self.start);
+            d + d.lt(k(0.0)).keep(turn) + d.lt(-turn).keep(turn) - d.ge(turn).keep(turn)
+        };
         // Just below a turn rounds up to 2π: that point is at the start.
         let rel = rel.ge(turn).drop(rel);
         if self.is_full() {
-            // Every point is on it; t rounds up to 1 only at the seam, which is t = 0.
+            // Every point is on it; t rounds up to 1 only at the seam, which is t = 0. (The
+            // mask is false only for a NaN angle: no NaN reaches a result.)
             let t = rel * k(1.0 / TAU);
             return (t.ge(k(1.0)).drop(t), rel.ge(k(0.0)).bits());
         }
@@ -462,15 +460,7 @@ impl ParamCurveSubdivide for Arc {
 mod tests {
     use super::*;
 
-    struct Rng(u64);
-    impl Rng {
-        fn f(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::geom::test_rng::Rng;
 
     /// The quick rejection never drops a point the exact parameter test keeps: points at
     /// random angles, and points just inside and just beyond both ends (within and past

@@ -133,18 +133,7 @@ mod tests {
         (a.abs().to_bits() as i64 - b.abs().to_bits() as i64).unsigned_abs()
     }
 
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        fn f(&mut self) -> f64 {
-            (self.next() >> 11) as f64 / (1u64 << 53) as f64
-        }
-    }
+    use crate::geom::test_rng::Rng;
 
     fn check(y: f64, x: f64, worst: &mut u64) {
         let (f, s) = (atan2(y, x), y.atan2(x));

@@ -32,6 +32,8 @@ pub mod quadspline_query;
 pub mod surface;
 pub mod temple;
 pub mod temple_refine;
+#[cfg(test)]
+pub(crate) mod test_rng;
 pub mod traits;
 
 pub use curve::Curve;

@@ -560,12 +560,12 @@ fn arc_arc_3d<S: Sink>(a: &Arc, b: &Arc, v: DVec3, m: (f64, f64), e: f64, tol: f
     let s = (s.0, s.1 & on_b);
     let u = b.params_of_atan2(angles(qb), tol);
     let inv = 1.0 / scale;
-    let (x, y) = (a.x_axis, a.y_axis);
-    let at = |(qx, qy): (f64, f64)| a.center + x * (qx * inv) + y * (qy * inv);
     // Two points w/|m| apart from the foot: the sine of the tangents' angle is at least
     // (half chord / r1)·|m| = w / r1, so above TANGENT_SIN they cross.
     let surely_cross = count == 2 && w2 > (TANGENT_SIN * r1) * (TANGENT_SIN * r1);
-    let p = [at(q[0]), at(q[1])];
+    let p = a
+        .frame_view()
+        .points(q.map(|(qx, qy)| (qx * inv, qy * inv)));
     put_hits(out, s, u, count, p, |i| {
         if surely_cross {
             LKind::Cross

@@ -588,18 +588,7 @@ mod fast_param_tests {
     use super::*;
     use crate::geom::arc::norm_angle;
 
-    struct Rng(u64);
-    impl Rng {
-        fn f(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
-        }
-        fn pt(&mut self, s: f64) -> DVec3 {
-            DVec3::new(self.f() * s, self.f() * s, self.f() * s)
-        }
-    }
+    use crate::geom::test_rng::Rng;
 
     /// The public parameter of the hit point `p` on `c` by the reference formula.
     fn reference_t(c: &Curve, p: DVec3, tol: f64) -> Option<f64> {
