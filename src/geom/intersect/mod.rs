@@ -389,16 +389,16 @@ pub fn intersect_into(a: &Curve, b: &Curve, tol: f64, out: &mut Vec<Hit>) {
         fix_overlaps(a, b, out);
     }
     // The closed forms put their points in order of t1, with a double root once and no
-    // point inside an overlap; only several overlaps (arcs of one circle) need a sort.
+    // point inside an overlap. Several overlaps (arcs of one circle), a turned overlap
+    // piece, or the swapped parameters of the general path need a sort.
     if out.len() > 2 || (out.len() == 2 && out[1].t1 < out[0].t1) {
         out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
     }
 }
 
 /// Hits of (a, b) computed as (b, a), parameters already swapped: give each overlap piece
-/// the direction of `a`, and restore the order of t1.
+/// the direction of `a` (the caller then restores the order of t1).
 fn fix_overlaps(a: &Curve, b: &Curve, out: &mut [Hit]) {
-    let mut moved = false;
     for h in out.iter_mut() {
         if let HitKind::Overlap(c) = &mut h.kind {
             if let Some(rev) = reversed_if_against(c, a) {
@@ -406,12 +406,8 @@ fn fix_overlaps(a: &Curve, b: &Curve, out: &mut [Hit]) {
                 h.point = c.eval(0.0);
                 h.t1 = a.closest_point(h.point).0;
                 h.t2 = b.closest_point(h.point).0;
-                moved = true;
             }
         }
-    }
-    if moved {
-        out.sort_by(|x, y| x.t1.total_cmp(&y.t1));
     }
 }
 
