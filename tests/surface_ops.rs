@@ -198,3 +198,21 @@ fn revolved_profile_sections_are_exact() {
         assert!((last.z - 2.0).abs() < 1e-15);
     }
 }
+
+#[test]
+fn arc_across_angle_zero_against_a_sphere() {
+    // The circle x = −2 + cos θ, y = sin θ meets the sphere |p| = 2 where cos θ = 1/4
+    // (θ = ±75.5°); the arc from 300° to 90° runs across 0° and holds only θ = +75.5°.
+    let s = Surface::sphere(DVec3::ZERO, 2.0).unwrap();
+    let arc = ArcData {
+        center: DVec3::new(-2.0, 0.0, 0.0),
+        radius: 1.0,
+        normal: DVec3::Z,
+        start_angle: 300f64.to_radians(),
+        end_angle: 90f64.to_radians(),
+    };
+    let h = arc_surface_hits(&arc, &s, 1e-4).unwrap();
+    assert_eq!(h.len(), 1, "{h:?}");
+    let want = DVec3::new(-1.75, (1.0f64 - 1.0 / 16.0).sqrt(), 0.0);
+    assert!((h[0] - want).length() < 1e-2, "{h:?}");
+}

@@ -172,7 +172,9 @@ impl ArcData {
         }
     }
 
-    fn sweep(&self) -> f64 {
+    /// The angle swept, in [0, 2π]: end − start reduced to a turn (an arc may run across
+    /// angle 0), 2π for a whole circle.
+    pub(crate) fn sweep(&self) -> f64 {
         let s = self.end_angle - self.start_angle;
         if s >= TAU {
             TAU

@@ -240,8 +240,7 @@ pub fn arc_surface_hits(arc: &ArcData, s: &Surface, tol: f64) -> Result<Vec<DVec
             impl ParamCurve for ArcCurve<'_> {
                 fn eval(&self, t: f64) -> DVec3 {
                     let a = self.0;
-                    let sweep = (a.end_angle - a.start_angle).clamp(0.0, std::f64::consts::TAU);
-                    a.point(a.start_angle + t * sweep)
+                    a.point(a.start_angle + t * a.sweep())
                 }
             }
             let m = mesh_surface(s, tol)?;
