@@ -5,6 +5,9 @@ use lispcad::geom::surface::{mesh_surface, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_6, PI};
 
+mod mesh_support;
+use mesh_support::l_outline;
+
 fn square() -> Mesh {
     Mesh::new(
         vec![DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y],
@@ -14,15 +17,7 @@ fn square() -> Mesh {
 }
 
 fn l_shape() -> Mesh {
-    let s = Surface::plane(vec![
-        DVec3::ZERO,
-        DVec3::new(2.0, 0.0, 0.0),
-        DVec3::new(2.0, 1.0, 0.0),
-        DVec3::new(1.0, 1.0, 0.0),
-        DVec3::new(1.0, 2.0, 0.0),
-        DVec3::new(0.0, 2.0, 0.0),
-    ])
-    .unwrap();
+    let s = Surface::plane(l_outline()).unwrap();
     mesh_surface(&s, 1e-3).unwrap()
 }
 

@@ -11,6 +11,9 @@ use lispcad::geom::DVec3;
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 
+mod mesh_support;
+use mesh_support::l_outline;
+
 fn cyl() -> Cylinder {
     match Surface::cylinder(DVec3::ZERO, DVec3::Z, 1.0, 2.0).unwrap() {
         Surface::Cylinder(c) => c,
@@ -232,14 +235,7 @@ fn point_in_facet_on_vertices_edges_and_extensions() {
         FacetLocation::Inside
     );
     // Non-convex polygon (an L): the notch is outside.
-    let l = [
-        DVec3::ZERO,
-        DVec3::new(2.0, 0.0, 0.0),
-        DVec3::new(2.0, 1.0, 0.0),
-        DVec3::new(1.0, 1.0, 0.0),
-        DVec3::new(1.0, 2.0, 0.0),
-        DVec3::new(0.0, 2.0, 0.0),
-    ];
+    let l = l_outline();
     assert_eq!(
         point_in_polygon(DVec3::new(1.5, 1.5, 0.0), &l, n, 1e-12),
         FacetLocation::Outside

@@ -6,6 +6,9 @@ use lispcad::geom::{DVec3, ParamCurve};
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
+mod mesh_support;
+use mesh_support::l_outline;
+
 struct Line(DVec3, DVec3);
 impl ParamCurve for Line {
     fn eval(&self, t: f64) -> DVec3 {
@@ -182,15 +185,9 @@ fn sweep_of_a_circle_along_a_line_is_a_tube() {
 
 #[test]
 fn plane_surface_triangulates_non_convex_regions() {
-    let l = vec![
-        DVec3::ZERO,
-        DVec3::new(2.0, 0.0, 0.0),
-        DVec3::new(2.0, 1.0, 0.0),
-        DVec3::new(1.0, 1.0, 0.0),
-        DVec3::new(1.0, 2.0, 0.0),
-        DVec3::new(0.0, 2.0, 0.0),
-        DVec3::ZERO,
-    ];
+    // Closed by repeating the first point, which `plane` accepts.
+    let mut l = l_outline();
+    l.push(l[0]);
     let s = Surface::plane(l).unwrap();
     let m = mesh_surface(&s, 1e-3).unwrap();
     assert_eq!(m.len(), 4);

@@ -5,6 +5,7 @@
 //! All parameters are the public t in [0, 1] of [`QuadSpline`] (uniform over segments).
 
 use glam::{DMat4, DVec3};
+use smallvec::SmallVec;
 
 use super::quadspline::{quad_bezier, QuadSpline};
 
@@ -63,31 +64,10 @@ fn seg_arclen(s: &[DVec3; 3], a: f64, b: f64, acc: f64, depth: u32) -> f64 {
 /// Every root in [0, 1] of the cubic c3 u³ + c2 u² + c1 u + c0, found by splitting [0, 1] at
 /// the roots of its derivative into monotone pieces and bisecting each sign change (with
 /// Newton steps when they stay in the bracket). Exact to machine precision, loses no root.
-/// A short list of parameters on the stack (nearest-point candidates: ends and cubic roots).
-struct Params {
-    v: [f64; 6],
-    n: usize,
-}
-
-impl Params {
-    fn new() -> Params {
-        Params { v: [0.0; 6], n: 0 }
-    }
-    fn push(&mut self, u: f64) {
-        if self.n < self.v.len() {
-            self.v[self.n] = u;
-            self.n += 1;
-        }
-    }
-    fn as_slice(&self) -> &[f64] {
-        &self.v[..self.n]
-    }
-}
-
-fn cubic_roots_unit(c3: f64, c2: f64, c1: f64, c0: f64, out: &mut Params) {
+fn cubic_roots_unit(c3: f64, c2: f64, c1: f64, c0: f64, out: &mut SmallVec<[f64; 6]>) {
     let f = |u: f64| ((c3 * u + c2) * u + c1) * u + c0;
     let df = |u: f64| (3.0 * c3 * u + 2.0 * c2) * u + c1;
-    let mut cuts = Params::new();
+    let mut cuts: SmallVec<[f64; 4]> = SmallVec::new();
     cuts.push(0.0);
     // Critical points: 3c3 u² + 2c2 u + c1 = 0, solved without cancellation.
     let (qa, qb, qc) = (3.0 * c3, 2.0 * c2, c1);
@@ -114,7 +94,7 @@ fn cubic_roots_unit(c3: f64, c2: f64, c1: f64, c0: f64, out: &mut Params) {
         }
     }
     cuts.push(1.0);
-    for w in cuts.as_slice().windows(2) {
+    for w in cuts.windows(2) {
         let (mut lo, mut hi) = (w[0], w[1]);
         let (flo, fhi) = (f(lo), f(hi));
         if flo == 0.0 {
@@ -167,9 +147,8 @@ fn seg_nearest(s: &[DVec3; 3], p: DVec3) -> (f64, f64) {
     let a = s[0] - 2.0 * s[1] + s[2];
     let b = 2.0 * (s[1] - s[0]);
     let d = s[0] - p;
-    let mut cands = Params::new();
-    cands.push(0.0);
-    cands.push(1.0);
+    let mut cands: SmallVec<[f64; 6]> = SmallVec::new();
+    cands.extend([0.0, 1.0]);
     cubic_roots_unit(
         2.0 * a.dot(a),
         3.0 * a.dot(b),
@@ -178,9 +157,8 @@ fn seg_nearest(s: &[DVec3; 3], p: DVec3) -> (f64, f64) {
         &mut cands,
     );
     cands
-        .as_slice()
-        .iter()
-        .map(|&u| (u, quad_bezier(s, u).distance_squared(p)))
+        .into_iter()
+        .map(|u| (u, quad_bezier(s, u).distance_squared(p)))
         .min_by(|x, y| x.1.total_cmp(&y.1))
         .unwrap_or((0.0, d.length_squared()))
 }
@@ -414,9 +392,8 @@ mod tests {
     #[test]
     fn cubic_roots_found() {
         // (u − 0.2)(u − 0.5)(u − 0.9)
-        let mut roots = Params::new();
-        cubic_roots_unit(1.0, -1.6, 0.73, -0.09, &mut roots);
-        let mut r = roots.as_slice().to_vec();
+        let mut r = SmallVec::new();
+        cubic_roots_unit(1.0, -1.6, 0.73, -0.09, &mut r);
         r.sort_by(f64::total_cmp);
         assert_eq!(r.len(), 3);
         for (x, y) in r.iter().zip([0.2, 0.5, 0.9]) {

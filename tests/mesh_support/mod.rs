@@ -1,5 +1,6 @@
 //! Shared by the mesh tests (and examples/mesh_bench.rs, which includes it with `#[path]`):
-//! simple meshes to cut and intersect with, and an independent triangle/triangle check.
+//! simple meshes to cut and intersect with, and an independent triangle/triangle check; the
+//! surface tests use it for their shared outline.
 #![allow(
     dead_code,
     reason = "each crate including this module uses only some of the helpers"
@@ -31,6 +32,19 @@ pub fn grid(n: usize, size: f64, z: f64) -> Mesh {
         }
     }
     Mesh::new(v, t).unwrap()
+}
+
+/// The L-shaped outline [0, 2]² minus [1, 2]² in z = 0, counter-clockwise, not closed: a
+/// non-convex region of area 3 with one notch corner at (1, 1).
+pub fn l_outline() -> Vec<DVec3> {
+    vec![
+        DVec3::ZERO,
+        DVec3::new(2.0, 0.0, 0.0),
+        DVec3::new(2.0, 1.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(1.0, 2.0, 0.0),
+        DVec3::new(0.0, 2.0, 0.0),
+    ]
 }
 
 /// Möller–Trumbore segment/triangle test in plain f64, independent of the library's predicates.

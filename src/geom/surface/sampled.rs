@@ -1,5 +1,7 @@
 //! Curves given as point lists, and adaptive sampling of any [`ParamCurve`].
 
+use crate::geom::line::Line;
+use crate::geom::traits::ParamCurveNearest;
 use crate::geom::ParamCurve;
 use glam::DVec3;
 
@@ -115,12 +117,6 @@ fn refine(
 }
 
 pub(crate) fn dist_to_segment(p: DVec3, a: DVec3, b: DVec3) -> f64 {
-    let d = b - a;
-    let l2 = d.length_squared();
-    let t = if l2 > 0.0 {
-        ((p - a).dot(d) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    p.distance(a + d * t)
+    // Unchecked on purpose: a zero-length segment measures the distance to its point.
+    p.distance(Line { p0: a, p1: b }.nearest(p, 0.0).1)
 }
