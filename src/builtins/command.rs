@@ -13,6 +13,7 @@ use glam::{DVec2, DVec3};
 use crate::builtin;
 use crate::builtins::entities::select::selected_handles;
 use crate::builtins::entities::EntityState;
+use crate::builtins::input::{parse_real, point_text};
 use crate::builtins::system::SysVars;
 use crate::lang::builtin::{Builtin, MANY};
 use crate::lang::error::{err, Exn, LResult};
@@ -127,36 +128,9 @@ pub(crate) fn add(it: &mut Interp, cmd: &str, kind: EntityKind) -> Result<u64, E
         .map_err(|e| cmd_err(cmd, e))
 }
 
-fn number_of(s: &str) -> Option<f64> {
-    let x: f64 = s.trim().parse().ok()?;
-    x.is_finite().then_some(x)
-}
-
-/// A command-line point string: "x,y[,z]", "@dx,dy[,dz]", "d<a", "@d<a" (a in degrees).
-fn parse_point_str(s: &str, last: DVec3) -> Option<DVec3> {
-    let s = s.trim();
-    let (rel, body) = match s.strip_prefix('@') {
-        Some(b) => (true, b),
-        None => (false, s),
-    };
-    if rel && body.trim().is_empty() {
-        return Some(last);
-    }
-    let offset = if let Some((d, a)) = body.split_once('<') {
-        let (d, a) = (number_of(d)?, number_of(a)?.to_radians());
-        DVec3::new(d * a.cos(), d * a.sin(), 0.0)
-    } else {
-        let parts: Vec<f64> = body
-            .split(',')
-            .map(number_of)
-            .collect::<Option<Vec<f64>>>()?;
-        match parts.as_slice() {
-            [x, y] => DVec3::new(*x, *y, 0.0),
-            [x, y, z] => DVec3::new(*x, *y, *z),
-            _ => return None,
-        }
-    };
-    Some(if rel { last + offset } else { offset })
+/// A command-line point string; `last` is what "@" is relative to.
+pub(crate) fn parse_point_str(s: &str, last: DVec3) -> Option<DVec3> {
+    point_text(s, || last)
 }
 
 fn classify(it: &Interp, v: &Value, last: DVec3) -> Result<Option<Input>, Exn> {
@@ -171,7 +145,7 @@ fn classify(it: &Interp, v: &Value, last: DVec3) -> Result<Option<Input>, Exn> {
         Value::Str(s) => {
             if let Some(p) = parse_point_str(s, last) {
                 Input::Point(p)
-            } else if let Some(x) = number_of(s) {
+            } else if let Some(x) = parse_real(s) {
                 Input::Number(x)
             } else {
                 Input::Word(s.to_string())

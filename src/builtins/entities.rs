@@ -13,10 +13,12 @@ use std::fmt;
 
 use crate::builtin;
 use crate::lang::builtin::{bad_arg, Builtin};
-use crate::lang::error::{err, Exn, LResult};
+use crate::lang::error::{Exn, LResult};
 use crate::lang::value::Object;
 use crate::lang::{Interp, Value};
 use crate::output::{Drawing, EntityKind};
+
+use crate::builtins::drawing::drawing;
 
 #[path = "entities/dxf_list.rs"]
 pub mod dxf_list;
@@ -148,10 +150,6 @@ pub fn pickset_arg<'a>(it: &Interp, v: &'a Value) -> Result<&'a PickSet, Exn> {
         .ok_or_else(|| bad_arg(it, "lselsetp", v))
 }
 
-pub fn drawing(it: &mut Interp) -> &mut Drawing {
-    it.ext::<Drawing>()
-}
-
 /// The number of vertices of a POLYLINE entity (None for other kinds).
 fn vertex_count(d: &Drawing, handle: u64) -> Option<u32> {
     match &d.get(handle)?.kind {
@@ -224,9 +222,4 @@ fn handent(it: &mut Interp, a: &[Value]) -> LResult {
     } else {
         Ok(Value::Nil)
     }
-}
-
-/// An error from the drawing as a Lisp error.
-pub fn draw_err(e: impl fmt::Display) -> Exn {
-    err(e.to_string())
 }

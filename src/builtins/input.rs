@@ -288,7 +288,7 @@ fn check_sign(func: &str, ig: &Initget, text: &str, x: f64) -> Result<(), Exn> {
     Ok(())
 }
 
-fn parse_real(t: &str) -> Option<f64> {
+pub(crate) fn parse_real(t: &str) -> Option<f64> {
     let t = t.trim();
     let ok = !t.is_empty()
         && t.chars()
@@ -303,16 +303,19 @@ fn parse_point(it: &mut Interp, t: &str, base: Option<DVec3>) -> Option<DVec3> {
     // "#x,y" (absolute under dynamic input) and "*x,y" (world coordinates) are absolute
     // points; headless, the UCS is the world, so both prefixes just mark absolute input.
     let t = t.trim();
-    let t = t.strip_prefix(['#', '*']).unwrap_or(t).trim_start();
+    let t = t.strip_prefix(['#', '*']).unwrap_or(t);
+    point_text(t, || base.unwrap_or_else(|| last_point(it)))
+}
+
+/// The point syntax `get*` and `command` share: "x,y[,z]", "@dx,dy[,dz]", "d<a", "@d<a"
+/// (a in degrees), "@" alone; `last` (asked only for relative input) is what "@" is from.
+pub(crate) fn point_text(t: &str, last: impl FnOnce() -> DVec3) -> Option<DVec3> {
+    let t = t.trim();
     let (rel, body) = match t.strip_prefix('@') {
         Some(b) => (true, b.trim()),
         None => (false, t),
     };
-    let origin = if rel {
-        base.unwrap_or_else(|| last_point(it))
-    } else {
-        DVec3::ZERO
-    };
+    let origin = if rel { last() } else { DVec3::ZERO };
     if rel && body.is_empty() {
         return Some(origin);
     }

@@ -7,7 +7,8 @@
 use glam::{DVec2, DVec3};
 
 use super::dxf_list::{entity_list, to_wcs, Groups};
-use super::{drawing, ename_arg, EntityState};
+use super::{ename_arg, EntityState};
+use crate::builtins::drawing::drawing;
 use crate::builtins::system::SysVars;
 use crate::geom::bspline::BSpline;
 use crate::geom::quadspline::QuadSpline;

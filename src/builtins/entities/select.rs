@@ -8,7 +8,8 @@
 //! the tests. A colour filter (62 . 256) matches BYLAYER entities, which have no 62 group.
 
 use super::dxf_list::{entity_list, point_of, Groups};
-use super::{drawing, ename_arg, ename_value, pickset_arg, pickset_value, Ename, EntityState};
+use super::{ename_arg, ename_value, pickset_arg, pickset_value, Ename, EntityState};
+use crate::builtins::drawing::drawing;
 use crate::builtins::text::wcmatch::WcPattern;
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::{Interp, Value};

@@ -3,7 +3,8 @@
 //! styles text uses), and `entmake` of LAYER records.
 
 use super::dxf_list::{int, real, text, Groups};
-use super::{drawing, EntityState};
+use super::EntityState;
+use crate::builtins::drawing::drawing;
 use crate::lang::error::{Exn, LResult};
 use crate::lang::{Interp, Value};
 use crate::output::{Drawing, EntityKind, Layer};
