@@ -9,7 +9,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::drawing::{Drawing, Entity, EntityKind};
+use super::drawing::{is_flat, Drawing, Entity, EntityKind};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
 use crate::geom::frame::arbitrary_axis;
 
@@ -611,7 +611,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             closed,
         } => {
             let z = points[0].z;
-            let flat = points.iter().all(|p| p.z == z);
+            let flat = is_flat(points);
             entity_head(w, "POLYLINE", e.handle, e);
             let owner = e.handle;
             if flat {
@@ -745,7 +745,7 @@ fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
 /// The unit normal of the plane holding every point (the largest cross product of spans from
 /// the first point, then a flatness check), or `None` when they are not coplanar or are collinear.
 pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
-    if pts.iter().all(|p| p.z == pts[0].z) {
+    if is_flat(pts) {
         return Some(DVec3::Z);
     }
     let o = pts[0];

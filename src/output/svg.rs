@@ -17,7 +17,7 @@ use svg::node::Blob;
 use svg::Document;
 
 use super::aci::aci_to_hex;
-use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, Drawing, Entity, EntityKind};
+use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
 use super::OutputOptions;
 use crate::geom::frame::{arbitrary_axis, Ocs};
 
@@ -270,7 +270,7 @@ fn entity_path(e: &Entity, v: &View) -> Option<String> {
             closed,
         } => {
             let z = points[0].z;
-            if points.iter().all(|p| p.z == z) {
+            if is_flat(points) {
                 let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
                 ocs_polyline(&mut d, v, &flat, bulges, *closed, z, DVec3::Z);
             } else {
