@@ -545,14 +545,8 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             radius,
             normal,
         } => {
-            let (n, ocs) = unit_normal(*normal);
             entity_head(w, "CIRCLE", e.handle, e);
-            w.str(100, "AcDbCircle");
-            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
-            w.float(40, *radius);
-            if ocs {
-                w.point(210, n);
-            }
+            circle_groups(w, *center, *radius, *normal);
         }
         EntityKind::Arc {
             center,
@@ -561,14 +555,8 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             end,
             normal,
         } => {
-            let (n, ocs) = unit_normal(*normal);
             entity_head(w, "ARC", e.handle, e);
-            w.str(100, "AcDbCircle");
-            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
-            w.float(40, *radius);
-            if ocs {
-                w.point(210, n);
-            }
+            circle_groups(w, *center, *radius, *normal);
             w.str(100, "AcDbArc");
             w.float(50, degrees(*start));
             w.float(51, degrees(*end));
@@ -729,6 +717,18 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
                 write_face(w, h, e, &c);
             }
         }
+    }
+}
+
+/// The AcDbCircle subclass an ARC shares with a CIRCLE: the centre in the OCS of a normal off
+/// +Z, which is then written as the extrusion.
+fn circle_groups(w: &mut DxfWriter, center: DVec3, radius: f64, normal: DVec3) {
+    let (n, ocs) = unit_normal(normal);
+    w.str(100, "AcDbCircle");
+    w.point(10, if ocs { to_ocs(center, n) } else { center });
+    w.float(40, radius);
+    if ocs {
+        w.point(210, n);
     }
 }
 
