@@ -1,19 +1,14 @@
 //! `lispcad check`: lint without running. Global leaks and undefined calls are warnings
 //! (exit 0), wrong builtin argument counts and parse errors are errors (exit 1).
 
-use std::process::{Command, Stdio};
+mod cli_support;
+use cli_support::lispcad_in;
 
 /// Checks `script`; (exit code, stderr).
 fn check(script: &str) -> (i32, String) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("c.lsp"), script).unwrap();
-    let o = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .args(["check", "c.lsp"])
-        .current_dir(dir.path())
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::null())
-        .output()
-        .unwrap();
+    let o = lispcad_in(dir.path(), &["check", "c.lsp"]);
     (
         o.status.code().expect("exit code"),
         String::from_utf8_lossy(&o.stderr).into_owned(),
@@ -147,13 +142,7 @@ fn functions_from_loaded_files_and_files_checked_together_are_defined() {
     )
     .unwrap();
     let run = |files: &[&str]| {
-        let o = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-            .arg("check")
-            .args(files)
-            .current_dir(p)
-            .env("NO_COLOR", "1")
-            .output()
-            .unwrap();
+        let o = lispcad_in(p, &[&["check"], files].concat());
         (
             o.status.code().unwrap(),
             String::from_utf8_lossy(&o.stderr).into_owned(),

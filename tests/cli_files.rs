@@ -3,16 +3,12 @@
 //! console read-line/read-char from --answers, and the refused shell escape.
 
 use std::path::Path;
-use std::process::{Command, Stdio};
+
+mod cli_support;
+use cli_support::lispcad_in;
 
 fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let o = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::null())
-        .output()
-        .unwrap();
+    let o = lispcad_in(dir, args);
     (
         o.status.code().expect("exit code"),
         String::from_utf8_lossy(&o.stdout).into_owned(),

@@ -2,10 +2,10 @@
 //! editing. Multi-line entries complete only when balanced, errors do not end the session.
 
 use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 mod cli_support;
-use cli_support::repl_output;
+use cli_support::{repl_output, spawn_piped};
 
 /// Feeds `input` to `lispcad repl [args]`; (exit code, stdout, stderr).
 fn repl_in(dir: &std::path::Path, args: &[&str], input: &str) -> (i32, String, String) {
@@ -95,14 +95,7 @@ fn an_unfinished_entry_at_end_of_input_is_reported() {
 #[test]
 fn no_subcommand_starts_the_repl() {
     let dir = tempfile::tempdir().unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .current_dir(dir.path())
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn_piped(dir.path(), &[]);
     child.stdin.take().unwrap().write_all(b"(* 6 7)\n").unwrap();
     let o = child.wait_with_output().unwrap();
     assert_eq!(o.status.code(), Some(0));
@@ -129,15 +122,7 @@ fn answers_feed_get_functions_in_the_repl() {
 fn interrupt_stops_a_running_evaluation_not_the_session() {
     use std::io::{BufRead, BufReader};
     let dir = tempfile::tempdir().unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .arg("repl")
-        .current_dir(dir.path())
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = spawn_piped(dir.path(), &["repl"]);
     let mut stdin = child.stdin.take().unwrap();
     let mut out = BufReader::new(child.stdout.take().unwrap());
     // A first answer proves the REPL (and its interrupt handler) is up.

@@ -12,7 +12,7 @@
 use glam::{DVec2, DVec3};
 
 use super::biarc::{fit_bspline, fit_span, BulgeChain, Projected};
-use super::drawing::{bulge_arc, ccw_sweep, Drawing, Entity, EntityKind};
+use super::drawing::{bulge_arc, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
 use super::dxf::{degrees, DxfWriter};
 use crate::geom::frame::Ocs;
 
@@ -199,8 +199,7 @@ fn to_prims(e: &Entity, tol: f64) -> Vec<Prim> {
             bulges,
             closed,
         } => {
-            let z = points[0].z;
-            let flat = points.iter().all(|p| p.z == z);
+            let flat = is_flat(points);
             let pts: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
             let bul = if flat { bulges.clone() } else { vec![] };
             let c = ocs_polyline(&pts, &bul, *closed, 0.0, DVec3::Z, tol);

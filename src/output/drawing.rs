@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-pub use super::entity::{bulge_arc, bulge_segments, ccw_sweep, Entity, EntityKind};
+pub use super::entity::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Entity, EntityKind};
 
 /// A layer-table record.
 #[derive(Clone, Debug, PartialEq)]

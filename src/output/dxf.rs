@@ -9,7 +9,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::drawing::{Drawing, Entity, EntityKind};
+use super::drawing::{is_flat, Drawing, Entity, EntityKind};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
 use crate::geom::frame::arbitrary_axis;
 
@@ -545,14 +545,8 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             radius,
             normal,
         } => {
-            let (n, ocs) = unit_normal(*normal);
             entity_head(w, "CIRCLE", e.handle, e);
-            w.str(100, "AcDbCircle");
-            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
-            w.float(40, *radius);
-            if ocs {
-                w.point(210, n);
-            }
+            circle_groups(w, *center, *radius, *normal);
         }
         EntityKind::Arc {
             center,
@@ -561,14 +555,8 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             end,
             normal,
         } => {
-            let (n, ocs) = unit_normal(*normal);
             entity_head(w, "ARC", e.handle, e);
-            w.str(100, "AcDbCircle");
-            w.point(10, if ocs { to_ocs(*center, n) } else { *center });
-            w.float(40, *radius);
-            if ocs {
-                w.point(210, n);
-            }
+            circle_groups(w, *center, *radius, *normal);
             w.str(100, "AcDbArc");
             w.float(50, degrees(*start));
             w.float(51, degrees(*end));
@@ -611,7 +599,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             closed,
         } => {
             let z = points[0].z;
-            let flat = points.iter().all(|p| p.z == z);
+            let flat = is_flat(points);
             entity_head(w, "POLYLINE", e.handle, e);
             let owner = e.handle;
             if flat {
@@ -732,6 +720,18 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
     }
 }
 
+/// The AcDbCircle subclass an ARC shares with a CIRCLE: the centre in the OCS of a normal off
+/// +Z, which is then written as the extrusion.
+fn circle_groups(w: &mut DxfWriter, center: DVec3, radius: f64, normal: DVec3) {
+    let (n, ocs) = unit_normal(normal);
+    w.str(100, "AcDbCircle");
+    w.point(10, if ocs { to_ocs(center, n) } else { center });
+    w.float(40, radius);
+    if ocs {
+        w.point(210, n);
+    }
+}
+
 fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
     entity_head(w, "3DFACE", h, e);
     w.str(100, "AcDbFace");
@@ -745,7 +745,7 @@ fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
 /// The unit normal of the plane holding every point (the largest cross product of spans from
 /// the first point, then a flatness check), or `None` when they are not coplanar or are collinear.
 pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
-    if pts.iter().all(|p| p.z == pts[0].z) {
+    if is_flat(pts) {
         return Some(DVec3::Z);
     }
     let o = pts[0];

@@ -381,6 +381,13 @@ pub fn ccw_sweep(start: f64, end: f64) -> f64 {
     }
 }
 
+/// Whether every point has the first one's Z (they lie in one plane parallel to XY). A flat
+/// POLYLINE is 2D and its bulges apply; any other is 3D, straight segments only. Exact
+/// equality, so every writer makes the same choice for the same points.
+pub fn is_flat(points: &[DVec3]) -> bool {
+    points.iter().all(|p| p.z == points[0].z)
+}
+
 /// The segments (start, end, bulge) of a 2D polyline with optional bulges.
 pub fn bulge_segments<'a>(
     points: &'a [DVec2],

@@ -17,7 +17,7 @@ use svg::node::Blob;
 use svg::Document;
 
 use super::aci::aci_to_hex;
-use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, Drawing, Entity, EntityKind};
+use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
 use super::OutputOptions;
 use crate::geom::frame::{arbitrary_axis, Ocs};
 
@@ -212,7 +212,7 @@ fn ocs_polyline(
     }
 }
 
-fn entity_path(e: &Entity, v: &View, stroke: f64) -> Option<String> {
+fn entity_path(e: &Entity, v: &View) -> Option<String> {
     let mut d = String::new();
     match &e.kind {
         EntityKind::Line { p0, p1 } => {
@@ -254,7 +254,6 @@ fn entity_path(e: &Entity, v: &View, stroke: f64) -> Option<String> {
         ),
         EntityKind::Point { p } => {
             // A zero-length subpath with round caps renders as a dot of the stroke width.
-            let _ = stroke;
             move_to(&mut d, v.project(*p));
             d.push_str(" h0");
         }
@@ -271,7 +270,7 @@ fn entity_path(e: &Entity, v: &View, stroke: f64) -> Option<String> {
             closed,
         } => {
             let z = points[0].z;
-            if points.iter().all(|p| p.z == z) {
+            if is_flat(points) {
                 let flat: Vec<DVec2> = points.iter().map(|p| p.truncate()).collect();
                 ocs_polyline(&mut d, v, &flat, bulges, *closed, z, DVec3::Z);
             } else {
@@ -480,7 +479,7 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
                 let _ = write!(body, "{t}");
                 continue;
             }
-            if let Some(data) = entity_path(e, &v, opts.stroke_width_mm) {
+            if let Some(data) = entity_path(e, &v) {
                 if !body.is_empty() {
                     body.push('\n');
                 }

@@ -6,7 +6,7 @@
 
 use std::io::Write;
 use std::path::Path;
-use std::process::{Command, Output, Stdio};
+use std::process::{Child, Command, Output, Stdio};
 
 /// Runs `lispcad ARGS` in `dir` with no colour, 100 columns and no stdin.
 pub fn lispcad_in(dir: &Path, args: &[&str]) -> Output {
@@ -20,11 +20,10 @@ pub fn lispcad_in(dir: &Path, args: &[&str]) -> Output {
         .expect("run lispcad")
 }
 
-/// Feeds `input` through a pipe to `lispcad repl ARGS` in `dir` (no colour, history in
-/// `dir/history`) and waits for it to end.
-pub fn repl_output(dir: &Path, args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .arg("repl")
+/// Starts `lispcad ARGS` in `dir` with no colour, history in `dir/history` (never the user's)
+/// and all three streams piped.
+pub fn spawn_piped(dir: &Path, args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_lispcad"))
         .args(args)
         .current_dir(dir)
         .env("NO_COLOR", "1")
@@ -33,7 +32,13 @@ pub fn repl_output(dir: &Path, args: &[&str], input: &str) -> Output {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .unwrap();
+        .expect("start lispcad")
+}
+
+/// Feeds `input` through a pipe to `lispcad repl ARGS` in `dir` (see `spawn_piped`) and waits
+/// for it to end.
+pub fn repl_output(dir: &Path, args: &[&str], input: &str) -> Output {
+    let mut child = spawn_piped(dir, &[&["repl"], args].concat());
     child
         .stdin
         .take()
