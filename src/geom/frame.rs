@@ -45,6 +45,11 @@ impl Ocs {
         self.x * p.x + self.y * p.y + self.n * elevation
     }
 
+    /// The OCS coordinates of the WCS point `p`: (x, y, elevation).
+    pub fn wcs_to_ocs(&self, p: DVec3) -> DVec3 {
+        DVec3::new(p.dot(self.x), p.dot(self.y), p.dot(self.n))
+    }
+
     /// The point at OCS angle `t` on the circle (`center`, `radius`) in this plane.
     pub fn on_circle(&self, center: DVec3, radius: f64, t: f64) -> DVec3 {
         center + (self.x * t.cos() + self.y * t.sin()) * radius

@@ -11,7 +11,7 @@ use glam::{DVec2, DVec3};
 
 use super::drawing::{is_flat, Drawing, Entity, EntityKind};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
-use crate::geom::frame::arbitrary_axis;
+use crate::geom::frame::Ocs;
 
 // Fixed structural handles.
 const H_LAYER_TABLE: u64 = 0x1;
@@ -516,12 +516,6 @@ fn unit_normal(n: DVec3) -> (DVec3, bool) {
     (n, n != DVec3::Z)
 }
 
-/// WCS point to the OCS of normal `n`.
-pub fn to_ocs(p: DVec3, n: DVec3) -> DVec3 {
-    let (ax, ay) = arbitrary_axis(n);
-    DVec3::new(p.dot(ax), p.dot(ay), p.dot(n.normalize()))
-}
-
 /// Angle in degrees in [0, 360).
 pub fn degrees(a: f64) -> f64 {
     let d = a.to_degrees().rem_euclid(360.0);
@@ -725,7 +719,14 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
 fn circle_groups(w: &mut DxfWriter, center: DVec3, radius: f64, normal: DVec3) {
     let (n, ocs) = unit_normal(normal);
     w.str(100, "AcDbCircle");
-    w.point(10, if ocs { to_ocs(center, n) } else { center });
+    w.point(
+        10,
+        if ocs {
+            Ocs::new(n).wcs_to_ocs(center)
+        } else {
+            center
+        },
+    );
     w.float(40, radius);
     if ocs {
         w.point(210, n);
@@ -775,6 +776,8 @@ pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::frame::arbitrary_axis;
+
     #[test]
     fn plane_normal_of_tilted_and_skew_points() {
         let n = DVec3::new(1.0, 2.0, 2.0) / 3.0;

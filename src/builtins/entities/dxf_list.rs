@@ -4,7 +4,7 @@
 use glam::{DVec2, DVec3};
 
 use super::{ename_value, name_value, Ename};
-use crate::geom::frame::arbitrary_axis;
+use crate::geom::frame::Ocs;
 use crate::lang::error::{err, Exn};
 use crate::lang::{Interp, Value};
 use crate::output::{Drawing, Entity, EntityKind};
@@ -40,18 +40,6 @@ pub fn pt2(code: i32, p: DVec2) -> Value {
     pair(code, Value::list([Value::Real(p.x), Value::Real(p.y)]))
 }
 
-/// WCS → OCS of `normal`.
-pub fn to_ocs(p: DVec3, normal: DVec3) -> DVec3 {
-    let (ax, ay) = arbitrary_axis(normal);
-    DVec3::new(p.dot(ax), p.dot(ay), p.dot(normal.normalize()))
-}
-
-/// OCS of `normal` → WCS.
-pub fn to_wcs(p: DVec3, normal: DVec3) -> DVec3 {
-    let (ax, ay) = arbitrary_axis(normal);
-    ax * p.x + ay * p.y + normal.normalize() * p.z
-}
-
 /// Whether a POLYLINE's points leave one plane of constant Z (written as a 3D polyline).
 pub fn is_3d(points: &[DVec3]) -> bool {
     points.first().is_some_and(|p0| {
@@ -77,7 +65,7 @@ fn head(out: &mut Vec<Value>, name: Value, type_name: &str, owner: Value, handle
 /// DXF makes an arc a subclass of a circle, so both lists start with the same group.
 fn circle_part(out: &mut Vec<Value>, center: DVec3, radius: f64, normal: DVec3) {
     out.push(text(100, "AcDbCircle"));
-    out.push(pt3(10, to_ocs(center, normal)));
+    out.push(pt3(10, Ocs::new(normal).wcs_to_ocs(center)));
     out.push(real(40, radius));
     out.push(pt3(210, normal.normalize()));
 }

@@ -6,11 +6,12 @@
 
 use glam::{DVec2, DVec3};
 
-use super::dxf_list::{entity_list, to_wcs, Groups};
+use super::dxf_list::{entity_list, Groups};
 use super::{ename_arg, EntityState};
 use crate::builtins::drawing::drawing;
 use crate::builtins::system::SysVars;
 use crate::geom::bspline::BSpline;
+use crate::geom::frame::Ocs;
 use crate::geom::quadspline::QuadSpline;
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::{Interp, Value};
@@ -120,7 +121,7 @@ pub fn kind_of(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<EntityKin
                 return Ok(None);
             };
             EntityKind::Circle {
-                center: to_wcs(c, normal),
+                center: Ocs::new(normal).to_wcs(c.truncate(), c.z),
                 radius: r,
                 normal,
             }
@@ -136,7 +137,7 @@ pub fn kind_of(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<EntityKin
             };
             let tau = std::f64::consts::TAU;
             EntityKind::Arc {
-                center: to_wcs(c, normal),
+                center: Ocs::new(normal).to_wcs(c.truncate(), c.z),
                 radius: r,
                 start: a0.rem_euclid(tau),
                 end: a1.rem_euclid(tau),
@@ -361,7 +362,7 @@ fn vertex(it: &mut Interp, g: &Groups) -> Result<bool, Exn> {
     let p = if pl.three_d {
         p
     } else {
-        to_wcs(DVec3::new(p.x, p.y, pl.elevation), pl.normal)
+        Ocs::new(pl.normal).to_wcs(p.truncate(), pl.elevation)
     };
     pl.points.push(p);
     pl.bulges.push(bulge);
