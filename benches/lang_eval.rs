@@ -6,7 +6,6 @@
 
 use criterion::Criterion;
 use lispcad::lang::eval::with_eval_stack;
-use lispcad::lang::Interp;
 
 const DEFS: &str = r#"
 (defun fib (n) (if (< n 2) n (+ (fib (- n 1)) (fib (- n 2)))))
@@ -25,7 +24,7 @@ const DEFS: &str = r#"
 "#;
 
 fn bench_eval(c: &mut Criterion) {
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     it.out = Box::new(std::io::sink());
     it.eval_source("defs", DEFS).expect("definitions load");
     let mut g = c.benchmark_group("lang_eval");

@@ -8,7 +8,6 @@ use std::path::PathBuf;
 
 use lispcad::builtins::io::FsPolicy;
 use lispcad::lang::eval::with_eval_stack;
-use lispcad::lang::Interp;
 
 /// Steps per input: enough for real work, small enough for thousands of runs a second.
 pub const MAX_STEPS: u64 = 20_000;
@@ -16,7 +15,7 @@ pub const MAX_STEPS: u64 = 20_000;
 pub fn run(data: &[u8]) {
     let text = String::from_utf8_lossy(data).into_owned();
     with_eval_stack(move || {
-        let mut it = Interp::new();
+        let mut it = lispcad::builtins::new_interp();
         it.out = Box::new(std::io::sink());
         it.set_max_steps(Some(MAX_STEPS));
         // A root that does not exist: every file write is refused.

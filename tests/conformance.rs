@@ -10,8 +10,6 @@ use std::io::Write;
 use std::path::Path;
 use std::rc::Rc;
 
-use lispcad::lang::Interp;
-
 #[derive(Clone, Default)]
 struct Capture(Rc<RefCell<Vec<u8>>>);
 
@@ -27,7 +25,7 @@ impl Write for Capture {
 
 fn run_file(path: &Path) -> (usize, Vec<String>) {
     let text = std::fs::read_to_string(path).unwrap();
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     let cap = Capture::default();
     it.out = Box::new(cap.clone());
     let mut failures = Vec::new();

@@ -12,7 +12,7 @@ use lispcad::geom::curve::Curve;
 use lispcad::geom::intersect::intersect;
 use lispcad::geom::temple::{bend_point, TempleParams};
 use lispcad::lang::eval::with_eval_stack;
-use lispcad::lang::{Interp, Value};
+use lispcad::lang::Value;
 
 const SCRIPT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/temple.lsp");
 
@@ -30,7 +30,7 @@ fn curve_of(v: &Value) -> Curve {
 /// Runs the script with the given globals; returns what it built.
 fn run(l1: f64, l2: f64, r: f64, bend_deg: f64) -> Run {
     with_eval_stack(move || {
-        let mut it = Interp::new();
+        let mut it = lispcad::builtins::new_interp();
         it.out = Box::new(std::io::sink());
         for (k, v) in [("L1", l1), ("L2", l2), ("R", r), ("BENDANG", bend_deg)] {
             it.set_global(k, Value::Real(v));

@@ -2,12 +2,12 @@
 //! NaN, and the formatting functions invert their parsers.
 
 use lispcad::builtins::text::angtos::{angtos, AngleSettings};
-use lispcad::builtins::text::escape::{escape_for_prin1, unescape};
 use lispcad::builtins::text::parse::{angtof, distof};
-use lispcad::builtins::text::real::{format_g, format_real};
 use lispcad::builtins::text::rtos::rtos;
 use lispcad::builtins::text::vlstring::*;
 use lispcad::builtins::text::wcmatch::wcmatch;
+use lispcad::lang::escape::{escape_for_prin1, unescape};
+use lispcad::lang::real::{format_g, format_real};
 use proptest::prelude::*;
 
 proptest! {

@@ -96,7 +96,7 @@ pub fn check(files: &[PathBuf]) -> i32 {
     let mut unreadable = false;
     // One interpreter for all files so their symbols are shared: functions defined in one
     // file checked together with another, or loaded by it, are not "undefined" there.
-    let mut it = Interp::new();
+    let mut it = crate::builtins::new_interp();
     let mut sources = Vec::new();
     for file in files {
         match read_and_parse(&mut it, file) {

@@ -326,7 +326,7 @@ mod tests {
 
     #[test]
     fn completer_offers_builtins_and_user_symbols() {
-        let it = Interp::new();
+        let it = crate::builtins::new_interp();
         let mut names = completion_names(&it);
         names.push("my-func".into());
         let h = ReplHelper {

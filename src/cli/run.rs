@@ -25,7 +25,7 @@ pub struct RunArgs {
 /// An interpreter configured from the common options; a usage error message when the answers
 /// file cannot be read.
 pub fn configured_interp(common: &Common) -> Result<Interp, String> {
-    let mut it = Interp::new();
+    let mut it = crate::builtins::new_interp();
     it.set_max_steps(common.max_steps);
     it.ext::<FsPolicy>().allow_all = common.allow_fs;
     if let Some(path) = &common.answers {

@@ -36,10 +36,6 @@ enum Un {
     Cos,
 }
 
-fn builtin(name: &str) -> &'static Builtin {
-    crate::builtins::find(name).expect("fast-path builtin is registered")
-}
-
 struct Known {
     bins: Vec<(&'static str, Bin, &'static Builtin)>,
     uns: Vec<(&'static str, Un, &'static Builtin)>,
@@ -48,9 +44,16 @@ struct Known {
     cdr: &'static Builtin,
 }
 
-fn known() -> &'static Known {
-    static K: OnceLock<Known> = OnceLock::new();
-    K.get_or_init(|| {
+/// The library's descriptors of the inlined functions, once the host has installed the
+/// library; before that (a bare interpreter) every call takes the ordinary path.
+static KNOWN: OnceLock<Option<Known>> = OnceLock::new();
+
+/// Tells the compiler which library functions it inlines: `find` gives the descriptor the
+/// library registers for each name (`+`, `-`, ... `cons`, `car`, `cdr`). Called by the host as
+/// it installs the library; the descriptors are static, so the first call settles it for the
+/// process. A name `find` does not know disables the fast path rather than failing.
+pub fn register_inlined(find: impl Fn(&str) -> Option<&'static Builtin>) {
+    KNOWN.get_or_init(|| {
         let bins = [
             ("+", Bin::Add),
             ("-", Bin::Sub),
@@ -70,14 +73,20 @@ fn known() -> &'static Known {
             ("sin", Un::Sin),
             ("cos", Un::Cos),
         ];
-        Known {
-            bins: bins.iter().map(|(n, b)| (*n, *b, builtin(n))).collect(),
-            uns: uns.iter().map(|(n, u)| (*n, *u, builtin(n))).collect(),
-            cons: builtin("cons"),
-            car: builtin("car"),
-            cdr: builtin("cdr"),
-        }
-    })
+        Some(Known {
+            bins: bins
+                .iter()
+                .map(|(n, b)| Some((*n, *b, find(n)?)))
+                .collect::<Option<_>>()?,
+            uns: uns
+                .iter()
+                .map(|(n, u)| Some((*n, *u, find(n)?)))
+                .collect::<Option<_>>()?,
+            cons: find("cons")?,
+            car: find("car")?,
+            cdr: find("cdr")?,
+        })
+    });
 }
 
 /// Shared by the integer and real arms. The plain operators (not `partial_cmp`) keep the IEEE
@@ -302,7 +311,9 @@ fn carcdr_code<X: Opnd>(
 /// Inline code for `(head args...)` when head names a fast-path builtin and the arity fits;
 /// otherwise the ordinary call.
 pub fn compile(head: Sym, name: &str, mut args: Vec<Operand>, span: Option<Span>) -> Code {
-    let k = known();
+    let Some(k) = KNOWN.get().and_then(Option::as_ref) else {
+        return call_symbol(head, args, span);
+    };
     let lname = name.to_ascii_lowercase();
     if args.len() == 2 {
         if let Some((_, op, b)) = k.bins.iter().find(|(n, _, _)| *n == lname) {

@@ -3,15 +3,20 @@
 //! One file per phase, as in Lua's source: `reader` (text → values, with spans), `compile`
 //! (values → closures), `eval` (the interpreter state and driver), `print`, `error`; `value` and
 //! `symbols` hold the data; `builtin` is the descriptor every library function registers.
+//! `real` (printing reals) and `escape` (string-literal escapes) belong to the printer and the
+//! reader. The language installs no library: the host does (`builtins::open_libs`), as Lua's
+//! `luaL_openlibs` does.
 
 pub mod builtin;
 pub mod compile;
 pub mod error;
+pub mod escape;
 pub mod eval;
 pub mod fastpath;
 pub mod lint;
 pub mod print;
 pub mod reader;
+pub mod real;
 pub mod symbols;
 pub mod value;
 

@@ -75,9 +75,9 @@ impl Interp {
     }
 }
 
-pub use crate::builtins::text::format_real;
+pub use super::real::format_real;
 
 /// A string as `prin1` writes it: quoted, with AutoLISP's escapes.
 pub fn escape_into(out: &mut String, s: &str) {
-    out.push_str(&crate::builtins::text::escape_for_prin1(s));
+    out.push_str(&super::escape::escape_for_prin1(s));
 }

@@ -268,7 +268,7 @@ impl Builder<'_> {
             }
             Rule::string => {
                 let raw = p.into_inner().next().map_or("", |c| c.as_str());
-                let text = crate::builtins::text::unescape(raw).map_err(|e| ReadError {
+                let text = super::escape::unescape(raw).map_err(|e| ReadError {
                     message: e.to_string(),
                     start: span.start as usize,
                     end: span.end as usize,

@@ -9,9 +9,6 @@ use thiserror::Error;
 /// variant names the parameter and its limit so the builtin can underline the right argument.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum FmtError {
-    /// A string ended in a lone backslash (the reader normally never passes one).
-    #[error("malformed string: trailing backslash at character {position}")]
-    TrailingBackslash { position: usize },
     /// `substr`'s start position must be at least 1.
     #[error("bad argument value: positive {start} (substr start must be >= 1)")]
     SubstrStart { start: i64 },
@@ -50,7 +47,6 @@ impl FmtError {
     /// `Display` text adds (for conformance tests that compare AutoCAD's exact wording).
     pub fn autolisp_message(&self) -> String {
         match self {
-            FmtError::TrailingBackslash { .. } => "malformed string on input".to_string(),
             FmtError::SubstrStart { start } => format!("bad argument value: positive {start}"),
             FmtError::SubstrLength { length } => {
                 format!("bad argument value: non-negative {length}")
@@ -59,7 +55,10 @@ impl FmtError {
             FmtError::Precision { precision, .. } => format!("bad argument value: {precision}"),
             FmtError::NonFinite { .. } => "bad argument value: non-finite number".to_string(),
             FmtError::TooLarge { value, .. } => {
-                format!("bad argument value: {}", super::real::format_real(*value))
+                format!(
+                    "bad argument value: {}",
+                    crate::lang::real::format_real(*value)
+                )
             }
         }
     }

@@ -4,7 +4,13 @@
 //! `\nnn` (the character whose octal code is nnn). A backslash before any other character is
 //! dropped and the character kept, which is what AutoCAD's reader does with `"\x"`.
 
-use super::FmtError;
+/// A string literal ending in a lone backslash (the reader never produces one, since it would
+/// have escaped the closing quote).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("malformed string: trailing backslash at character {position}")]
+pub struct TrailingBackslash {
+    pub position: usize,
+}
 
 /// Decodes the escapes in the text between a string literal's quotes.
 ///
@@ -13,7 +19,7 @@ use super::FmtError;
 /// An escape of an unknown character yields the character itself (`"\q"` → `q`).
 /// A trailing lone backslash is an error (the reader never produces one, since it would have
 /// escaped the closing quote).
-pub fn unescape(src: &str) -> Result<String, FmtError> {
+pub fn unescape(src: &str) -> Result<String, TrailingBackslash> {
     let mut out = String::with_capacity(src.len());
     let mut chars = src.char_indices().peekable();
     while let Some((position, c)) = chars.next() {
@@ -22,7 +28,7 @@ pub fn unescape(src: &str) -> Result<String, FmtError> {
             continue;
         }
         let Some((_, e)) = chars.next() else {
-            return Err(FmtError::TrailingBackslash { position });
+            return Err(TrailingBackslash { position });
         };
         match e {
             'n' => out.push('\n'),
@@ -119,10 +125,7 @@ mod tests {
 
     #[test]
     fn unescape_trailing_backslash_is_an_error() {
-        assert_eq!(
-            unescape("ab\\"),
-            Err(FmtError::TrailingBackslash { position: 2 })
-        );
+        assert_eq!(unescape("ab\\"), Err(TrailingBackslash { position: 2 }));
     }
 
     #[test]
