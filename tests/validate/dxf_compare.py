@@ -79,13 +79,18 @@ def file_handseed(path):
 
 def compare(orig, copy):
     diffs = []
-    a = ezdxf.readfile(orig)
+    try:
+        a = ezdxf.readfile(orig)
+    except ezdxf.DXFStructureError:
+        # A damaged original (some real files are): ezdxf's own recovery reads it.
+        from ezdxf import recover
+        a, _ = recover.readfile(orig)
     try:
         b = ezdxf.readfile(copy)
     except Exception as ex:  # noqa: BLE001
         return {"orig": orig, "copy": copy, "load_error": str(ex), "diffs": []}
     # ezdxf's audit silently re-links some owners (SEQEND): audit both before comparing.
-    a.audit()
+    orig_audit = a.audit()
     auditor = b.audit()
     fixes = [str(f.message) for f in auditor.fixes]
     errors = [str(f.message) for f in auditor.errors]
@@ -126,7 +131,8 @@ def compare(orig, copy):
             diffs.append(f"{h} {ea.dxftype()} xdata: {xdata(ea)!r} -> {xdata(eb)!r}")
     new = [f"{h} {e.dxftype()}" for h, e in hb.items() if h not in ha]
     return {"orig": orig, "copy": copy, "diffs": diffs, "audit_errors": errors,
-            "audit_fixes": fixes, "objects": len(ha), "extra": new}
+            "audit_fixes": fixes, "orig_audit_errors": len(orig_audit.errors),
+            "orig_audit_fixes": len(orig_audit.fixes), "objects": len(ha), "extra": new}
 
 
 def same_deep(a, b):

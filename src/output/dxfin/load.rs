@@ -58,6 +58,8 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
                 sections.push(section);
             }
             "EOF" => break,
+            // A stray ENDSEC (dxflib writes one after a header that goes on): ezdxf skips it.
+            "ENDSEC" => {}
             other => rs.damaged(pos, format!("expected SECTION or EOF, found {other:?}"))?,
         }
     }
@@ -187,6 +189,10 @@ impl Records<'_> {
             };
             if t.code == 0 {
                 break (t.value.into_owned(), t.pos);
+            }
+            if t.code == 999 {
+                // A comment (LibreCAD starts its files with one); ezdxf drops them too.
+                continue;
             }
             let (code, pos) = (t.code, t.pos);
             self.damaged(
