@@ -24,6 +24,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("save", "(save \"file.svg\"|\"file.dxf\")", "Writes the drawing (format from the extension, DXF profile from DXFPROFILE); returns the file name.", 1, 1, save),
     builtin!("clear-drawing", "(clear-drawing)", "Removes every entity and layer from the drawing; returns nil.", 0, 0, clear_drawing),
     builtin!("dxf-open", "(dxf-open \"file.dxf\")", "Replaces the drawing with a DXF file (ASCII or binary, R12..R2018); saving as DXF writes it back losslessly in its version. Returns the file name.", 1, 1, dxf_open),
+    builtin!("entity-curve", "(entity-curve ename)", "The CURVE of a LINE, ARC, CIRCLE, LWPOLYLINE (with bulges), POLYLINE or SPLINE entity, or nil for other entities.", 1, 1, entity_curve),
     builtin!("dxf-import", "(dxf-import \"file.dxf\")", "Adds the entities and layers of a DXF file to the drawing (new handles); returns a selection set of the added entities, or nil.", 1, 1, dxf_import),
 ];
 
@@ -260,6 +261,58 @@ fn dxf_open(it: &mut Interp, a: &[Value]) -> LResult {
         eprintln!("{note}");
     }
     Ok(a[0].clone())
+}
+
+/// The curve of an entity's geometry (the inverse of `curve_entity`), if it is a curve.
+pub fn entity_to_curve(kind: &EntityKind) -> Option<Curve> {
+    use crate::geom::{arc::Arc, circle::Circle, line::Line, polyline::Polyline};
+    Some(match kind {
+        EntityKind::Line { p0, p1 } => Curve::Line(Line::new(*p0, *p1).ok()?),
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } => Curve::Circle(Circle::new(*center, *radius, *normal).ok()?),
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } => Curve::Arc(Arc::new(*center, *radius, *start, *end, *normal).ok()?),
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } => {
+            let ocs = crate::geom::frame::Ocs::new(*normal);
+            let pts = points.iter().map(|p| ocs.to_wcs(*p, *elevation)).collect();
+            let b = (!bulges.is_empty()).then(|| bulges.clone());
+            Curve::Polyline(Polyline::new(pts, b, *closed, Some(ocs.n)).ok()?)
+        }
+        EntityKind::Polyline {
+            points,
+            bulges,
+            closed,
+        } => {
+            let b = (!bulges.is_empty()).then(|| bulges.clone());
+            Curve::Polyline(Polyline::new(points.clone(), b, *closed, None).ok()?)
+        }
+        EntityKind::Spline { curve, .. } => Curve::BSpline(curve.clone()),
+        // TODO(merge): ELLIPSE → the geometry core's ellipse curve (another branch adds it).
+        _ => return None,
+    })
+}
+
+fn entity_curve(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = crate::builtins::entities::ename_arg(it, &a[0])?;
+    let kind = drawing(it).get(e.handle).map(|x| x.kind.clone());
+    Ok(match kind.as_ref().and_then(entity_to_curve) {
+        Some(c) if e.sub == 0 => crate::builtins::geometry::curve_value(c),
+        _ => Value::Nil,
+    })
 }
 
 fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
