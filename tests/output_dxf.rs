@@ -167,6 +167,8 @@ fn compare(drawn: &Entity, got: &Value) {
             assert!(same_angle_deg(f(&got["rotation"]), deg(*rotation)), "{ctx}");
         }
         EntityKind::Mesh { .. } => unreachable!("meshes are compared face by face"),
+        EntityKind::Ellipse { .. } => assert_eq!(got["type"], "ELLIPSE", "{ctx}"),
+        EntityKind::Unmodelled { .. } => unreachable!("drawings made here model every entity"),
     }
 }
 

@@ -276,7 +276,8 @@ fn reference(e: &EntityKind, view: DVec3) -> Vec<Vec<DVec2>> {
             .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
             .map(|(a, b)| vec![pr(vertices[a]), pr(vertices[b])])
             .collect(),
-        EntityKind::Text { .. } => vec![],
+        EntityKind::Text { .. } | EntityKind::Unmodelled { .. } => vec![],
+        EntityKind::Ellipse { .. } => vec![e.ellipse_points(4000).into_iter().map(pr).collect()],
     }
 }
 

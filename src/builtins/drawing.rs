@@ -23,6 +23,9 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("layer", "(layer name [color])", "Makes name the current layer (created if new; color an ACI number); returns the name.", 1, 2, layer),
     builtin!("save", "(save \"file.svg\"|\"file.dxf\")", "Writes the drawing (format from the extension, DXF profile from DXFPROFILE); returns the file name.", 1, 1, save),
     builtin!("clear-drawing", "(clear-drawing)", "Removes every entity and layer from the drawing; returns nil.", 0, 0, clear_drawing),
+    builtin!("dxf-open", "(dxf-open \"file.dxf\")", "Replaces the drawing with a DXF file (ASCII or binary, R12..R2018); saving as DXF writes it back losslessly in its version. Returns the file name.", 1, 1, dxf_open),
+    builtin!("entity-curve", "(entity-curve ename)", "The CURVE of a LINE, ARC, CIRCLE, LWPOLYLINE (with bulges), POLYLINE or SPLINE entity, or nil for other entities.", 1, 1, entity_curve),
+    builtin!("dxf-import", "(dxf-import \"file.dxf\")", "Adds the entities and layers of a DXF file to the drawing (new handles); returns a selection set of the added entities, or nil.", 1, 1, dxf_import),
 ];
 
 /// The drawing of an interpreter.
@@ -165,10 +168,18 @@ fn layer(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(a[0].clone())
 }
 
+/// Writer options given on the command line (`--dxf-profile`, `--cam-tol`): they win over
+/// the system variables. The host fills it in; the library never reads CLI structs.
+#[derive(Clone, Debug, Default)]
+pub struct OutputOverrides {
+    pub dxf_profile: Option<String>,
+    pub cam_tol: Option<f64>,
+}
+
 /// The writer options from the system variables, overridden by the command line.
 pub fn output_options(
     it: &mut Interp,
-    common: Option<&crate::cli::Common>,
+    common: Option<&OutputOverrides>,
 ) -> Result<OutputOptions, Exn> {
     let vars = it.ext::<SysVars>();
     let mut o = OutputOptions::default();
@@ -215,11 +226,122 @@ fn save(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn clear_drawing(it: &mut Interp, _: &[Value]) -> LResult {
     drawing(it).clear();
-    // A half-made POLYLINE or a command waiting for input belonged to the old drawing.
+    forget_pending(it);
+    Ok(Value::Nil)
+}
+
+/// A half-made POLYLINE or a command waiting for input belonged to the old drawing.
+fn forget_pending(it: &mut Interp) {
     it.ext::<crate::builtins::entities::EntityState>()
         .pending_polyline = None;
     *it.ext::<crate::builtins::command::CommandState>() = Default::default();
-    Ok(Value::Nil)
+}
+
+/// Make the DXF file at `path` the interpreter's drawing (`--open`, `dxf-open`). Returns the
+/// `--recover` note to show when damaged groups were skipped.
+pub fn open_into(it: &mut Interp, path: &Path, recover: bool) -> Result<Option<String>, String> {
+    let d = crate::output::open_drawing(path, recover).map_err(|e| e.to_string())?;
+    let note = crate::output::dxfin::recover_note(path, &d);
+    *drawing(it) = d;
+    forget_pending(it);
+    Ok(note)
+}
+
+fn script_path(it: &Interp, name: &str) -> PathBuf {
+    match &it.base_dir {
+        Some(b) if Path::new(name).is_relative() => b.join(name),
+        _ => PathBuf::from(name),
+    }
+}
+
+fn dxf_open(it: &mut Interp, a: &[Value]) -> LResult {
+    let name = it.string(&a[0])?.to_string();
+    let path = script_path(it, &name);
+    if let Some(note) = open_into(it, &path, false).map_err(err)? {
+        eprintln!("{note}");
+    }
+    Ok(a[0].clone())
+}
+
+/// The curve of an entity's geometry (the inverse of `curve_entity`), if it is a curve.
+pub fn entity_to_curve(kind: &EntityKind) -> Option<Curve> {
+    use crate::geom::{arc::Arc, circle::Circle, line::Line, polyline::Polyline};
+    Some(match kind {
+        EntityKind::Line { p0, p1 } => Curve::Line(Line::new(*p0, *p1).ok()?),
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } => Curve::Circle(Circle::new(*center, *radius, *normal).ok()?),
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } => Curve::Arc(Arc::new(*center, *radius, *start, *end, *normal).ok()?),
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } => {
+            let ocs = crate::geom::frame::Ocs::new(*normal);
+            let pts = points.iter().map(|p| ocs.to_wcs(*p, *elevation)).collect();
+            let b = (!bulges.is_empty()).then(|| bulges.clone());
+            Curve::Polyline(Polyline::new(pts, b, *closed, Some(ocs.n)).ok()?)
+        }
+        EntityKind::Polyline {
+            points,
+            bulges,
+            closed,
+        } => {
+            let b = (!bulges.is_empty()).then(|| bulges.clone());
+            Curve::Polyline(Polyline::new(points.clone(), b, *closed, None).ok()?)
+        }
+        EntityKind::Spline { curve, .. } => Curve::BSpline(curve.clone()),
+        // TODO(merge): ELLIPSE → the geometry core's ellipse curve (another branch adds it).
+        _ => return None,
+    })
+}
+
+fn entity_curve(it: &mut Interp, a: &[Value]) -> LResult {
+    let e = crate::builtins::entities::ename_arg(it, &a[0])?;
+    let kind = drawing(it).get(e.handle).map(|x| x.kind.clone());
+    Ok(match kind.as_ref().and_then(entity_to_curve) {
+        Some(c) if e.sub == 0 => crate::builtins::geometry::curve_value(c),
+        _ => Value::Nil,
+    })
+}
+
+fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
+    let name = it.string(&a[0])?.to_string();
+    let path = script_path(it, &name);
+    let other = crate::output::open_drawing(&path, false).map_err(|e| err(e.to_string()))?;
+    let d = drawing(it);
+    for l in other.layers() {
+        if d.layer(&l.name).is_none() {
+            // A name the model refuses cannot be merged; its entities land on it anyway.
+            let _ = d.set_layer_record(l.clone());
+        }
+    }
+    let mut added = Vec::new();
+    for (e, src) in other.entities_with_sources() {
+        let mut e = e.clone();
+        e.handle = 0;
+        // Modelled entities are re-written from the model in their new drawing; only the
+        // unmodelled ones need their groups.
+        let src = match e.kind {
+            EntityKind::Unmodelled { .. } => src.cloned(),
+            _ => None,
+        };
+        added.push(d.push_loaded(e, src));
+    }
+    if added.is_empty() {
+        return Ok(Value::Nil);
+    }
+    Ok(crate::builtins::entities::pickset_value(it, added))
 }
 
 /// Writes the drawing to each output path after a run (`-o`); nothing is written for a run
@@ -227,12 +349,13 @@ fn clear_drawing(it: &mut Interp, _: &[Value]) -> LResult {
 pub fn write_outputs(
     it: &mut Interp,
     outputs: &[PathBuf],
-    common: &crate::cli::Common,
+    overrides: impl Into<OutputOverrides>,
 ) -> Result<(), String> {
     if outputs.is_empty() {
         return Ok(());
     }
-    let opts = output_options(it, Some(common)).map_err(|e| e.message.clone())?;
+    let overrides = overrides.into();
+    let opts = output_options(it, Some(&overrides)).map_err(|e| e.message.clone())?;
     for o in outputs {
         crate::output::Format::from_path(o).map_err(|e| e.to_string())?;
     }

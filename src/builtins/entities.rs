@@ -28,6 +28,7 @@ pub mod make;
 pub mod select;
 #[path = "entities/tables.rs"]
 pub mod tables;
+pub mod tag_list;
 
 pub static BUILTINS: &[Builtin] = &[
     builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER table record) from a DXF association list; returns the list, or nil when a required group is missing or the data is invalid.", 0, 1, make::entmake),
@@ -154,6 +155,8 @@ pub fn pickset_arg<'a>(it: &Interp, v: &'a Value) -> Result<&'a PickSet, Exn> {
 fn vertex_count(d: &Drawing, handle: u64) -> Option<u32> {
     match &d.get(handle)?.kind {
         EntityKind::Polyline { points, .. } => Some(points.len() as u32),
+        // INSERT's ATTRIBs, a polygon mesh's vertices: the followers read with it.
+        EntityKind::Unmodelled { .. } => tag_list::follower_count(&d.source(handle)?.tags),
         _ => None,
     }
 }

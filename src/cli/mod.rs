@@ -7,6 +7,7 @@ use clap::{Args, Parser, Subcommand};
 
 pub mod batch;
 pub mod check;
+pub mod convert;
 pub mod diag;
 pub mod doc;
 pub mod repl;
@@ -48,6 +49,21 @@ pub struct Common {
     /// Allow file writes anywhere (default: below the script's and the outputs' directories).
     #[arg(long, global = true)]
     pub allow_fs: bool,
+    /// Start from this drawing (DXF, ASCII or binary, R12..R2018) instead of an empty one.
+    #[arg(long, global = true, value_name = "IN.dxf")]
+    pub open: Option<PathBuf>,
+    /// Read damaged DXF files leniently (skip bad groups), saying when it was needed.
+    #[arg(long, global = true)]
+    pub recover: bool,
+}
+
+impl From<&Common> for crate::builtins::drawing::OutputOverrides {
+    fn from(c: &Common) -> Self {
+        crate::builtins::drawing::OutputOverrides {
+            dxf_profile: c.dxf_profile.clone(),
+            cam_tol: c.cam_tol,
+        }
+    }
 }
 
 #[derive(Subcommand, Debug)]
@@ -71,6 +87,8 @@ pub enum Command {
     Watch(watch::WatchArgs),
     /// Parse and lint without running; non-zero exit on errors.
     Check { files: Vec<PathBuf> },
+    /// Open drawings (DXF) and write them as .svg or .dxf.
+    Convert(convert::ConvertArgs),
     /// Print the reference of every builtin.
     Doc,
 }
@@ -97,6 +115,7 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Run(args)) => run::run(&args, &common),
         Some(Command::Eval { expr, set }) => run::eval_expr(&expr, &set, &common),
         Some(Command::Check { files }) => check::check(&files),
+        Some(Command::Convert(args)) => convert::convert(&args, &common),
         Some(Command::Batch(args)) => batch::batch(&args, &common),
         Some(Command::Watch(args)) => watch::watch(&args, &common),
         Some(Command::Doc) => {

@@ -113,6 +113,10 @@ pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
         }
     };
     it.ext::<ReplOptions>().0 = common.clone();
+    if let Err(msg) = super::run::open_start_drawing(&mut it, common) {
+        eprintln!("error: {msg}");
+        return super::EXIT_SCRIPT_ERROR;
+    }
     for f in files {
         if let Err(e) = it.load_file(&f.display().to_string()) {
             diag::print_error(&it, &e);

@@ -57,6 +57,18 @@ pub fn apply_sets(it: &mut Interp, sets: &[String]) -> Result<(), String> {
     Ok(())
 }
 
+/// Starts the interpreter's drawing from `--open IN.dxf`; an error message for a drawing
+/// that cannot be read (exit 1: bad input, not bad usage).
+pub fn open_start_drawing(it: &mut Interp, common: &Common) -> Result<(), String> {
+    if let Some(path) = &common.open {
+        let note = crate::builtins::drawing::open_into(it, path, common.recover)?;
+        if let Some(n) = note {
+            eprintln!("{n}");
+        }
+    }
+    Ok(())
+}
+
 pub fn run(args: &RunArgs, common: &Common) -> i32 {
     let mut it = match configured_interp(common) {
         Ok(it) => it,
@@ -65,6 +77,10 @@ pub fn run(args: &RunArgs, common: &Common) -> i32 {
             return EXIT_USAGE;
         }
     };
+    if let Err(msg) = open_start_drawing(&mut it, common) {
+        eprintln!("error: {msg}");
+        return EXIT_SCRIPT_ERROR;
+    }
     let roots = script_roots(&args.file, &args.outputs);
     it.ext::<FsPolicy>().roots = roots;
     if let Err(msg) = apply_sets(&mut it, &args.set) {

@@ -25,6 +25,8 @@ pub struct WatchArgs {
 /// One run; returns the files the script read (itself and what it loaded).
 fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
     let mut watched = vec![args.file.clone()];
+    // The drawing the script starts from is an input too: a change to it re-runs.
+    watched.extend(common.open.iter().cloned());
     let mut it = match super::run::configured_interp(common) {
         Ok(it) => it,
         Err(m) => {
@@ -32,6 +34,10 @@ fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
             return watched;
         }
     };
+    if let Err(m) = super::run::open_start_drawing(&mut it, common) {
+        eprintln!("error: {m}");
+        return watched;
+    }
     if let Err(m) = super::run::apply_sets(&mut it, &args.set) {
         eprintln!("error: {m}");
         return watched;

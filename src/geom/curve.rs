@@ -662,12 +662,38 @@ pub mod xform {
 }
 
 /// A number as C's `%g` prints it (6 significant digits), without a sign on zero: the printed
-/// form of curves. The formatting itself is the text library's (pure, no language types).
+/// form of curves. Geometry keeps its own formatter: it knows nothing of the language.
 pub fn fmt_g(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }
-    crate::builtins::text::format_g(x, 6)
+    if !x.is_finite() {
+        return if x.is_nan() {
+            "nan"
+        } else if x < 0.0 {
+            "-inf"
+        } else {
+            "inf"
+        }
+        .into();
+    }
+    // The exponent after rounding to 6 digits decides the notation, as in C.
+    let sci = format!("{x:.5e}");
+    let (mantissa, exp) = sci.split_once('e').unwrap_or((&sci, "0"));
+    let exp: i32 = exp.parse().unwrap_or(0);
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s.to_string()
+        }
+    };
+    if (-4..6).contains(&exp) {
+        trim(&format!("{:.*}", (5 - exp) as usize, x))
+    } else {
+        let sign = if exp < 0 { '-' } else { '+' };
+        format!("{}e{sign}{:02}", trim(mantissa), exp.abs())
+    }
 }
 
 fn fmt_pt(p: DVec3) -> String {
@@ -716,6 +742,24 @@ impl fmt::Display for Curve {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn fmt_g_matches_c() {
+        for (x, want) in [
+            (1.0, "1"),
+            (0.5, "0.5"),
+            (1.0 / 3.0, "0.333333"),
+            (123456.0, "123456"),
+            (1234567.0, "1.23457e+06"),
+            (999999.5, "1e+06"),
+            (1e-5, "1e-05"),
+            (0.0001234567, "0.000123457"),
+            (-2.5, "-2.5"),
+            (-0.0, "0"),
+        ] {
+            assert_eq!(fmt_g(x), want, "{x}");
+        }
+    }
+
     use super::*;
 
     #[test]

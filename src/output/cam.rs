@@ -219,9 +219,26 @@ fn to_prims(e: &Entity, tol: f64) -> Vec<Prim> {
             }
             vec![Prim::Open(c)]
         }
+        EntityKind::Ellipse { start, end, .. } => {
+            // Flattened finely (the CAM profile's arcs fit lines and circles only).
+            let pts: Vec<DVec2> = e
+                .kind
+                .ellipse_points(256)
+                .iter()
+                .map(|p| p.truncate())
+                .collect();
+            let n = pts.len();
+            let c = chain_of(pts, vec![0.0; n]);
+            if ccw_sweep(*start, *end) >= std::f64::consts::TAU - 1e-12 {
+                close_chain(c).map(Prim::Closed).into_iter().collect()
+            } else {
+                vec![Prim::Open(c)]
+            }
+        }
         EntityKind::Point { .. }
         | EntityKind::Text { .. }
         | EntityKind::Face3d { .. }
+        | EntityKind::Unmodelled { .. }
         | EntityKind::Mesh { .. } => vec![],
     }
 }

@@ -4,9 +4,13 @@
 //! stay in place as tombstones, because AutoLISP's `entdel` on a deleted entity restores it and
 //! handles must never be reused.
 
+use std::collections::HashMap;
+
 use glam::DVec3;
 
+use super::document::DxfDocument;
 pub use super::entity::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Entity, EntityKind};
+use super::record::TagList;
 
 /// A layer-table record.
 #[derive(Clone, Debug, PartialEq)]
@@ -67,15 +71,31 @@ pub enum DrawingError {
     LayerInUse(String),
 }
 
+/// An entity as it was read from a file: its groups (with its VERTEX/ATTRIB/SEQEND
+/// followers) and the entity as first built from them. The writer puts the groups back
+/// unchanged while the entity still equals `original`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SourceRecord {
+    pub tags: TagList,
+    pub original: Entity,
+}
+
 /// The drawing: layers ("0" always exists) and entities in insertion order.
 #[derive(Clone, Debug)]
 pub struct Drawing {
     layers: Vec<Layer>,
-    /// Sorted by handle (handles only grow), so lookups are binary searches.
+    /// In insertion (file) order. Sorted by handle for drawings made from scratch (handles
+    /// only grow), so lookups are binary searches; an opened file's order may not be, and
+    /// then `by_handle` indexes them.
     entities: Vec<Entity>,
     deleted: Vec<bool>,
+    /// Parallel to `entities`: the groups an entity was read from, if it was.
+    sources: Vec<Option<Box<SourceRecord>>>,
+    by_handle: Option<HashMap<u64, usize>>,
     next_handle: u64,
     current_layer: String,
+    /// The file the drawing was opened from, minus its entities.
+    document: Option<Box<DxfDocument>>,
 }
 
 impl Default for Drawing {
@@ -93,9 +113,100 @@ impl Drawing {
             layers: vec![Layer::new("0")],
             entities: Vec::new(),
             deleted: Vec::new(),
+            sources: Vec::new(),
+            by_handle: None,
             next_handle: FIRST_HANDLE,
             current_layer: "0".to_string(),
+            document: None,
         }
+    }
+
+    /// The file this drawing was opened from (its tables, blocks, objects...), if any.
+    pub fn document(&self) -> Option<&DxfDocument> {
+        self.document.as_deref()
+    }
+
+    pub fn set_document(&mut self, doc: DxfDocument) {
+        self.document = Some(Box::new(doc));
+    }
+
+    /// The groups a live or deleted entity was read from, if it was read from a file.
+    pub fn source(&self, handle: u64) -> Option<&SourceRecord> {
+        self.sources[self.index(handle)?].as_deref()
+    }
+
+    /// Start new handles at `h` (an opened file's `$HANDSEED`), for a drawing with no
+    /// entities yet; never below an existing entity's handle.
+    pub fn set_handle_seed(&mut self, h: u64) {
+        let used = self
+            .entities
+            .iter()
+            .map(|e| e.handle + 1)
+            .max()
+            .unwrap_or(1);
+        self.next_handle = h.max(used);
+    }
+
+    /// Replace the layer table with layers read from a file (their names are not re-checked:
+    /// the file's own are kept as they are). "0" is added if the file lacks it.
+    pub fn set_loaded_layers(&mut self, mut layers: Vec<Layer>) {
+        if !layers.iter().any(|l| l.name == "0") {
+            layers.insert(0, Layer::new("0"));
+        }
+        self.layers = layers;
+    }
+
+    /// Make an existing layer current.
+    pub fn set_current_layer(&mut self, name: &str) -> Result<(), DrawingError> {
+        let l = self
+            .layer(name)
+            .ok_or_else(|| DrawingError::BadLayerName(name.to_string()))?;
+        self.current_layer = l.name.clone();
+        Ok(())
+    }
+
+    /// Append an entity read from a file, keeping its handle when it has a free one (else a
+    /// fresh one), and its layer as written (added to the table if missing). No checks: a
+    /// file's entities are kept even when lispcad could not have made them.
+    pub fn push_loaded(&mut self, mut e: Entity, source: Option<SourceRecord>) -> u64 {
+        if e.handle == 0 || self.index(e.handle).is_some() {
+            e.handle = self.next_handle;
+        }
+        self.next_handle = self.next_handle.max(e.handle + 1);
+        if self.layer(&e.layer).is_none() {
+            self.layers.push(Layer::new(&e.layer));
+        }
+        let h = e.handle;
+        let i = self.entities.len();
+        let sorted = self.entities.last().is_none_or(|l| l.handle < h);
+        if !sorted && self.by_handle.is_none() {
+            self.by_handle = Some(
+                self.entities
+                    .iter()
+                    .enumerate()
+                    .map(|(i, e)| (e.handle, i))
+                    .collect(),
+            );
+        }
+        if let Some(m) = &mut self.by_handle {
+            m.insert(h, i);
+        }
+        self.entities.push(e);
+        self.deleted.push(false);
+        self.sources.push(source.map(Box::new));
+        h
+    }
+
+    /// Live entities with the groups they were read from (`None` for new ones).
+    pub fn entities_with_sources(
+        &self,
+    ) -> impl Iterator<Item = (&Entity, Option<&SourceRecord>)> + '_ {
+        self.entities
+            .iter()
+            .zip(&self.deleted)
+            .zip(&self.sources)
+            .filter(|((_, d), _)| !**d)
+            .map(|((e, _), s)| (e, s.as_deref()))
     }
 
     /// Forget every entity and layer except "0" (restored to its defaults); handles keep
@@ -104,6 +215,9 @@ impl Drawing {
         self.layers = vec![Layer::new("0")];
         self.entities.clear();
         self.deleted.clear();
+        self.sources.clear();
+        self.by_handle = None;
+        self.document = None;
         self.current_layer = "0".to_string();
     }
 
@@ -125,8 +239,12 @@ impl Drawing {
         let h = self.next_handle;
         self.next_handle += 1;
         e.handle = h;
+        if let Some(m) = &mut self.by_handle {
+            m.insert(h, self.entities.len());
+        }
         self.entities.push(e);
         self.deleted.push(false);
+        self.sources.push(None);
         Ok(h)
     }
 
@@ -137,9 +255,13 @@ impl Drawing {
     }
 
     fn index(&self, handle: u64) -> Option<usize> {
-        self.entities
-            .binary_search_by_key(&handle, |e| e.handle)
-            .ok()
+        match &self.by_handle {
+            Some(m) => m.get(&handle).copied(),
+            None => self
+                .entities
+                .binary_search_by_key(&handle, |e| e.handle)
+                .ok(),
+        }
     }
 
     /// The live entity with this handle.
@@ -236,9 +358,10 @@ impl Drawing {
     /// The live entity after `handle` in insertion order (`(entnext e)`); works from a
     /// deleted handle too.
     pub fn next_after(&self, handle: u64) -> Option<u64> {
-        let start = match self.entities.binary_search_by_key(&handle, |e| e.handle) {
-            Ok(i) => i + 1,
-            Err(i) => i,
+        let start = match (&self.by_handle, self.index(handle)) {
+            (_, Some(i)) => i + 1,
+            (Some(_), None) => return None,
+            (None, None) => self.entities.partition_point(|e| e.handle < handle),
         };
         (start..self.entities.len())
             .find(|&i| !self.deleted[i])

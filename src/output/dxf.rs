@@ -86,7 +86,7 @@ pub fn write_cad(d: &Drawing) -> String {
     // must exceed.
     let mut ents = DxfWriter::new();
     for e in d.entities() {
-        write_entity(&mut ents, e, &mut alloc);
+        write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc);
     }
     let handseed = alloc();
 
@@ -499,10 +499,10 @@ fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i
     w.handle(330, rec);
 }
 
-fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, e: &Entity) {
+fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, owner: u64, e: &Entity) {
     w.str(0, kind);
     w.handle(5, handle);
-    w.handle(330, H_MODEL_RECORD);
+    w.handle(330, owner);
     w.str(100, "AcDbEntity");
     w.str(8, &e.layer);
     if let Some(c) = e.color {
@@ -526,10 +526,17 @@ pub fn degrees(a: f64) -> f64 {
     }
 }
 
-fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) {
+/// An entity's groups (R2000 form) owned by the block record `owner`. Unmodelled entities
+/// are skipped: their groups only make sense inside the document they were read from.
+pub(crate) fn write_entity(
+    w: &mut DxfWriter,
+    e: &Entity,
+    owner: u64,
+    alloc: &mut impl FnMut() -> u64,
+) {
     match &e.kind {
         EntityKind::Line { p0, p1 } => {
-            entity_head(w, "LINE", e.handle, e);
+            entity_head(w, "LINE", e.handle, owner, e);
             w.str(100, "AcDbLine");
             w.point(10, *p0);
             w.point(11, *p1);
@@ -539,7 +546,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             radius,
             normal,
         } => {
-            entity_head(w, "CIRCLE", e.handle, e);
+            entity_head(w, "CIRCLE", e.handle, owner, e);
             circle_groups(w, *center, *radius, *normal);
         }
         EntityKind::Arc {
@@ -549,14 +556,14 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             end,
             normal,
         } => {
-            entity_head(w, "ARC", e.handle, e);
+            entity_head(w, "ARC", e.handle, owner, e);
             circle_groups(w, *center, *radius, *normal);
             w.str(100, "AcDbArc");
             w.float(50, degrees(*start));
             w.float(51, degrees(*end));
         }
         EntityKind::Point { p } => {
-            entity_head(w, "POINT", e.handle, e);
+            entity_head(w, "POINT", e.handle, owner, e);
             w.str(100, "AcDbPoint");
             w.point(10, *p);
         }
@@ -568,7 +575,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             normal,
         } => {
             let (n, ocs) = unit_normal(*normal);
-            entity_head(w, "LWPOLYLINE", e.handle, e);
+            entity_head(w, "LWPOLYLINE", e.handle, owner, e);
             w.str(100, "AcDbPolyline");
             w.int(90, points.len() as i64);
             w.int(70, *closed as i64);
@@ -594,7 +601,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
         } => {
             let z = points[0].z;
             let flat = is_flat(points);
-            entity_head(w, "POLYLINE", e.handle, e);
+            entity_head(w, "POLYLINE", e.handle, owner, e);
             let owner = e.handle;
             if flat {
                 w.str(100, "AcDb2dPolyline");
@@ -637,7 +644,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
         EntityKind::Spline {
             curve, fit_points, ..
         } => {
-            entity_head(w, "SPLINE", e.handle, e);
+            entity_head(w, "SPLINE", e.handle, owner, e);
             w.str(100, "AcDbSpline");
             let plane = plane_normal(&curve.ctrl);
             if let Some(n) = plane {
@@ -676,7 +683,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             }
         }
         EntityKind::Face3d { corners } => {
-            write_face(w, e.handle, e, corners);
+            write_face(w, e.handle, owner, e, corners);
         }
         EntityKind::Text {
             insert,
@@ -685,7 +692,7 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
             rotation,
             style,
         } => {
-            entity_head(w, "TEXT", e.handle, e);
+            entity_head(w, "TEXT", e.handle, owner, e);
             w.str(100, "AcDbText");
             w.point(10, *insert);
             w.float(40, *height);
@@ -708,9 +715,27 @@ fn write_entity(w: &mut DxfWriter, e: &Entity, alloc: &mut impl FnMut() -> u64) 
                     vertices[t[2]],
                     vertices[t[2]],
                 ];
-                write_face(w, h, e, &c);
+                write_face(w, h, owner, e, &c);
             }
         }
+        EntityKind::Ellipse {
+            center,
+            major,
+            normal,
+            ratio,
+            start,
+            end,
+        } => {
+            entity_head(w, "ELLIPSE", e.handle, owner, e);
+            w.str(100, "AcDbEllipse");
+            w.point(10, *center);
+            w.point(11, *major);
+            w.point(210, normal.normalize());
+            w.float(40, *ratio);
+            w.float(41, *start);
+            w.float(42, *end);
+        }
+        EntityKind::Unmodelled { .. } => {}
     }
 }
 
@@ -733,8 +758,8 @@ fn circle_groups(w: &mut DxfWriter, center: DVec3, radius: f64, normal: DVec3) {
     }
 }
 
-fn write_face(w: &mut DxfWriter, h: u64, e: &Entity, c: &[DVec3; 4]) {
-    entity_head(w, "3DFACE", h, e);
+fn write_face(w: &mut DxfWriter, h: u64, owner: u64, e: &Entity, c: &[DVec3; 4]) {
+    entity_head(w, "3DFACE", h, owner, e);
     w.str(100, "AcDbFace");
     w.point(10, c[0]);
     w.point(11, c[1]);

@@ -9,6 +9,9 @@ use glam::{DVec2, DVec3};
 /// Group-code/value pair emitter into one string buffer.
 pub struct DxfWriter {
     pub out: String,
+    /// Write strings as they are (only control characters replaced): the caller encodes
+    /// the file in its own code page or UTF-8 afterwards.
+    pub raw_text: bool,
 }
 
 impl Default for DxfWriter {
@@ -44,6 +47,7 @@ impl DxfWriter {
     pub fn new() -> DxfWriter {
         DxfWriter {
             out: String::with_capacity(1 << 16),
+            raw_text: false,
         }
     }
 
@@ -69,7 +73,12 @@ impl DxfWriter {
 
     pub fn str(&mut self, code: u16, value: &str) {
         self.code(code);
-        push_dxf_string(&mut self.out, value);
+        if self.raw_text {
+            self.out
+                .extend(value.chars().map(|c| if c.is_control() { ' ' } else { c }));
+        } else {
+            push_dxf_string(&mut self.out, value);
+        }
         self.out.push('\n');
     }
 

@@ -97,12 +97,27 @@ pub enum EntityKind {
         vertices: Vec<DVec3>,
         triangles: Vec<[usize; 3]>,
     },
+    /// DXF's ELLIPSE: `major` is the WCS vector from the centre to the end of the major axis,
+    /// `ratio` minor/major in (0, 1], `start`/`end` the parameters (radians) of the arc.
+    Ellipse {
+        center: DVec3,
+        major: DVec3,
+        normal: DVec3,
+        ratio: f64,
+        start: f64,
+        end: f64,
+    },
+    /// An entity read from a file that lispcad does not model (INSERT, MTEXT, HATCH,
+    /// DIMENSION, polygon meshes...): its groups live in the drawing's source record.
+    Unmodelled {
+        dxf_type: String,
+    },
 }
 
 impl EntityKind {
     /// The DXF entity type name (`(0 . "LINE")`); a mesh reports "MESH" but is written as
     /// 3DFACEs.
-    pub fn type_name(&self) -> &'static str {
+    pub fn type_name(&self) -> &str {
         match self {
             EntityKind::Line { .. } => "LINE",
             EntityKind::Circle { .. } => "CIRCLE",
@@ -114,6 +129,8 @@ impl EntityKind {
             EntityKind::Face3d { .. } => "3DFACE",
             EntityKind::Text { .. } => "TEXT",
             EntityKind::Mesh { .. } => "MESH",
+            EntityKind::Ellipse { .. } => "ELLIPSE",
+            EntityKind::Unmodelled { dxf_type } => dxf_type,
         }
     }
 
@@ -227,6 +244,25 @@ impl EntityKind {
                 }
                 Ok(())
             }
+            EntityKind::Ellipse {
+                center,
+                major,
+                normal,
+                ratio,
+                start,
+                end,
+            } => {
+                fin("ellipse centre", center.is_finite())?;
+                fin("ellipse parameter", start.is_finite() && end.is_finite())?;
+                if !major.is_finite() || major.length() < 1e-12 {
+                    return Err(DrawingError::NonFinite("ellipse major axis (non-zero)"));
+                }
+                if !(*ratio > 0.0 && *ratio <= 1.0) {
+                    return Err(DrawingError::BadRadius(*ratio));
+                }
+                normal_ok(normal)
+            }
+            EntityKind::Unmodelled { .. } => Ok(()),
         }
     }
 
@@ -314,7 +350,33 @@ impl EntityKind {
             EntityKind::Face3d { corners } => out.extend(corners.iter().copied()),
             EntityKind::Text { insert, .. } => out.push(*insert),
             EntityKind::Mesh { vertices, .. } => out.extend(vertices.iter().copied()),
+            EntityKind::Ellipse { .. } => out.extend(self.ellipse_points(64)),
+            EntityKind::Unmodelled { .. } => {}
         }
+    }
+
+    /// Points along an ELLIPSE from its start to its end parameter (`n` segments), or none
+    /// for other kinds.
+    pub fn ellipse_points(&self, n: usize) -> Vec<DVec3> {
+        let EntityKind::Ellipse {
+            center,
+            major,
+            normal,
+            ratio,
+            start,
+            end,
+        } = self
+        else {
+            return Vec::new();
+        };
+        let minor = normal.normalize().cross(*major) * *ratio;
+        let sweep = ccw_sweep(*start, *end);
+        (0..=n)
+            .map(|i| {
+                let t = start + sweep * i as f64 / n as f64;
+                *center + *major * t.cos() + minor * t.sin()
+            })
+            .collect()
     }
 }
 

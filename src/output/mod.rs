@@ -4,10 +4,14 @@ pub mod aci;
 pub mod atomic;
 pub mod biarc;
 pub mod cam;
+pub mod document;
 pub mod drawing;
 pub mod dxf;
+pub mod dxf_opened;
 pub mod dxf_writer;
+pub mod dxfin;
 pub mod entity;
+pub mod record;
 pub mod svg;
 
 use std::path::Path;
@@ -15,6 +19,7 @@ use std::path::Path;
 use glam::DVec3;
 
 pub use drawing::{Drawing, DrawingError, Entity, EntityKind, Layer};
+pub use dxfin::{open_drawing, read_dxf, DxfReadError};
 
 /// Which DXF flavour `save` writes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -140,10 +145,12 @@ pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u
     check_drawing(d)?;
     Ok(match format {
         Format::Svg => svg::write_svg(d, opts).into_bytes(),
-        Format::Dxf => dxf::encode_cp1252(match opts.dxf_profile {
-            DxfProfile::Cad => dxf::write_cad(d),
-            DxfProfile::Cam => cam::write_cam(d, opts.cam_tol),
-        }),
+        Format::Dxf => match (opts.dxf_profile, d.document()) {
+            // An opened drawing is written back in its own version and code page.
+            (DxfProfile::Cad, Some(doc)) => dxf_opened::write_opened(d, doc),
+            (DxfProfile::Cad, None) => dxf::encode_cp1252(dxf::write_cad(d)),
+            (DxfProfile::Cam, _) => dxf::encode_cp1252(cam::write_cam(d, opts.cam_tol)),
+        },
     })
 }
 

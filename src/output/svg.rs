@@ -322,7 +322,14 @@ fn entity_path(e: &Entity, v: &View) -> Option<String> {
             }
             d.push_str(" Z");
         }
-        EntityKind::Text { .. } => return None,
+        EntityKind::Text { .. } | EntityKind::Unmodelled { .. } => return None,
+        EntityKind::Ellipse { .. } => {
+            let pts = e.kind.ellipse_points(128);
+            move_to(&mut d, v.project(pts[0]));
+            for p in &pts[1..] {
+                line_to(&mut d, v.project(*p));
+            }
+        }
         EntityKind::Mesh {
             vertices,
             triangles,

@@ -84,6 +84,11 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
     let space = ename_value(it, MODEL_SPACE_RECORD);
     let d: &Drawing = it.ext::<Drawing>();
     let e = d.get(name.handle)?;
+    if let EntityKind::Unmodelled { .. } = e.kind {
+        let tags = d.source(name.handle)?.tags.clone();
+        let (layer, color) = (e.layer.clone(), e.color);
+        return super::tag_list::tags_entity_list(it, &tags, name.sub as usize, me, &layer, color);
+    }
     let mut out = Vec::with_capacity(24);
     if name.sub != 0 {
         sub_entity_list(&mut out, e, name, me, parent)?;
@@ -232,6 +237,23 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
             out.push(text(100, "AcDbText"));
             out.push(int(73, 0));
         }
+        EntityKind::Ellipse {
+            center,
+            major,
+            normal,
+            ratio,
+            start,
+            end,
+        } => {
+            out.push(text(100, "AcDbEllipse"));
+            out.push(pt3(10, *center));
+            out.push(pt3(11, *major));
+            out.push(pt3(210, normal.normalize()));
+            out.push(real(40, *ratio));
+            out.push(real(41, *start));
+            out.push(real(42, *end));
+        }
+        EntityKind::Unmodelled { .. } => {}
         EntityKind::Mesh {
             vertices,
             triangles,

@@ -189,12 +189,15 @@ fn select(it: &mut Interp, filter: Option<&Filter>) -> Result<Vec<u64>, Exn> {
     let mut out = Vec::new();
     if only_common_groups(f) {
         // The usual filters (type, layer, colour) need no full entget list per entity.
-        let rows: Vec<(u64, &'static str, String, Option<i16>)> = drawing(it)
+        let rows: Vec<(u64, String, String, Option<i16>)> = drawing(it)
             .entities()
-            .map(|e| (e.handle, e.kind.type_name(), e.layer.clone(), e.color))
+            .map(|e| {
+                let ty = e.kind.type_name().to_string();
+                (e.handle, ty, e.layer.clone(), e.color)
+            })
             .collect();
         for (handle, ty, layer, color) in rows {
-            let mut g = vec![(0, Value::str(ty)), (8, Value::Str(layer.into()))];
+            let mut g = vec![(0, Value::str(&ty)), (8, Value::Str(layer.into()))];
             if let Some(c) = color {
                 g.push((62, Value::Int(c as i32)));
             }
