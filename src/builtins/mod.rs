@@ -20,6 +20,7 @@ pub mod special;
 pub mod strings;
 pub mod surfaces;
 pub mod system;
+pub mod sysvars;
 pub mod temple;
 pub mod text;
 
