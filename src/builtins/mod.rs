@@ -23,10 +23,11 @@ pub mod system;
 pub mod sysvars;
 pub mod temple;
 pub mod text;
+pub mod vla;
 
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    vec![
+    let mut t = vec![
         ("Special forms", special::BUILTINS),
         ("Evaluation and errors", control::BUILTINS),
         ("Lists", lists::BUILTINS),
@@ -45,7 +46,9 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Entities, selection sets and tables", entities::BUILTINS),
         ("Commands", command::BUILTINS),
         ("System", system::BUILTINS),
-    ]
+    ];
+    t.extend(vla::tables());
+    t
 }
 
 /// Per-interpreter set-up a library area needs beyond its functions (system variables...).
