@@ -255,12 +255,15 @@ fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
     let Handle::Read(r) = &mut *h else {
         return Err(err(format!("file {} is not open for reading", f.name)));
     };
-    let mut line = String::new();
-    match r.read_line(&mut line) {
+    // Bytes, not a String: a line in the code page (not UTF-8) is decoded, not refused.
+    let mut line = Vec::new();
+    match r.read_until(b'\n', &mut line) {
         Ok(0) => Ok(Value::Nil),
         Ok(_) => {
-            let trimmed = line.trim_end_matches(['\n', '\r']);
-            Ok(Value::str(trimmed))
+            drop(h);
+            let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
+            let text = crate::lang::encoding::decode(&line, code_page);
+            Ok(Value::str(text.trim_end_matches(['\n', '\r'])))
         }
         Err(e) => Err(err(format!("read from {} failed: {e}", f.name))),
     }

@@ -20,12 +20,14 @@ pub mod special;
 pub mod strings;
 pub mod surfaces;
 pub mod system;
+pub mod sysvars;
 pub mod temple;
 pub mod text;
+pub mod vla;
 
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    vec![
+    let mut t = vec![
         ("Special forms", special::BUILTINS),
         ("Evaluation and errors", control::BUILTINS),
         ("Lists", lists::BUILTINS),
@@ -44,7 +46,9 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ("Entities, selection sets and tables", entities::BUILTINS),
         ("Commands", command::BUILTINS),
         ("System", system::BUILTINS),
-    ]
+    ];
+    t.extend(vla::tables());
+    t
 }
 
 /// Installs the whole library in an interpreter, as Lua's `luaL_openlibs` does: every

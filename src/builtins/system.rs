@@ -1,7 +1,5 @@
 //! System variables (getvar/setvar), the symbol table (atoms-family), help and version.
 
-use std::collections::BTreeMap;
-
 use crate::builtin;
 use crate::lang::builtin::{Builtin, MANY};
 use crate::lang::error::{err, LResult};
@@ -187,78 +185,8 @@ pub static BUILTINS: &[Builtin] = &[
     ),
 ];
 
-/// The system variable table of one interpreter.
-pub struct SysVars {
-    vars: BTreeMap<String, Value>,
-}
-
-impl Default for SysVars {
-    fn default() -> Self {
-        let mut vars = BTreeMap::new();
-        let mut put = |k: &str, v: Value| {
-            vars.insert(k.to_string(), v);
-        };
-        put("LUNITS", Value::Int(2));
-        put("LUPREC", Value::Int(4));
-        put("AUNITS", Value::Int(0));
-        put("AUPREC", Value::Int(0));
-        put("DIMZIN", Value::Int(0));
-        put("UNITMODE", Value::Int(0));
-        put("ANGBASE", Value::Real(0.0));
-        put("ANGDIR", Value::Int(0));
-        put("CMDECHO", Value::Int(1));
-        put("OSMODE", Value::Int(0));
-        put("PDMODE", Value::Int(0));
-        put("INSUNITS", Value::Int(4));
-        put("MEASUREMENT", Value::Int(1));
-        put("GEOMTOL", Value::Real(1e-9));
-        put("BENDDEV", Value::Real(0.0));
-        put("DXFPROFILE", Value::str("CAD"));
-        put("CAMTOL", Value::Real(0.01));
-        put("CHORDTOL", Value::Real(0.01));
-        put("TEXTSIZE", Value::Real(2.5));
-        put(
-            "VIEWDIR",
-            Value::list([Value::Real(0.0), Value::Real(0.0), Value::Real(1.0)]),
-        );
-        put(
-            "ACADVER",
-            Value::str(concat!("lispcad ", env!("CARGO_PKG_VERSION"))),
-        );
-        put("PLATFORM", Value::str(std::env::consts::OS));
-        put("DWGNAME", Value::str("Drawing1.dwg"));
-        put(
-            "LASTPOINT",
-            Value::list([Value::Real(0.0), Value::Real(0.0), Value::Real(0.0)]),
-        );
-        SysVars { vars }
-    }
-}
-
-/// Variables `setvar` may not change.
-const READ_ONLY: &[&str] = &["ACADVER", "PLATFORM", "DWGNAME", "CDATE", "DATE"];
-
-impl SysVars {
-    pub fn get(&self, name: &str) -> Option<&Value> {
-        self.vars.get(&name.to_uppercase())
-    }
-
-    pub fn real(&self, name: &str) -> f64 {
-        self.get(name).and_then(Value::as_f64).unwrap_or(0.0)
-    }
-
-    pub fn int(&self, name: &str) -> i32 {
-        match self.get(name) {
-            Some(Value::Int(i)) => *i,
-            _ => 0,
-        }
-    }
-
-    /// Sets a variable from Rust (no type check): for the library's own results (BENDDEV).
-    pub fn put(&mut self, name: &str, v: Value) {
-        self.vars.insert(name.to_uppercase(), v);
-    }
-}
+pub use super::sysvars::SysVars;
+use super::sysvars::{coerce, table};
 
 pub fn init(it: &mut Interp) {
     it.set_global("PI", Value::Real(std::f64::consts::PI));
@@ -288,61 +216,130 @@ fn date_now() -> f64 {
 
 fn getvar(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_uppercase();
-    if name == "CDATE" {
-        return Ok(Value::Real(date_now()));
+    Ok(match name.as_str() {
+        "CDATE" => Value::Real(date_now()),
+        "DATE" => Value::Real(julian_now()),
+        "MILLISECS" => Value::Int(millisecs()),
+        "CLAYER" => {
+            let layer = it.ext::<crate::output::Drawing>().current_layer();
+            Value::str(layer)
+        }
+        "DWGPREFIX" => match it.ext::<SysVars>().get("DWGPREFIX") {
+            Some(Value::Str(s)) if !s.is_empty() => Value::Str(s.clone()),
+            _ => Value::str(&dir_with_separator(it.base_dir.clone())),
+        },
+        "EXTMIN" | "EXTMAX" => match it.ext::<crate::output::Drawing>().extents() {
+            Some((lo, hi)) => {
+                let p = if name == "EXTMIN" { lo } else { hi };
+                Value::list(p.to_array().map(Value::Real))
+            }
+            None => it.ext::<SysVars>().get(&name).cloned().unwrap_or_default(),
+        },
+        "LOGINNAME" => Value::str(&std::env::var("USER").unwrap_or_default()),
+        "TEMPPREFIX" => Value::str(&dir_with_separator(Some(std::env::temp_dir()))),
+        _ => it
+            .ext::<SysVars>()
+            .get(&name)
+            .cloned()
+            .unwrap_or(Value::Nil),
+    })
+}
+
+/// A directory as AutoCAD's *PREFIX variables give it: absolute, ending in a separator (the
+/// current directory when none).
+fn dir_with_separator(dir: Option<std::path::PathBuf>) -> String {
+    let d = dir
+        .or_else(|| std::env::current_dir().ok())
+        .map(|d| std::path::absolute(&d).unwrap_or(d))
+        .unwrap_or_default();
+    let mut s = d.display().to_string();
+    if !s.ends_with(std::path::MAIN_SEPARATOR) {
+        s.push(std::path::MAIN_SEPARATOR);
     }
-    if name == "CLAYER" {
-        let layer = it
-            .ext::<crate::output::Drawing>()
-            .current_layer()
-            .to_string();
-        return Ok(Value::str(&layer));
-    }
-    Ok(it
-        .ext::<SysVars>()
-        .get(&name)
-        .cloned()
-        .unwrap_or(Value::Nil))
+    s
+}
+
+/// DATE: the Julian day number and fraction of the current UTC time, as AutoCAD gives it.
+fn julian_now() -> f64 {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0.0, |d| d.as_secs_f64());
+    2_440_587.5 + secs / 86_400.0
+}
+
+/// MILLISECS: milliseconds since the process started (AutoCAD counts from system start; only
+/// differences are meaningful), wrapping like a 32-bit counter.
+fn millisecs() -> i32 {
+    static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+    START
+        .get_or_init(std::time::Instant::now)
+        .elapsed()
+        .as_millis() as u32 as i32
 }
 
 fn setvar(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_uppercase();
     let shown = format!("\"{}\" {}", name, it.prin1_string(&a[1]));
     let rejected = || err(format!("AutoCAD variable setting rejected: {shown}"));
-    if READ_ONLY.contains(&name.as_str()) {
+    let Some(def) = table().get(name.as_str()) else {
+        return Err(rejected());
+    };
+    if def.read_only {
         return Err(rejected());
     }
-    if name == "CLAYER" {
-        // The current layer is the drawing's: it must exist, as in AutoCAD.
-        let layer = it.string(&a[1])?.to_string();
-        let d = it.ext::<crate::output::Drawing>();
-        if d.layer(&layer).is_none() {
-            return Err(rejected());
+    let v = coerce(def, &a[1]).ok_or_else(rejected)?;
+    match name.as_str() {
+        "CLAYER" => {
+            // The current layer is the drawing's: it must exist, as in AutoCAD.
+            let layer = it.string(&a[1])?.to_string();
+            let d = it.ext::<crate::output::Drawing>();
+            if d.layer(&layer).is_none() {
+                return Err(rejected());
+            }
+            d.use_layer(&layer, None).map_err(|e| err(e.to_string()))?;
+            return Ok(a[1].clone());
         }
-        d.use_layer(&layer, None).map_err(|e| err(e.to_string()))?;
-        return Ok(a[1].clone());
+        "DXFPROFILE" => {
+            let p = v.as_str().unwrap_or("").to_uppercase();
+            if !matches!(p.as_str(), "CAD" | "CAM") {
+                return Err(rejected());
+            }
+            it.ext::<SysVars>().put(&name, Value::str(&p));
+            return Ok(a[1].clone());
+        }
+        "DWGCODEPAGE" => {
+            // Writable here (AutoCAD sets it from the drawing): it picks the code page of the
+            // ANSI source files loaded after it.
+            let cp = v.as_str().unwrap_or("").to_uppercase();
+            let enc = crate::lang::encoding::code_page(&cp).ok_or_else(rejected)?;
+            it.ext::<crate::lang::encoding::SourceCodePage>().0 = enc;
+            it.ext::<SysVars>().put(&name, Value::str(&cp));
+            return Ok(a[1].clone());
+        }
+        "CECOLOR" => {
+            let c = v.as_str().unwrap_or("").to_uppercase();
+            if !valid_color_name(&c) {
+                return Err(rejected());
+            }
+            it.ext::<SysVars>().put(&name, Value::str(&c));
+            return Ok(a[1].clone());
+        }
+        _ => {}
     }
-    let vars = it.ext::<SysVars>();
-    let Some(old) = vars.get(&name) else {
-        return Err(rejected());
-    };
-    // The new value must have the variable's kind; an integer may stand for a real.
-    let v = match (old, &a[1]) {
-        (Value::Int(_), Value::Int(_)) => a[1].clone(),
-        (Value::Real(_), Value::Int(i)) => Value::Real(*i as f64),
-        (Value::Real(_), Value::Real(_)) => a[1].clone(),
-        (Value::Str(_), Value::Str(s)) => Value::str(&s.to_uppercase()),
-        (Value::Cons(_), Value::Cons(_)) => a[1].clone(),
-        _ => return Err(rejected()),
-    };
-    if name == "DXFPROFILE" && !matches!(v.as_str(), Some("CAD" | "CAM")) {
-        return Err(rejected());
-    }
-    if name == "GEOMTOL" && v.as_f64().is_none_or(|t| t.is_nan() || t <= 0.0) {
-        return Err(rejected());
-    }
-    it.ext::<SysVars>().put(&name, v.clone());
+    it.ext::<SysVars>().put(&name, v);
     Ok(a[1].clone())
+}
+
+/// CECOLOR's forms: BYLAYER, BYBLOCK, an ACI number 1..255 or RGB:r,g,b.
+fn valid_color_name(c: &str) -> bool {
+    if c == "BYLAYER" || c == "BYBLOCK" {
+        return true;
+    }
+    if let Some(rgb) = c.strip_prefix("RGB:") {
+        let parts: Vec<_> = rgb.split(',').map(|x| x.trim().parse::<u8>()).collect();
+        return parts.len() == 3 && parts.iter().all(Result::is_ok);
+    }
+    c.parse::<u16>().is_ok_and(|n| (1..=255).contains(&n))
 }
 
 fn atoms_family(it: &mut Interp, a: &[Value]) -> LResult {

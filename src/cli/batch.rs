@@ -412,7 +412,10 @@ impl Job<'_> {
 }
 
 pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
-    let text = match std::fs::read_to_string(&args.file) {
+    let text = match crate::lang::encoding::read_source_file(
+        &args.file,
+        crate::lang::encoding::SourceCodePage::default().0,
+    ) {
         Ok(t) => t,
         Err(e) => {
             eprintln!("error: cannot read script {}: {e}", args.file.display());

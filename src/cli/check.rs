@@ -46,7 +46,8 @@ struct Source {
 }
 
 fn read_and_parse(it: &mut Interp, path: &Path) -> std::io::Result<Source> {
-    let text = std::fs::read_to_string(path)?;
+    let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
+    let text = crate::lang::encoding::read_source_file(path, code_page)?;
     let name = path.display().to_string();
     let id = it.add_source(&name, &text);
     let parsed = read_source(&text, id, &mut it.syms);

@@ -15,6 +15,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod circle;
 pub mod curve;
+pub mod curve_measure;
 pub mod error;
 pub(crate) mod fastmath;
 pub mod frame;

@@ -443,7 +443,11 @@ impl<'a> Compiler<'a> {
                 Value::Sym(S_SLASH) if !after_slash => after_slash = true,
                 Value::Sym(s) if *s != S_T => {
                     if after_slash {
-                        locals.push(*s)
+                        // The first occurrence wins (Autodesk): a local repeating a parameter
+                        // must not reset the argument to nil.
+                        if !params.contains(s) && !locals.contains(s) {
+                            locals.push(*s)
+                        }
                     } else {
                         params.push(*s)
                     }

@@ -10,6 +10,7 @@ use std::sync::Arc;
 
 use super::builtin::Builtin;
 use super::compile::{Compiler, Lambda};
+use super::encoding::SourceCodePage;
 use super::error::{abort, err, ErrorKind, Exn, LResult, LispError, Source, Span};
 use super::reader::{read_source, ReadError};
 use super::symbols::{SymbolTable, S_ERROR};
@@ -297,7 +298,7 @@ impl Interp {
         let path = self
             .resolve_path(name)
             .ok_or_else(|| err(format!("LOAD failed: \"{name}\"")))?;
-        let text = std::fs::read_to_string(&path)
+        let text = super::encoding::read_source_file(&path, self.ext::<SourceCodePage>().0)
             .map_err(|e| err(format!("LOAD failed: \"{}\": {e}", path.display())))?;
         if !self.loaded_files.contains(&path) {
             self.loaded_files.push(path.clone());

@@ -9,6 +9,7 @@
 
 pub mod builtin;
 pub mod compile;
+pub mod encoding;
 pub mod error;
 pub mod escape;
 pub mod eval;
