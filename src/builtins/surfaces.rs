@@ -221,7 +221,8 @@ pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(Value::list(pts.into_iter().map(point3).collect::<Vec<_>>()))
 }
 
-/// Polylines as PLINE curves (closed ones closed).
+/// Polylines as PLINE curves (closed ones closed); a one-point polyline (an isolated tangent
+/// contact) as the point `(x y z)`.
 fn polylines(pls: Vec<Polyline3>) -> LResult {
     let mut out = Vec::with_capacity(pls.len());
     for p in pls {
@@ -232,6 +233,10 @@ fn polylines(pls: Vec<Polyline3>) -> LResult {
         // Chaining can leave points closer than a polyline segment may be: drop repeats.
         pts.dedup_by(|a, b| a.distance(*b) <= 1e-12 * (1.0 + a.length()));
         let closed = p.closed && pts.len() >= 3;
+        if pts.len() == 1 {
+            out.push(point3(pts[0]));
+            continue;
+        }
         if pts.len() < 2 {
             continue;
         }
@@ -352,8 +357,8 @@ fn surface_section(it: &mut Interp, a: &[Value]) -> LResult {
     let n = vec3(it, &a[2])?;
     match surf(it, &a[0])? {
         Surf::Param(s) => {
-            let tol = chord_tol(it);
-            polylines(surface::surface_section(&s, p, n, tol).map_err(mesh_err)?)
+            let (tol, gtol) = (chord_tol(it), geomtol(it));
+            polylines(surface::surface_section_tol(&s, p, n, tol, gtol).map_err(mesh_err)?)
         }
         Surf::Discrete(m) => polylines(mesh::section(&m, p, n).map_err(mesh_err)?),
     }
@@ -361,8 +366,8 @@ fn surface_section(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn surface_intersect(it: &mut Interp, a: &[Value]) -> LResult {
     if let (Surf::Param(s1), Surf::Param(s2)) = (surf(it, &a[0])?, surf(it, &a[1])?) {
-        let tol = chord_tol(it);
-        return polylines(surface::surface_intersect(&s1, &s2, tol).map_err(mesh_err)?);
+        let (tol, gtol) = (chord_tol(it), geomtol(it));
+        return polylines(surface::surface_intersect_tol(&s1, &s2, tol, gtol).map_err(mesh_err)?);
     }
     let (m1, m2) = (discrete(it, &a[0])?, discrete(it, &a[1])?);
     polylines(mesh::intersect_meshes(&m1, &m2))

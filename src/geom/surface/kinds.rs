@@ -144,6 +144,32 @@ impl Surface {
                 end = if reversed[i] { s } else { e };
             }
         }
+        // Each curve must end where the next begins (head to tail around the patch).
+        let ends: Vec<(DVec3, DVec3)> = (0..4)
+            .map(|i| {
+                let (s, e) = (curves[i].start(), curves[i].end());
+                if reversed[i] {
+                    (e, s)
+                } else {
+                    (s, e)
+                }
+            })
+            .collect();
+        let size = ends
+            .iter()
+            .map(|(s, e)| s.length().max(e.length()).max(s.distance(*e)))
+            .fold(1.0, f64::max);
+        for i in 0..4 {
+            let gap = ends[i].1.distance(ends[(i + 1) % 4].0);
+            if gap.is_nan() || gap > 1e-9 * size {
+                return Err(SurfaceError::Invalid(format!(
+                    "boundary-surface: curve {} does not meet curve {} at their corner \
+                     (gap {gap:.3e}); the four curves must run head to tail around the patch",
+                    i + 1,
+                    (i + 1) % 4 + 1
+                )));
+            }
+        }
         Ok(Surface::Coons(Coons { curves, reversed }))
     }
 

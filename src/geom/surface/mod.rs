@@ -6,11 +6,13 @@
 //! into the discrete surface of paper 001 within a chord tolerance. Curves come in as
 //! [`CurveRef`] (any [`ParamCurve`]); [`SampledCurve`] wraps a point list.
 
+mod analytic;
 mod error;
 mod hits;
 mod kinds;
 mod ops;
 mod planar;
+mod refine;
 mod sampled;
 mod sweep;
 mod tessellate;
@@ -24,7 +26,8 @@ pub use hits::{
 pub use kinds::{Coons, Cylinder, PlaneRegion, Revolve, Ruled, Sphere, Surface, Sweep};
 pub use ops::{
     arc_surface_hits, curve_surface_hits, segment_surface_hits, surface_area, surface_boundary,
-    surface_intersect, surface_section,
+    surface_intersect, surface_intersect_seeded, surface_intersect_tol, surface_section,
+    surface_section_seeded, surface_section_tol,
 };
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};

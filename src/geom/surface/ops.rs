@@ -12,16 +12,58 @@ use crate::geom::mesh::{intersect_meshes, section, Mesh, Polyline3};
 use crate::geom::ParamCurve;
 use glam::DVec3;
 
-/// Plane section of a surface. Exact (sampled within `chord_tol`) for a cylinder
-/// ([`cylinder_section`]: circle, ellipse or rulings), a sphere (a circle) and a surface of
-/// revolution cut across or through its axis; other kinds and planes through their mesh.
+/// [`surface_section_tol`] with the default GEOMTOL.
 pub fn surface_section(
     s: &Surface,
     plane_point: DVec3,
     plane_normal: DVec3,
     chord_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
-    let tol = check_positive("chord-tol", chord_tol)?;
+    surface_section_tol(
+        s,
+        plane_point,
+        plane_normal,
+        chord_tol,
+        crate::geom::GEOMTOL,
+    )
+}
+
+/// Plane section of a surface. Exact (sampled within `chord_tol`) for a cylinder
+/// ([`cylinder_section`]: circle, ellipse or rulings), a sphere (a circle) and a surface of
+/// revolution cut across or through its axis; other kinds are sectioned through their mesh,
+/// and every point of those seed curves is then carried onto the true surface by Newton
+/// iteration to within `geom_tol` of the plane, and the curves densified within `chord_tol`.
+pub fn surface_section_tol(
+    s: &Surface,
+    plane_point: DVec3,
+    plane_normal: DVec3,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    surface_section_seeded(s, plane_point, plane_normal, chord_tol, chord_tol, geom_tol)
+}
+
+/// [`surface_section_tol`] with the seeding mesh made within `seed_tol` (the curves are still
+/// densified within `chord_tol`): a fine curve from a coarse mesh.
+pub fn surface_section_seeded(
+    s: &Surface,
+    plane_point: DVec3,
+    plane_normal: DVec3,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let tol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
+    let seed_tol = check_positive("seed tolerance", seed_tol)?;
+    let refined = |seeds: Vec<Polyline3>| -> Vec<Polyline3> {
+        let n = plane_normal.normalize();
+        let patch = super::refine::Patch::new(s);
+        seeds
+            .iter()
+            .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
+            .filter(|c| !c.points.is_empty())
+            .collect()
+    };
     match s {
         Surface::Cylinder(c) => {
             if plane_normal.length() == 0.0 || !plane_normal.is_finite() || !plane_point.is_finite()
@@ -67,9 +109,18 @@ pub fn surface_section(
         }
         Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol) {
             Some(curves) => Ok(curves),
-            None => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
+            None => Ok(refined(section(
+                &mesh_surface(s, seed_tol)?,
+                plane_point,
+                plane_normal,
+            )?)),
         },
-        _ => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
+        Surface::Plane(_) => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
+        _ => Ok(refined(section(
+            &mesh_surface(s, seed_tol)?,
+            plane_point,
+            plane_normal,
+        )?)),
     }
 }
 
@@ -165,14 +216,55 @@ fn revolve_section(
     None
 }
 
-/// Intersection curves of two surfaces, through their meshes.
+/// [`surface_intersect_tol`] with the default GEOMTOL.
 pub fn surface_intersect(
     a: &Surface,
     b: &Surface,
     chord_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
-    let (ma, mb) = (mesh_surface(a, chord_tol)?, mesh_surface(b, chord_tol)?);
-    Ok(intersect_meshes(&ma, &mb))
+    surface_intersect_tol(a, b, chord_tol, crate::geom::GEOMTOL)
+}
+
+/// Intersection curves of two surfaces: closed forms for sphere/sphere, sphere/plane,
+/// plane/plane and a cylinder against a plane parallel to its axis (a tangent contact comes
+/// back as a one-point polyline); otherwise the meshes' intersection seeds the curves and every
+/// point is carried onto both true surfaces by Newton iteration to within `geom_tol`, then the
+/// curves are densified within `chord_tol`.
+pub fn surface_intersect_tol(
+    a: &Surface,
+    b: &Surface,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    surface_intersect_seeded(a, b, chord_tol, chord_tol, geom_tol)
+}
+
+/// [`surface_intersect_tol`] with the seeding meshes made within `seed_tol`.
+pub fn surface_intersect_seeded(
+    a: &Surface,
+    b: &Surface,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
+    let seed_tol = check_positive("seed tolerance", seed_tol)?;
+    let gtol = check_positive("GEOMTOL", geom_tol)?;
+    if let Some(curves) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
+        return Ok(curves);
+    }
+    let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
+    let seeds = intersect_meshes(&ma, &mb);
+    let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    Ok(seeds
+        .iter()
+        .map(|c| {
+            let mut r = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
+            super::refine::close_gap(&pa, &pb, &mut r, gtol, ctol);
+            r
+        })
+        .filter(|c| !c.points.is_empty())
+        .collect())
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for

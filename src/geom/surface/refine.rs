@@ -1,0 +1,418 @@
+//! Intersection curves refined on the true surfaces: the mesh result only seeds them.
+//!
+//! Every seed point is carried onto both parametric surfaces by Newton iteration on
+//! `S1(u1, v1) − S2(u2, v2) = 0` (three equations, four unknowns: the minimum-norm step
+//! `−Jᵀ(JJᵀ + λI)⁻¹r`, damped near tangency), or on `n·(S(u, v) − p) = 0` for a plane section,
+//! until the residual is below the tolerance. A parameter reaching the edge of its domain is held
+//! there (the point then lies on the boundary curve) and a periodic one wraps, so seams and
+//! boundary edges keep their hits. Consecutive points are then densified — midpoints refined the
+//! same way — until the polyline is within the chord tolerance of the curve.
+
+use super::kinds::Surface;
+use super::ParamSurface;
+use crate::geom::mesh::Polyline3;
+use glam::{DMat3, DVec2, DVec3};
+
+/// A parametric surface with what Newton needs: periodicity and a seed search grid.
+pub(crate) struct Patch<'a> {
+    s: &'a Surface,
+    periodic: [bool; 2],
+    grid: Vec<(DVec2, DVec3)>,
+    scale: f64,
+}
+
+impl<'a> Patch<'a> {
+    pub fn new(s: &'a Surface) -> Patch<'a> {
+        const N: usize = 48;
+        let mut grid = Vec::with_capacity((N + 1) * (N + 1));
+        for j in 0..=N {
+            for i in 0..=N {
+                let uv = DVec2::new(i as f64 / N as f64, j as f64 / N as f64);
+                grid.push((uv, s.eval(uv.x, uv.y)));
+            }
+        }
+        let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+        for (_, p) in &grid {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
+        let scale = (hi - lo).length().max(1e-300);
+        let closes = |f: &dyn Fn(f64) -> (DVec3, DVec3)| {
+            (0..=8).all(|k| {
+                let (a, b) = f(k as f64 / 8.0);
+                a.distance(b) <= 1e-12 * scale
+            })
+        };
+        let periodic = [
+            closes(&|t| (s.eval(0.0, t), s.eval(1.0, t))),
+            closes(&|t| (s.eval(t, 0.0), s.eval(t, 1.0))),
+        ];
+        Patch {
+            s,
+            periodic,
+            grid,
+            scale,
+        }
+    }
+
+    #[inline]
+    pub fn eval(&self, uv: DVec2) -> DVec3 {
+        self.s.eval(uv.x, uv.y)
+    }
+
+    /// Partial derivatives by central differences (one-sided at a domain edge).
+    fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
+        const H: f64 = 1e-6;
+        let d = |k: usize| {
+            let (mut a, mut b) = (uv, uv);
+            a[k] -= H;
+            b[k] += H;
+            if !self.periodic[k] {
+                a[k] = a[k].max(0.0);
+                b[k] = b[k].min(1.0);
+            }
+            (self.eval(b) - self.eval(a)) / (b[k] - a[k])
+        };
+        (d(0), d(1))
+    }
+
+    /// Puts a parameter pair back in the domain: wraps periodic directions, clamps the others.
+    /// Returns which parameters sit on a domain edge.
+    fn normalise(&self, uv: &mut DVec2) -> [bool; 2] {
+        let mut edge = [false; 2];
+        for k in 0..2 {
+            if self.periodic[k] {
+                uv[k] = uv[k].rem_euclid(1.0);
+            } else if uv[k] <= 0.0 || uv[k] >= 1.0 {
+                uv[k] = uv[k].clamp(0.0, 1.0);
+                edge[k] = true;
+            }
+        }
+        edge
+    }
+
+    /// Parameters of the point of the surface nearest `p`: the nearest grid point, then Newton
+    /// on `(S − p)·S_u = (S − p)·S_v = 0` (Gauss–Newton steps).
+    pub fn project(&self, p: DVec3, start: Option<DVec2>) -> DVec2 {
+        let mut uv = match start {
+            Some(uv) if self.eval(uv).distance(p) <= 0.05 * self.scale => uv,
+            _ => self
+                .grid
+                .iter()
+                .min_by(|a, b| a.1.distance_squared(p).total_cmp(&b.1.distance_squared(p)))
+                .map(|g| g.0)
+                .unwrap_or(DVec2::splat(0.5)),
+        };
+        for _ in 0..30 {
+            let r = self.eval(uv) - p;
+            let (su, sv) = self.derivs(uv);
+            let (a, b, c) = (su.dot(su), su.dot(sv), sv.dot(sv));
+            let det = a * c - b * b;
+            if det.abs() <= 1e-300 {
+                break;
+            }
+            let (g0, g1) = (su.dot(r), sv.dot(r));
+            let step = DVec2::new((c * g0 - b * g1) / det, (a * g1 - b * g0) / det);
+            uv -= step;
+            self.normalise(&mut uv);
+            if step.length() <= 1e-15 {
+                break;
+            }
+        }
+        uv
+    }
+}
+
+/// A point of the intersection of two patches, with its parameters on both.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Node {
+    pub uv: [DVec2; 2],
+    pub point: DVec3,
+    pub residual: f64,
+}
+
+/// Carries `(uv_a, uv_b)` onto the intersection of `a` and `b` by minimum-norm Newton steps.
+pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) -> Node {
+    let mut fixed = [[false; 2]; 2];
+    let mut best: Option<Node> = None;
+    for it in 0..40 {
+        let (pa, pb) = (a.eval(uv[0]), b.eval(uv[1]));
+        let r = pa - pb;
+        let node = Node {
+            uv,
+            point: 0.5 * (pa + pb),
+            residual: r.length(),
+        };
+        if best.is_none_or(|n| node.residual < n.residual) {
+            best = Some(node);
+        }
+        if node.residual <= 0.01 * tol || (it > 30 && node.residual <= tol) {
+            break;
+        }
+        let (au, av) = a.derivs(uv[0]);
+        let (bu, bv) = b.derivs(uv[1]);
+        // Columns of J; a parameter held on a domain edge contributes nothing.
+        let mut cols = [au, av, -bu, -bv];
+        for (k, c) in cols.iter_mut().enumerate() {
+            if fixed[k / 2][k % 2] {
+                *c = DVec3::ZERO;
+            }
+        }
+        let mut jjt = DMat3::ZERO;
+        for c in &cols {
+            jjt += outer(*c, *c);
+        }
+        // Levenberg damping keeps the step bounded where the surfaces are tangent.
+        let lambda = 1e-12
+            * jjt
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |m, x| m.max(x.abs()));
+        jjt += DMat3::from_diagonal(DVec3::splat(lambda.max(1e-300)));
+        if jjt.determinant().abs() <= 1e-300 {
+            break;
+        }
+        let y = jjt.inverse() * r;
+        for (k, c) in cols.iter().enumerate() {
+            uv[k / 2][k % 2] -= c.dot(y);
+        }
+        let ea = a.normalise(&mut uv[0]);
+        let eb = b.normalise(&mut uv[1]);
+        fixed = [ea, eb];
+    }
+    best.unwrap_or(Node {
+        uv,
+        point: a.eval(uv[0]),
+        residual: f64::INFINITY,
+    })
+}
+
+#[inline]
+fn outer(a: DVec3, b: DVec3) -> DMat3 {
+    DMat3::from_cols(a * b.x, a * b.y, a * b.z)
+}
+
+/// The parameter midway between two, the short way round in a periodic direction.
+fn mid(p: &Patch, a: DVec2, b: DVec2) -> DVec2 {
+    let mut m = 0.5 * (a + b);
+    for k in 0..2 {
+        if p.periodic[k] && (a[k] - b[k]).abs() > 0.5 {
+            m[k] = (m[k] + 0.5).rem_euclid(1.0);
+        }
+    }
+    m
+}
+
+/// One seeded polyline refined onto both surfaces and densified within `chord_tol`.
+/// Points that do not converge (a seed far from any true intersection) are dropped.
+pub(crate) fn refine_pair_curve(
+    a: &Patch,
+    b: &Patch,
+    seed: &Polyline3,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
+    let mut nodes: Vec<Node> = Vec::with_capacity(seed.points.len());
+    let mut prev: Option<[DVec2; 2]> = None;
+    for &p in &seed.points {
+        let start = [
+            a.project(p, prev.map(|u| u[0])),
+            b.project(p, prev.map(|u| u[1])),
+        ];
+        let n = newton_pair(a, b, start, tol);
+        if n.residual <= tol {
+            prev = Some(n.uv);
+            nodes.push(n);
+        }
+    }
+    let closed = seed.closed;
+    let mut out = Vec::with_capacity(nodes.len() * 2);
+    let m = nodes.len();
+    let segs = if closed { m } else { m.saturating_sub(1) };
+    for i in 0..m {
+        out.push(nodes[i].point);
+        if i < segs {
+            densify(
+                a,
+                b,
+                nodes[i],
+                nodes[(i + 1) % m],
+                tol,
+                chord_tol,
+                0,
+                &mut out,
+            );
+        }
+    }
+    dedup(&mut out, tol);
+    Polyline3 {
+        points: out,
+        closed: closed && out_len_ok(m),
+    }
+}
+
+/// Closes an open refined curve whose ends are within a few of its own segment lengths — the
+/// meshes lose the last pieces before a branch point, where the surfaces touch (two equal
+/// cylinders crossing) — when the gap refines onto both surfaces: the gap is densified like
+/// any other segment.
+pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord_tol: f64) {
+    let n = c.points.len();
+    if c.closed || n < 4 {
+        return;
+    }
+    let h = c
+        .points
+        .windows(2)
+        .map(|w| w[0].distance(w[1]))
+        .fold(0.0, f64::max);
+    let (s, e) = (c.points[0], c.points[n - 1]);
+    if s.distance(e) > 3.0 * h {
+        return;
+    }
+    let node = |p: DVec3| newton_pair(a, b, [a.project(p, None), b.project(p, None)], tol);
+    let (ne, ns) = (node(e), node(s));
+    if ne.residual > tol || ns.residual > tol {
+        return;
+    }
+    let mut extra = Vec::new();
+    densify(a, b, ne, ns, tol, chord_tol, 0, &mut extra);
+    c.points.extend(extra);
+    c.closed = true;
+}
+
+fn out_len_ok(m: usize) -> bool {
+    m >= 3
+}
+
+#[allow(clippy::too_many_arguments)]
+fn densify(
+    a: &Patch,
+    b: &Patch,
+    n0: Node,
+    n1: Node,
+    tol: f64,
+    chord_tol: f64,
+    depth: u32,
+    out: &mut Vec<DVec3>,
+) {
+    if depth >= 16 || n0.point.distance(n1.point) <= 2.0 * tol {
+        return;
+    }
+    let uv = [mid(a, n0.uv[0], n1.uv[0]), mid(b, n0.uv[1], n1.uv[1])];
+    let m = newton_pair(a, b, uv, tol);
+    if m.residual > tol {
+        return;
+    }
+    let chord = n1.point - n0.point;
+    let off = (m.point - n0.point).cross(chord).length() / chord.length();
+    // Also split a segment whose midpoint wandered off between its ends (a different branch).
+    let along = (m.point - n0.point).dot(chord) / chord.length_squared();
+    if off > chord_tol && (0.0..=1.0).contains(&along) {
+        densify(a, b, n0, m, tol, chord_tol, depth + 1, out);
+        out.push(m.point);
+        densify(a, b, m, n1, tol, chord_tol, depth + 1, out);
+    }
+}
+
+fn dedup(pts: &mut Vec<DVec3>, tol: f64) {
+    pts.dedup_by(|x, y| x.distance(*y) <= tol);
+}
+
+/// A point of a plane section: Newton on `n·(S(u, v) − p0) = 0` (minimum-norm step).
+fn newton_plane(s: &Patch, mut uv: DVec2, p0: DVec3, n: DVec3, tol: f64) -> (DVec2, f64) {
+    let mut r = n.dot(s.eval(uv) - p0);
+    for _ in 0..40 {
+        if r.abs() <= 0.01 * tol {
+            break;
+        }
+        let (su, sv) = s.derivs(uv);
+        let g = DVec2::new(n.dot(su), n.dot(sv));
+        let g2 = g.length_squared();
+        if g2 <= 1e-300 {
+            break;
+        }
+        let prev = uv;
+        uv -= g * (r / g2);
+        s.normalise(&mut uv);
+        let nr = n.dot(s.eval(uv) - p0);
+        if nr.abs() >= r.abs() && uv == prev {
+            break;
+        }
+        r = nr;
+    }
+    (uv, r.abs())
+}
+
+/// One seeded plane-section polyline refined onto the surface and densified.
+pub(crate) fn refine_section_curve(
+    s: &Patch,
+    seed: &Polyline3,
+    p0: DVec3,
+    n: DVec3,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
+    let mut nodes: Vec<(DVec2, DVec3)> = Vec::with_capacity(seed.points.len());
+    let mut prev = None;
+    for &p in &seed.points {
+        let (uv, r) = newton_plane(s, s.project(p, prev), p0, n, tol);
+        if r <= tol {
+            prev = Some(uv);
+            nodes.push((uv, s.eval(uv)));
+        }
+    }
+    let m = nodes.len();
+    let segs = if seed.closed { m } else { m.saturating_sub(1) };
+    let mut out = Vec::with_capacity(m * 2);
+    for i in 0..m {
+        out.push(nodes[i].1);
+        if i < segs {
+            densify_plane(
+                s,
+                nodes[i],
+                nodes[(i + 1) % m],
+                p0,
+                n,
+                tol,
+                chord_tol,
+                0,
+                &mut out,
+            );
+        }
+    }
+    dedup(&mut out, tol);
+    Polyline3 {
+        points: out,
+        closed: seed.closed && out_len_ok(m),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn densify_plane(
+    s: &Patch,
+    n0: (DVec2, DVec3),
+    n1: (DVec2, DVec3),
+    p0: DVec3,
+    n: DVec3,
+    tol: f64,
+    chord_tol: f64,
+    depth: u32,
+    out: &mut Vec<DVec3>,
+) {
+    if depth >= 16 || n0.1.distance(n1.1) <= 2.0 * tol {
+        return;
+    }
+    let (uv, r) = newton_plane(s, mid(s, n0.0, n1.0), p0, n, tol);
+    if r > tol {
+        return;
+    }
+    let m = (uv, s.eval(uv));
+    let chord = n1.1 - n0.1;
+    let off = (m.1 - n0.1).cross(chord).length() / chord.length();
+    let along = (m.1 - n0.1).dot(chord) / chord.length_squared();
+    if off > chord_tol && (0.0..=1.0).contains(&along) {
+        densify_plane(s, n0, m, p0, n, tol, chord_tol, depth + 1, out);
+        out.push(m.1);
+        densify_plane(s, m, n1, p0, n, tol, chord_tol, depth + 1, out);
+    }
+}
