@@ -9,6 +9,7 @@ pub mod batch;
 pub mod check;
 pub mod diag;
 pub mod doc;
+pub mod params;
 pub mod repl;
 pub mod run;
 pub mod watch;
@@ -73,6 +74,8 @@ pub enum Command {
     Check { files: Vec<PathBuf> },
     /// Print the reference of every builtin.
     Doc,
+    /// List the parameters a script declares with defparam (read, not run).
+    Params { file: PathBuf },
 }
 
 /// Entry point; returns the process exit status.
@@ -99,6 +102,7 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Check { files }) => check::check(&files),
         Some(Command::Batch(args)) => batch::batch(&args, &common),
         Some(Command::Watch(args)) => watch::watch(&args, &common),
+        Some(Command::Params { file }) => params::params(&file),
         Some(Command::Doc) => {
             print!("{}", doc::reference());
             EXIT_OK

@@ -6,6 +6,7 @@
 
 pub mod builtin;
 pub mod compile;
+mod defparam;
 pub mod error;
 pub mod eval;
 pub mod fastpath;

@@ -99,6 +99,38 @@ fn check_plan(src: &Source, files: &OutputFiles) -> Result<(), String> {
     }
 }
 
+/// `--set` names and the source's columns must be symbols the script uses (a column may also
+/// be a pattern field); values of declared parameters must be within their ranges.
+fn check_names(text: &str, args: &BatchArgs, src: &Source) -> Result<(), String> {
+    let names = super::params::scan(text)?;
+    names.check_sets(&args.set)?;
+    let fields: Vec<String> = args
+        .outputs
+        .iter()
+        .flat_map(|p| sink::pattern_fields(p))
+        .collect();
+    for c in src.columns() {
+        names.check_name("column", &c, &fields)?;
+    }
+    match src {
+        Source::Table { rows, .. } => {
+            for r in rows {
+                for (k, c) in &r.values {
+                    names.check_value(&format!("row {}: column", r.number), k, &c.text)?;
+                }
+            }
+        }
+        Source::Grid(g) => {
+            for (k, vals) in &g.axes {
+                for v in vals {
+                    names.check_value("--grid", k, v)?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Reads the script and checks its syntax once: a syntax error fails the whole batch.
 fn load_script(args: &BatchArgs) -> Result<(String, String), i32> {
     let text = match std::fs::read_to_string(&args.file) {
@@ -150,7 +182,10 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
         Err(code) => return code,
     };
     let files = OutputFiles::new(args.outputs.clone());
-    let src = match open_source(args).and_then(|s| check_plan(&s, &files).map(|()| s)) {
+    let src = match open_source(args)
+        .and_then(|s| check_plan(&s, &files).map(|()| s))
+        .and_then(|s| check_names(&text, args, &s).map(|()| s))
+    {
         Ok(s) => s,
         Err(m) => {
             eprintln!("error: {m}");
