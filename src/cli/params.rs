@@ -163,9 +163,7 @@ impl ScriptNames {
     /// output pattern's fields); it names the nearest known name, declared parameters first.
     pub fn check_name(&self, what: &str, name: &str, extra: &[String]) -> Result<(), String> {
         let up = name.to_uppercase();
-        if self.symbols.iter().any(|s| *s == up)
-            || extra.iter().any(|e| e.eq_ignore_ascii_case(name))
-        {
+        if self.symbols.contains(&up) || extra.iter().any(|e| e.eq_ignore_ascii_case(name)) {
             return Ok(());
         }
         let near = |cands: &mut dyn Iterator<Item = &str>| -> Option<String> {
