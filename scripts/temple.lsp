@@ -13,16 +13,18 @@
 ;;; Layers: CUT (the bent outline, for the laser/CNC), CENTER (the bent centerline:
 ;;; line, arc, line), NOTES (the parameter values).
 
-;;; ---- parameters: mm and degrees; a value given with --set wins over the default ----
-(if (not L1) (setq L1 140.0))          ; total length of the temple along its centerline
-(if (not L2) (setq L2 35.0))           ; from the far end back to the bend's vertex
-(if (not R) (setq R 15.0))             ; bend radius
-(if (not BENDANG) (setq BENDANG 40.0)) ; bend angle in degrees (ANGLE is a builtin: not used)
-(if (not HINGEW) (setq HINGEW 5.0))    ; width at the hinge end
-(if (not MINW) (setq MINW 3.5))        ; slimmest width, at 0.7 L1 (the thickness profile)
-(if (not TIPW) (setq TIPW 7.0))        ; width of the tip, at 0.9 L1
-(if (not BASEX) (setq BASEX 0.0))      ; base point P1 (hinge end of the centerline)
-(if (not BASEY) (setq BASEY 0.0))
+;;; ---- parameters: mm and degrees; a value given with --set (or a batch table) wins over
+;;; the default, and one outside its range is refused before anything runs.
+;;; `lispcad params scripts/temple.lsp` lists them.
+(defparam L1 140.0 "total length of the temple along its centerline" 100.0 200.0)
+(defparam L2 35.0 "from the far end back to the bend's vertex" 5.0 100.0)
+(defparam R 15.0 "bend radius" 1.0 100.0)
+(defparam BENDANG 40.0 "bend angle in degrees (ANGLE is a builtin: not used)" 0.0 90.0)
+(defparam HINGEW 5.0 "width at the hinge end" 1.0 20.0)
+(defparam MINW 3.5 "slimmest width, at 0.7 L1 (the thickness profile)" 1.0 20.0)
+(defparam TIPW 7.0 "width of the tip, at 0.9 L1" 1.0 20.0)
+(defparam BASEX 0.0 "base point P1 (hinge end of the centerline), X")
+(defparam BASEY 0.0 "base point P1, Y")
 
 ;; --set L1=140 reads an integer; the geometry wants reals.
 (setq L1 (float L1) L2 (float L2) R (float R) BENDANG (float BENDANG)

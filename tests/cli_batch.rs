@@ -152,3 +152,91 @@ fn an_interrupted_batch_leaves_no_partial_file() {
         assert!(text.trim_end().ends_with("</svg>"), "{name} is partial");
     }
 }
+
+#[test]
+fn an_excel_table_with_bom_semicolons_and_crlf_binds_every_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = setup(dir.path());
+    let table = dir.path().join("v.csv");
+    std::fs::write(
+        &table,
+        "\u{feff}name;L1;R\r\n\"small\";135;12\r\n\"large\";150;18\r\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = lispcad()
+        .arg("batch")
+        .arg(&script)
+        .arg("--vary")
+        .arg(&table)
+        .arg("-o")
+        .arg(format!("{}/{{name}}-{{L1}}-{{R}}.dxf", out.display()))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let names: Vec<String> = files(&out).into_iter().map(|f| f.0).collect();
+    assert_eq!(names, ["large-150-18.dxf", "small-135-12.dxf"]);
+}
+
+#[test]
+fn a_ragged_table_is_a_usage_error_naming_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = setup(dir.path());
+    let table = dir.path().join("v.csv");
+    std::fs::write(&table, "L1,R\n135,12\n\n150\n").unwrap();
+    let o = lispcad()
+        .arg("batch")
+        .arg(&script)
+        .arg("--vary")
+        .arg(&table)
+        .arg("-o")
+        .arg(format!("{}/o-{{row}}.dxf", dir.path().display()))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("line 4: 1 fields, the header has 2"), "{err}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_ten_billion_row_grid_streams_and_stops_on_a_signal() {
+    use std::io::{BufRead, BufReader};
+    let dir = tempfile::tempdir().unwrap();
+    let script = setup(dir.path());
+    let mut child = lispcad()
+        .arg("batch")
+        .arg(&script)
+        .arg("--grid")
+        .arg("L1=0:99999:1,R=0:99999:1")
+        .arg("-o")
+        .arg(format!("{}/out/t-{{row}}.svg", dir.path().display()))
+        .arg("-j")
+        .arg("1")
+        .arg("--max-steps")
+        .arg("1")
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
+    // The count comes first, before any row (building the grid first took 24 GB).
+    assert_eq!(lines.next().unwrap().unwrap(), "batch: 10000000000 rows");
+    assert!(lines
+        .next()
+        .unwrap()
+        .unwrap()
+        .starts_with("row 1/10000000000 FAILED"));
+    let _ = Command::new("kill")
+        .arg("-INT")
+        .arg(child.id().to_string())
+        .status();
+    let rest: Vec<String> = lines.map_while(Result::ok).collect();
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(1));
+    let summary = rest
+        .iter()
+        .find(|l| l.starts_with("batch: "))
+        .expect("summary");
+    assert!(summary.contains(" not run"), "{summary}");
+}

@@ -37,5 +37,6 @@ pub static BUILTINS: &[Builtin] = &[
     special!("or", "(or expr...)", "T at the first non-nil expression, else nil."),
     special!("defun", "(defun name (args / locals) body...)", "Defines a function; locals start as nil; returns the name."),
     special!("defun-q", "(defun-q name (args / locals) body...)", "Defines a function kept as a list (see defun-q-list-ref)."),
+    special!("defparam", "(defparam NAME default \"doc\" [min max])", "Declares a script parameter (NAME unevaluated): sets it to default unless --set or a batch table gave it a value; a number outside [min, max] is an error. Listed by `lispcad params`."),
     special!("lambda", "(lambda (args / locals) body...)", "An anonymous function (it does not capture variables: scope is dynamic)."),
 ];

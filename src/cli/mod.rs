@@ -10,6 +10,7 @@ pub mod check;
 pub mod convert;
 pub mod diag;
 pub mod doc;
+pub mod params;
 pub mod repl;
 pub mod run;
 pub mod watch;
@@ -91,6 +92,8 @@ pub enum Command {
     Convert(convert::ConvertArgs),
     /// Print the reference of every builtin.
     Doc,
+    /// List the parameters a script declares with defparam (read, not run).
+    Params { file: PathBuf },
 }
 
 /// Entry point; returns the process exit status.
@@ -118,6 +121,7 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Convert(args)) => convert::convert(&args, &common),
         Some(Command::Batch(args)) => batch::batch(&args, &common),
         Some(Command::Watch(args)) => watch::watch(&args, &common),
+        Some(Command::Params { file }) => params::params(&file),
         Some(Command::Doc) => {
             print!("{}", doc::reference());
             EXIT_OK

@@ -83,7 +83,9 @@ pub fn run(args: &RunArgs, common: &Common) -> i32 {
     }
     let roots = script_roots(&args.file, &args.outputs);
     it.ext::<FsPolicy>().roots = roots;
-    if let Err(msg) = apply_sets(&mut it, &args.set) {
+    if let Err(msg) =
+        check_sets(&args.file, &args.set).and_then(|()| apply_sets(&mut it, &args.set))
+    {
         eprintln!("error: {msg}");
         return EXIT_USAGE;
     }
@@ -119,6 +121,14 @@ fn leave(mut it: Interp, status: i32) -> i32 {
     it.flush_out();
     std::mem::forget(it);
     status
+}
+
+/// `--set` names must be symbols the script uses and values within declared ranges.
+pub fn check_sets(file: &Path, sets: &[String]) -> Result<(), String> {
+    if sets.is_empty() {
+        return Ok(());
+    }
+    super::params::script_names(file)?.check_sets(sets)
 }
 
 /// The directories a script may write below: its own and each output's.

@@ -70,6 +70,10 @@ pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
         eprintln!("error: cannot read script {}", args.file.display());
         return EXIT_USAGE;
     }
+    if let Err(m) = super::run::check_sets(&args.file, &args.set) {
+        eprintln!("error: {m}");
+        return EXIT_USAGE;
+    }
     let (tx, rx) = mpsc::channel();
     let mut watcher = match notify::recommended_watcher(move |ev: notify::Result<notify::Event>| {
         if let Ok(ev) = ev {

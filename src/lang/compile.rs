@@ -77,6 +77,10 @@ pub struct Compiler<'a> {
 }
 
 impl<'a> Compiler<'a> {
+    pub(super) fn sym_name(&self, s: Sym) -> &str {
+        self.syms.name(s)
+    }
+
     pub fn new(spans: Option<&'a SpanMap>, syms: &'a super::symbols::SymbolTable) -> Self {
         Compiler {
             spans,
@@ -273,6 +277,7 @@ impl<'a> Compiler<'a> {
                 }
                 Err(e) => fail(e, span),
             },
+            _ if self.syms.name(head) == "DEFPARAM" => super::defparam::compile(self, rest, span),
             _ => {
                 let args = self.operands(rest);
                 super::fastpath::compile(head, self.syms.name(head), args, span)

@@ -10,6 +10,7 @@
 pub mod builtin;
 pub mod compile;
 pub mod encoding;
+mod defparam;
 pub mod error;
 pub mod escape;
 pub mod eval;
