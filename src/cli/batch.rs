@@ -455,6 +455,10 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
                 }
             }
         }
+        if let Err(m) = super::check_output_formats(&outs) {
+            eprintln!("error: {m}");
+            return EXIT_USAGE;
+        }
         planned.push(outs);
     }
     let mut seen = std::collections::HashSet::new();
