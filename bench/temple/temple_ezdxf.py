@@ -155,34 +155,94 @@ def solve_cyclic(a, b, c, r):
     return [(xi[0] - fx * zi, xi[1] - fy * zi) for xi, zi in zip(x, z)]
 
 
+def jacobi_eigen(a):
+    """Eigenvalues and eigenvector columns of a symmetric 3x3 matrix (cyclic Jacobi, as Rust)."""
+    a = [row[:] for row in a]
+    v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    for _ in range(50):
+        off = abs(a[0][1]) + abs(a[0][2]) + abs(a[1][2])
+        diag = abs(a[0][0]) + abs(a[1][1]) + abs(a[2][2])
+        if off <= 1e-300 or off <= 1e-15 * diag:
+            break
+        for p, q in ((0, 1), (0, 2), (1, 2)):
+            if abs(a[p][q]) <= 1e-300:
+                continue
+            theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q])
+            t = math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0))
+            if theta == 0.0:
+                t = 1.0
+            c = 1.0 / math.sqrt(t * t + 1.0)
+            sn = t * c
+            for k in range(3):
+                akp, akq = a[k][p], a[k][q]
+                a[k][p] = c * akp - sn * akq
+                a[k][q] = sn * akp + c * akq
+            for k in range(3):
+                apk, aqk = a[p][k], a[q][k]
+                a[p][k] = c * apk - sn * aqk
+                a[q][k] = sn * apk + c * aqk
+            for row in v:
+                vp, vq = row[p], row[q]
+                row[p] = c * vp - sn * vq
+                row[q] = sn * vp + c * vq
+    return [a[0][0], a[1][1], a[2][2]], v
+
+
+def principal_axes(pts):
+    """The points' principal frame (2D: the first two axes), as quadspline_fit.rs."""
+    n = len(pts)
+    c = (sum(p[0] for p in pts) / n, sum(p[1] for p in pts) / n)
+    a = [[0.0] * 3 for _ in range(3)]
+    for p in pts:
+        d = (p[0] - c[0], p[1] - c[1], 0.0)
+        for i in range(3):
+            for j in range(3):
+                a[i][j] += d[i] * d[j]
+    vals, vecs = jacobi_eigen(a)
+    idx = sorted(range(3), key=lambda i: (-vals[i], i))
+    top = max(abs(vals[idx[0]]), 1e-300)
+    if abs(vals[idx[0]] - vals[idx[1]]) <= 1e-9 * top:
+        return (1.0, 0.0), (0.0, 1.0)
+    e0 = (vecs[0][idx[0]], vecs[1][idx[0]])
+    e1 = (vecs[0][idx[1]], vecs[1][idx[1]])
+    if dot(sub(pts[-1], pts[0]), e0) < 0:
+        e0 = (-e0[0], -e0[1])
+    # e1 = (e0 x e1) x e0 in the plane: e0 turned by +-90 degrees towards the old e1.
+    z = e0[0] * e1[1] - e0[1] * e1[0]
+    e1 = (-z * e0[1], z * e0[0])
+    return e0, e1
+
+
+def limited_slope(a, b, ha, hb):
+    if a * b <= 0.0:
+        return 0.0
+    bessel = (hb * a + ha * b) / (ha + hb)
+    cap = 2.0 * min(abs(a), abs(b))
+    return max(-cap, min(cap, bessel))
+
+
 def interpolate_closed(q):
-    """Segments [start, control, end], two per interval, point j at public t = j/n."""
+    """Segments [start, control, end], two per interval, point j at public t = j/n: the local
+    shape-preserving quadratic spline of quadspline_fit.rs (chord length, limited Bessel slopes
+    in the principal frame)."""
     n = len(q)
     h = [norm(sub(q[(j + 1) % n], q[j])) for j in range(n)]
-    d = [0.5 * (h[j - 1] + h[j]) for j in range(n)]
-    u = [h[j - 1] / (h[j - 1] + h[j]) for j in range(n)]
-    a, b, c = [0.0] * n, [0.0] * n, [0.0] * n
+    e0, e1 = principal_axes(q)
+    loc = lambda v: (dot(v, e0), dot(v, e1))
+    slopes = [loc(mul(sub(q[(j + 1) % n], q[j]), 1.0 / h[j])) for j in range(n)]
+    tans = []
     for j in range(n):
-        dp, dn = d[j - 1], d[(j + 1) % n]
-        w0, w2 = (1 - u[j]) ** 2, u[j] ** 2
-        a[j] = w0 * d[j] / (dp + d[j])
-        c[j] = w2 * d[j] / (d[j] + dn)
-        b[j] = 2 * u[j] * (1 - u[j]) + w0 * dp / (dp + d[j]) + w2 * dn / (d[j] + dn)
-    p = solve_cyclic(a, b, c, q)
-    joint = [
-        mul(add(mul(p[j], d[(j + 1) % n]), mul(p[(j + 1) % n], d[j])), 1 / (d[j] + d[(j + 1) % n]))
-        for j in range(n)
-    ]
-    halves = []
-    for j in range(n):
-        left, right = split([joint[j - 1], p[j], joint[j]], u[j])
-        left[2] = q[j]
-        right[0] = q[j]
-        halves.append((left, right))
+        a, b = slopes[j - 1], slopes[j]
+        m = [limited_slope(a[k], b[k], h[j - 1], h[j]) for k in range(2)]
+        tans.append(add(mul(e0, m[0]), mul(e1, m[1])))
     segs = []
     for j in range(n):
-        segs.append(halves[j][1])
-        segs.append(halves[(j + 1) % n][0])
+        k = (j + 1) % n
+        c0 = add(q[j], mul(tans[j], 0.25 * h[j]))
+        c1 = sub(q[k], mul(tans[k], 0.25 * h[j]))
+        m = lerp(c0, c1, 0.5)
+        segs.append([q[j], c0, m])
+        segs.append([m, c1, q[k]])
     return segs
 
 
@@ -373,7 +433,26 @@ def tangent_meet(p, tp, q, tq):
     return lerp(x1, x2, 0.5)
 
 
+def rigid_pair(segs, bend, ta, tb):
+    """The original's two segments of [ta, tb] moved by the bend when the span lies where the
+    bend is rigid (temple_refine.rs rigid_pair)."""
+    n = len(segs)
+    k0, k1 = ta * n, tb * n
+    first = round(k0)
+    if abs(k0 - first) > 1e-9 or abs(k1 - first - 2) > 1e-9 or first < 0 or first + 1 >= n:
+        return None
+    pair = segs[first:first + 2]
+    ss = [p[0] - bend.bx for sg in pair for p in sg]
+    end = bend.l + bend.r * bend.th
+    if not (max(ss) <= bend.l or bend.th == 0 or min(ss) >= end):
+        return None
+    return tuple([bend.map(p) for p in sg] for sg in pair)
+
+
 def hermite_piece(segs, bend, ta, tb, a, b, tan_a, tan_b):
+    rigid = rigid_pair(segs, bend, ta, tb)
+    if rigid is not None:
+        return rigid
     tm = 0.5 * (ta + tb)
     m = bend.map(spline_eval(segs, tm))
     tmv = bent_tangent(segs, bend, tm, sub(b, a))

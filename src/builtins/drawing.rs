@@ -187,6 +187,7 @@ pub fn output_options(
         o.dxf_profile = p.parse::<DxfProfile>().map_err(draw_err)?;
     }
     o.cam_tol = vars.real("CAMTOL");
+    o.insunits = vars.int("INSUNITS");
     if let Some(v) = vars.get("VIEWDIR").cloned() {
         o.view_dir = DVec3::from_array(it.point(&v)?);
     }
@@ -196,6 +197,12 @@ pub fn output_options(
         }
         if let Some(t) = c.cam_tol {
             o.cam_tol = t;
+        }
+        if let Some(t) = c.cam_min_seg {
+            o.cam_min_seg = t;
+        }
+        if let Some(t) = c.dpi {
+            o.dpi = t;
         }
     }
     o.validate().map_err(draw_err)?;

@@ -44,6 +44,12 @@ pub struct Common {
     /// Arc-fitting tolerance of the CAM profile, in drawing units (mm).
     #[arg(long, global = true, value_name = "MM")]
     pub cam_tol: Option<f64>,
+    /// Shortest segment of the CAM profile, in drawing units (default 0.05).
+    #[arg(long, global = true, value_name = "MM")]
+    pub cam_min_seg: Option<f64>,
+    /// Resolution of PNG output, in pixels per inch (default 300).
+    #[arg(long, global = true, value_name = "N")]
+    pub dpi: Option<f64>,
     /// Scripted answers for getpoint/getreal/... (one per line).
     #[arg(long, global = true, value_name = "FILE")]
     pub answers: Option<PathBuf>,
@@ -94,6 +100,15 @@ pub enum Command {
     Doc,
     /// List the parameters a script declares with defparam (read, not run).
     Params { file: PathBuf },
+}
+
+/// A usage error message when an output's extension names no format lispcad writes, so the
+/// mistake is reported before anything runs.
+pub fn check_output_formats<P: AsRef<std::path::Path>>(outputs: &[P]) -> Result<(), String> {
+    for o in outputs {
+        crate::output::Format::from_path(o.as_ref()).map_err(|e| e.to_string())?;
+    }
+    Ok(())
 }
 
 /// Entry point; returns the process exit status.

@@ -14,7 +14,7 @@ use crate::lang::{ErrorKind, Interp};
 pub struct RunArgs {
     /// The script to evaluate.
     pub file: PathBuf,
-    /// Write the drawing here after the script ends (.svg or .dxf); repeatable.
+    /// Write the drawing here after the script ends (.svg, .dxf, .pdf, .png); repeatable.
     #[arg(short = 'o', long = "output", value_name = "OUT")]
     pub outputs: Vec<PathBuf>,
     /// Bind a global before the script runs: NAME=VALUE (VALUE read as a lispcad literal).
@@ -70,6 +70,10 @@ pub fn open_start_drawing(it: &mut Interp, common: &Common) -> Result<(), String
 }
 
 pub fn run(args: &RunArgs, common: &Common) -> i32 {
+    if let Err(msg) = super::check_output_formats(&args.outputs) {
+        eprintln!("error: {msg}");
+        return EXIT_USAGE;
+    }
     let mut it = match configured_interp(common) {
         Ok(it) => it,
         Err(msg) => {

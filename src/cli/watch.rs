@@ -66,6 +66,10 @@ fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
 }
 
 pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
+    if let Err(msg) = super::check_output_formats(&args.outputs) {
+        eprintln!("error: {msg}");
+        return EXIT_USAGE;
+    }
     if !args.file.is_file() {
         eprintln!("error: cannot read script {}", args.file.display());
         return EXIT_USAGE;

@@ -55,7 +55,8 @@ impl QuadSpline {
     /// each joint divides its two neighbouring controls in the joint's own ratio
     /// (h_next / h_prev = |C_next − J| / |J − C_prev|). Half the control points of
     /// `to_bspline`, and readers that mishandle repeated knots (LibreCAD) stay well-behaved.
-    /// `None` when a joint does not lie strictly between its controls (a degenerate leg).
+    /// `None` when a joint does not lie strictly between its controls (a degenerate leg), except
+    /// a corner where both legs are zero.
     pub fn to_bspline_simple_knots(&self) -> Option<BSpline> {
         let n = self.segments.len();
         let mut h = Vec::with_capacity(n);
@@ -67,6 +68,12 @@ impl QuadSpline {
                 self.segments[i + 1][1],
             );
             let (a, b) = (j.distance(c0), c1.distance(j));
+            if a == 0.0 && b == 0.0 {
+                // A corner (zero tangent on both sides, see quadspline_fit): any ratio gives
+                // the joint; keep the knot spacing.
+                h.push(h[i]);
+                continue;
+            }
             let collinear =
                 (c1 - c0).length() > 0.0 && ((a + b) - c1.distance(c0)).abs() <= 1e-9 * (a + b);
             if !(a > 0.0 && b > 0.0 && collinear) {
@@ -121,8 +128,9 @@ mod tests {
 
     #[test]
     fn simple_knot_form_traces_the_same_curve() {
+        // No right-angle corner (those get a zero tangent, a degenerate leg, by design).
         let pts: Vec<DVec3> = [
-            (0.0, -2.5),
+            (0.0, -2.0),
             (5.6, -2.5),
             (49.0, -2.1),
             (98.0, -1.75),
@@ -132,7 +140,7 @@ mod tests {
             (98.0, 1.75),
             (49.0, 2.1),
             (5.6, 2.5),
-            (0.0, 2.5),
+            (0.0, 2.0),
         ]
         .iter()
         .map(|(x, y)| DVec3::new(*x, *y, 0.0))

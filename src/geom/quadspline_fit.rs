@@ -1,16 +1,27 @@
 //! Interpolation for [`QuadSpline`]: the C1 quadratic spline ("二次样条") through every
-//! type-value point, open or closed.
+//! type-value point, open or closed, that does not overshoot.
 //!
-//! Method: quadratic B-spline interpolation with chord-length data parameters t_j and knots at
-//! the midpoints between consecutive data parameters (the averaging technique of Piegl & Tiller,
-//! The NURBS Book §9.2.1, for p = 2; periodic when closed). Each data parameter then lies inside
-//! its own span, the collocation matrix is tridiagonal (cyclic when closed) and totally
-//! nonnegative, so it is solved without pivoting (de Boor, A Practical Guide to Splines, ch. XIII).
-//! Each span is then split (de Casteljau) at its data parameter so that every type-value point is
-//! a segment end, and the result is laid out with exactly two Bézier segments between consecutive
-//! type-value points: point j sits at public parameter j/(n−1) (open) or j/n (closed).
+//! Method: a local, shape-preserving quadratic Hermite spline. The parameter is chord length
+//! (interval j has length h_j = |Q_{j+1} − Q_j|). The tangent at each point is chosen per
+//! coordinate of the points' principal axes (PCA frame, so the curve turns with the points:
+//! rotating the points rotates the spline): Bessel's three-point slope, set to zero where that
+//! coordinate has a local extremum at the point and clamped to twice the smaller neighbouring
+//! chord slope (the monotonicity filter of Hyman 1983 / Fritsch & Carlson 1980, with the bound
+//! the quadratic pair needs). Each interval is then two
+//! quadratic Bézier pieces [Q_j, Q_j + m_j·h_j/4, M], [M, Q_{j+1} − m_{j+1}·h_j/4, Q_{j+1}] with
+//! the joint M midway between the two inner controls (C1 there), and C1 at every type-value
+//! point in the chord-length parameter. With |m| ≤ 2·min(slopes) every control of an interval
+//! lies, coordinate by coordinate, between the interval's two type-value points, so the curve
+//! stays in the box of its two points (in the principal frame): no overshoot, however uneven
+//! the spacing. Why not a global chord-length or centripetal spline: both still overshoot next to
+//! a short chord between long ones (the README's temple tip bulged to ±13 between points at ±6
+//! with chord length); the local rule cannot. A point where every coordinate has an extremum (a
+//! right-angle turn between a chord along one axis and one along another, as at a temple's
+//! hinge corners) gets a zero tangent: a corner, which is what such points describe. The layout
+//! is two segments per interval: point j sits at public parameter j/(n−1) (open) or j/n
+//! (closed).
 
-use glam::DVec3;
+use glam::{DMat3, DVec3};
 
 use super::quadspline::QuadSpline;
 
@@ -35,123 +46,9 @@ pub enum QuadSplineError {
     },
 }
 
-/// Split the quadratic Bézier [a, b, c] at u (de Casteljau): (left, right).
-fn split(s: [DVec3; 3], u: f64) -> ([DVec3; 3], [DVec3; 3]) {
-    let ab = s[0].lerp(s[1], u);
-    let bc = s[1].lerp(s[2], u);
-    let m = ab.lerp(bc, u);
-    ([s[0], ab, m], [m, bc, s[2]])
-}
-
-/// Thomas algorithm for a tridiagonal system: sub a[i] (row i, column i−1), diagonal b, super c.
-/// Stable without pivoting for the totally nonnegative collocation matrices used here.
-fn solve_tridiagonal(a: &[f64], b: &[f64], c: &[f64], r: &[DVec3]) -> Vec<DVec3> {
-    let n = b.len();
-    let mut cp = vec![0.0; n];
-    let mut x = vec![DVec3::ZERO; n];
-    let mut denom = b[0];
-    cp[0] = c[0] / denom;
-    x[0] = r[0] / denom;
-    for i in 1..n {
-        denom = b[i] - a[i] * cp[i - 1];
-        cp[i] = c[i] / denom;
-        x[i] = (r[i] - x[i - 1] * a[i]) / denom;
-    }
-    for i in (0..n - 1).rev() {
-        x[i] = x[i] - x[i + 1] * cp[i];
-    }
-    x
-}
-
-/// Cyclic tridiagonal solve (Sherman–Morrison, Numerical Recipes §2.7 `cyclic`, γ = −b₀):
-/// a[0] is row 0's coefficient of x[n−1], c[n−1] row n−1's coefficient of x[0].
-fn solve_cyclic(a: &[f64], b: &[f64], c: &[f64], r: &[DVec3]) -> Vec<DVec3> {
-    let n = b.len();
-    // NR's names: β the top-right corner (row 0, column n−1), α the bottom-left.
-    let beta = a[0];
-    let alpha = c[n - 1];
-    let gamma = -b[0];
-    let mut bb = b.to_vec();
-    bb[0] = b[0] - gamma;
-    bb[n - 1] = b[n - 1] - alpha * beta / gamma;
-    let mut aa = a.to_vec();
-    aa[0] = 0.0;
-    let mut cc = c.to_vec();
-    cc[n - 1] = 0.0;
-    let x = solve_tridiagonal(&aa, &bb, &cc, r);
-    // The correction vector u = (γ, 0, …, 0, α) is scalar; solve it once per component alike.
-    let mut u = vec![DVec3::ZERO; n];
-    u[0] = DVec3::splat(gamma);
-    u[n - 1] = DVec3::splat(alpha);
-    let z = solve_tridiagonal(&aa, &bb, &cc, &u);
-    let z0 = z[0].x;
-    let zn = z[n - 1].x;
-    let fact = (x[0] + x[n - 1] * (beta / gamma)) / (1.0 + z0 + beta * zn / gamma);
-    x.iter().zip(&z).map(|(xi, zi)| *xi - fact * zi.x).collect()
-}
-
-/// The collocation system of one interpolation problem, kept so a residual can be re-solved
-/// (one step of iterative refinement when the first solve is not accurate enough).
-struct System {
-    a: Vec<f64>,
-    b: Vec<f64>,
-    c: Vec<f64>,
-    cyclic: bool,
-}
-
-impl System {
-    fn solve(&self, r: &[DVec3]) -> Vec<DVec3> {
-        if self.cyclic {
-            solve_cyclic(&self.a, &self.b, &self.c, r)
-        } else {
-            solve_tridiagonal(&self.a, &self.b, &self.c, r)
-        }
-    }
-
-    /// A·x for the unknowns alone (fixed end points excluded).
-    fn apply(&self, x: &[DVec3]) -> Vec<DVec3> {
-        let n = x.len();
-        (0..n)
-            .map(|i| {
-                let mut v = x[i] * self.b[i];
-                if i > 0 {
-                    v += x[i - 1] * self.a[i];
-                } else if self.cyclic {
-                    v += x[n - 1] * self.a[0];
-                }
-                if i + 1 < n {
-                    v += x[i + 1] * self.c[i];
-                } else if self.cyclic {
-                    v += x[0] * self.c[n - 1];
-                }
-                v
-            })
-            .collect()
-    }
-
-    /// Solve, then refine once if the residual is above a few ulps of the data scale.
-    fn solve_refined(&self, r: &[DVec3], scale: f64) -> Vec<DVec3> {
-        let mut x = self.solve(r);
-        let res: Vec<DVec3> = self
-            .apply(&x)
-            .iter()
-            .zip(r)
-            .map(|(ax, ri)| *ri - *ax)
-            .collect();
-        let worst = res.iter().map(|v| v.length()).fold(0.0, f64::max);
-        if worst > 1e-14 * scale {
-            let dx = self.solve(&res);
-            for (xi, d) in x.iter_mut().zip(dx) {
-                *xi += d;
-            }
-        }
-        x
-    }
-}
-
 impl QuadSpline {
-    /// The C1 quadratic interpolating spline through `points` (see the module doc for the
-    /// method). Open: at least 2 points (2 points give a straight segment). Closed: at least 3;
+    /// The C1 quadratic interpolating spline through `points`, shape-preserving (see the module
+    /// doc for the method). Open: at least 2 points (2 points give a straight segment). Closed: at least 3;
     /// periodic, C1 at the seam; a last point equal to the first is taken as the closing point
     /// and dropped. Errors name the offending point index.
     pub fn interpolate(points: &[DVec3], closed: bool) -> Result<QuadSpline, QuadSplineError> {
@@ -191,17 +88,8 @@ impl QuadSpline {
                 distance: h[j],
             });
         }
-        let segments = if closed {
-            closed_segments(&pts, &h, scale)
-        } else if n == 2 {
-            let m = pts[0].lerp(pts[1], 0.5);
-            vec![
-                [pts[0], pts[0].lerp(pts[1], 0.25), m],
-                [m, pts[0].lerp(pts[1], 0.75), pts[1]],
-            ]
-        } else {
-            open_segments(&pts, &h, scale)
-        };
+        let tangents = shape_preserving_tangents(&pts, &h, closed);
+        let segments = hermite_segments(&pts, &h, &tangents, closed);
         Ok(QuadSpline {
             points: pts,
             closed,
@@ -210,137 +98,142 @@ impl QuadSpline {
     }
 }
 
-/// Coefficients of the row for the data point inside a span of length `d` at local parameter
-/// `u`, given the neighbouring spans' lengths (None for a clamped end, whose joint is fixed).
-/// Returns (coef of P_prev, coef of P_this, coef of P_next).
-fn row(u: f64, d: f64, d_prev: Option<f64>, d_next: Option<f64>) -> (f64, f64, f64) {
-    let w0 = (1.0 - u) * (1.0 - u);
-    let w2 = u * u;
-    let mut diag = 2.0 * u * (1.0 - u);
-    let mut a = 0.0;
-    let mut c = 0.0;
-    if let Some(dp) = d_prev {
-        a = w0 * d / (dp + d);
-        diag += w0 * dp / (dp + d);
+/// The principal axes of the points (columns of the result), an orthonormal frame; the identity
+/// when the spread is isotropic enough that no axis is preferred (then world axes are as good).
+fn principal_axes(pts: &[DVec3]) -> DMat3 {
+    let n = pts.len() as f64;
+    let c = pts.iter().copied().sum::<DVec3>() / n;
+    let mut a = [[0.0f64; 3]; 3];
+    for p in pts {
+        let d = (*p - c).to_array();
+        for (i, row) in a.iter_mut().enumerate() {
+            for (j, v) in row.iter_mut().enumerate() {
+                *v += d[i] * d[j];
+            }
+        }
     }
-    if let Some(dn) = d_next {
-        c = w2 * d / (d + dn);
-        diag += w2 * dn / (d + dn);
+    let (vals, vecs) = jacobi_eigen(a);
+    // Sort by decreasing spread; ties (within 1e-9 relative) keep world order for determinism.
+    let mut idx = [0usize, 1, 2];
+    idx.sort_by(|&i, &j| vals[j].total_cmp(&vals[i]).then(i.cmp(&j)));
+    let top = vals[idx[0]].abs().max(1e-300);
+    if (vals[idx[0]] - vals[idx[1]]).abs() <= 1e-9 * top {
+        return DMat3::IDENTITY;
     }
-    (a, diag, c)
+    let col = |k: usize| DVec3::new(vecs[0][k], vecs[1][k], vecs[2][k]);
+    let (mut e0, e1) = (col(idx[0]), col(idx[1]));
+    // A deterministic sign: the axis points the way the points run (first to last).
+    if (pts[pts.len() - 1] - pts[0]).dot(e0) < 0.0 {
+        e0 = -e0;
+    }
+    let e2 = e0.cross(e1);
+    DMat3::from_cols(e0, e2.cross(e0), e2)
 }
 
-/// The C1 joint at the knot between a span of length `d0` (control p0) and the next of length
-/// `d1` (control p1).
-fn joint(p0: DVec3, p1: DVec3, d0: f64, d1: f64) -> DVec3 {
-    (p0 * d1 + p1 * d0) / (d0 + d1)
+/// Eigen-decomposition of a symmetric 3×3 matrix by cyclic Jacobi rotations: (eigenvalues,
+/// eigenvectors as columns).
+fn jacobi_eigen(mut a: [[f64; 3]; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
+    let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    for _ in 0..50 {
+        let off = a[0][1].abs() + a[0][2].abs() + a[1][2].abs();
+        let diag = a[0][0].abs() + a[1][1].abs() + a[2][2].abs();
+        if off <= 1e-300 || off <= 1e-15 * diag {
+            break;
+        }
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            if a[p][q].abs() <= 1e-300 {
+                continue;
+            }
+            let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+            let t = if theta == 0.0 { 1.0 } else { t };
+            let c = 1.0 / (t * t + 1.0).sqrt();
+            let s = t * c;
+            for row in a.iter_mut() {
+                let (akp, akq) = (row[p], row[q]);
+                row[p] = c * akp - s * akq;
+                row[q] = s * akp + c * akq;
+            }
+            let (rp, rq) = (a[p], a[q]);
+            for k in 0..3 {
+                a[p][k] = c * rp[k] - s * rq[k];
+                a[q][k] = s * rp[k] + c * rq[k];
+            }
+            for row in v.iter_mut() {
+                let (vp, vq) = (row[p], row[q]);
+                row[p] = c * vp - s * vq;
+                row[q] = s * vp + c * vq;
+            }
+        }
+    }
+    ([a[0][0], a[1][1], a[2][2]], v)
 }
 
-fn closed_segments(q: &[DVec3], h: &[f64], scale: f64) -> Vec<[DVec3; 3]> {
-    let n = q.len();
-    let prev = |j: usize| (j + n - 1) % n;
-    // Span j = [m_{j-1}, m_j] holds t_j; its length and the local parameter of t_j in it.
-    let d: Vec<f64> = (0..n).map(|j| 0.5 * (h[prev(j)] + h[j])).collect();
-    let u: Vec<f64> = (0..n).map(|j| h[prev(j)] / (h[prev(j)] + h[j])).collect();
-    let mut sys = System {
-        a: vec![0.0; n],
-        b: vec![0.0; n],
-        c: vec![0.0; n],
-        cyclic: true,
-    };
-    for j in 0..n {
-        let (a, b, c) = row(u[j], d[j], Some(d[prev(j)]), Some(d[(j + 1) % n]));
-        sys.a[j] = a;
-        sys.b[j] = b;
-        sys.c[j] = c;
+/// One coordinate's tangent at a point between chord slopes `a` (before, chord length `ha`) and
+/// `b` (after, `hb`): Bessel's estimate (the slope at the point of the parabola through the three
+/// points), zero where the coordinate turns back or flattens, and clamped to twice the smaller
+/// slope so neither neighbouring interval can overshoot (the Hyman filter with the quadratic
+/// pair's bound 2 in place of the cubic's 3).
+fn limited_slope(a: f64, b: f64, ha: f64, hb: f64) -> f64 {
+    if a * b <= 0.0 {
+        return 0.0;
     }
-    let p = sys.solve_refined(q, scale);
-    // J_j: the joint between span j and span j+1.
-    let jn: Vec<DVec3> = (0..n)
-        .map(|j| joint(p[j], p[(j + 1) % n], d[j], d[(j + 1) % n]))
-        .collect();
-    let halves: Vec<([DVec3; 3], [DVec3; 3])> = (0..n)
+    let bessel = (hb * a + ha * b) / (ha + hb);
+    let cap = 2.0 * a.abs().min(b.abs());
+    bessel.clamp(-cap, cap)
+}
+
+/// The tangent (derivative in the chord-length parameter) at every point, computed in the
+/// points' principal frame and returned in world coordinates.
+pub(crate) fn shape_preserving_tangents(pts: &[DVec3], h: &[f64], closed: bool) -> Vec<DVec3> {
+    let n = pts.len();
+    let frame = principal_axes(pts);
+    let inv = frame.transpose();
+    let slope = |j: usize| inv * ((pts[(j + 1) % n] - pts[j]) / h[j]);
+    let intervals = h.len();
+    (0..n)
         .map(|j| {
-            let (mut l, mut r) = split([jn[prev(j)], p[j], jn[j]], u[j]);
-            l[2] = q[j];
-            r[0] = q[j];
-            (l, r)
+            let limited = |i: usize, k: usize| {
+                let (a, b) = (slope(i), slope(k));
+                let (ha, hb) = (h[i], h[k]);
+                DVec3::new(
+                    limited_slope(a.x, b.x, ha, hb),
+                    limited_slope(a.y, b.y, ha, hb),
+                    limited_slope(a.z, b.z, ha, hb),
+                )
+            };
+            let local = if closed {
+                limited((j + n - 1) % n, j)
+            } else if j == 0 {
+                slope(0)
+            } else if j == intervals {
+                slope(intervals - 1)
+            } else {
+                limited(j - 1, j)
+            };
+            frame * local
         })
-        .collect();
-    let mut segs = Vec::with_capacity(2 * n);
-    for j in 0..n {
-        segs.push(halves[j].1);
-        segs.push(halves[(j + 1) % n].0);
-    }
-    segs
+        .collect()
 }
 
-fn open_segments(q: &[DVec3], h: &[f64], scale: f64) -> Vec<[DVec3; 3]> {
-    let n = q.len();
-    // Data parameters (chord length) and span boundaries: m_0 = t_0, m_j = (t_j + t_{j+1})/2
-    // for 1 ≤ j ≤ n−3, m_{n−2} = t_{n−1}. Span j (1 ≤ j ≤ n−2) holds t_j and has control P_j.
-    let mut t = vec![0.0; n];
-    for j in 0..n - 1 {
-        t[j + 1] = t[j] + h[j];
-    }
-    let mut m = vec![0.0; n - 1];
-    m[0] = t[0];
-    for j in 1..n - 2 {
-        m[j] = 0.5 * (t[j] + t[j + 1]);
-    }
-    m[n - 2] = t[n - 1];
-    let k = n - 2; // unknowns P_1..P_{n-2}, stored at index j-1
-    let d: Vec<f64> = (1..=k).map(|j| m[j] - m[j - 1]).collect();
-    let u: Vec<f64> = (1..=k).map(|j| (t[j] - m[j - 1]) / d[j - 1]).collect();
-    let mut sys = System {
-        a: vec![0.0; k],
-        b: vec![0.0; k],
-        c: vec![0.0; k],
-        cyclic: false,
-    };
-    let mut rhs: Vec<DVec3> = q[1..=k].to_vec();
-    for i in 0..k {
-        let dp = (i > 0).then(|| d[i - 1]);
-        let dn = (i + 1 < k).then(|| d[i + 1]);
-        let (a, b, c) = row(u[i], d[i], dp, dn);
-        sys.a[i] = a;
-        sys.b[i] = b;
-        sys.c[i] = c;
-        // The clamped ends' joints are the fixed end points themselves.
-        if i == 0 {
-            rhs[i] -= q[0] * ((1.0 - u[i]) * (1.0 - u[i]));
-        }
-        if i + 1 == k {
-            rhs[i] -= q[n - 1] * (u[i] * u[i]);
-        }
-    }
-    let p = sys.solve_refined(&rhs, scale);
-    // Joints: jn[0] = Q_0, jn[i] between span i and i+1 (1-based spans), jn[k] = Q_{n-1}.
-    let mut jn = vec![q[0]; k + 1];
-    for i in 1..k {
-        jn[i] = joint(p[i - 1], p[i], d[i - 1], d[i]);
-    }
-    jn[k] = q[n - 1];
-    let mut segs = Vec::with_capacity(2 * (n - 1));
-    for i in 0..k {
-        let (mut l, mut r) = split([jn[i], p[i], jn[i + 1]], u[i]);
-        l[2] = q[i + 1];
-        r[0] = q[i + 1];
-        if i == 0 {
-            // The first interval [Q_0, Q_1] is a single piece: halve it so every interval has two.
-            let (a, b) = split(l, 0.5);
-            segs.push(a);
-            segs.push(b);
-        } else {
-            segs.push(l);
-        }
-        if i + 1 == k {
-            let (a, b) = split(r, 0.5);
-            segs.push(a);
-            segs.push(b);
-        } else {
-            segs.push(r);
-        }
+/// Two quadratic pieces per interval from the points and their chord-length tangents (see the
+/// module doc): C1 at the joints and, in the chord-length parameter, at the points.
+pub(crate) fn hermite_segments(
+    pts: &[DVec3],
+    h: &[f64],
+    tangents: &[DVec3],
+    closed: bool,
+) -> Vec<[DVec3; 3]> {
+    let n = pts.len();
+    let intervals = if closed { n } else { n - 1 };
+    let mut segs = Vec::with_capacity(2 * intervals);
+    for j in 0..intervals {
+        let k = (j + 1) % n;
+        let c0 = pts[j] + tangents[j] * (0.25 * h[j]);
+        let c1 = pts[k] - tangents[k] * (0.25 * h[j]);
+        let m = c0.lerp(c1, 0.5);
+        segs.push([pts[j], c0, m]);
+        segs.push([m, c1, pts[k]]);
     }
     segs
 }
@@ -350,26 +243,26 @@ mod tests {
     use super::*;
 
     #[test]
-    fn cyclic_solver_matches_dense() {
-        let a = [0.2, 0.1, 0.3, 0.25];
-        let b = [0.6, 0.7, 0.5, 0.6];
-        let c = [0.2, 0.2, 0.2, 0.15];
-        let x_true = [
-            DVec3::new(1.0, 2.0, 3.0),
-            DVec3::new(-1.0, 0.5, 0.0),
-            DVec3::new(4.0, -2.0, 1.0),
-            DVec3::new(0.0, 1.0, -1.0),
-        ];
-        let sys = System {
-            a: a.to_vec(),
-            b: b.to_vec(),
-            c: c.to_vec(),
-            cyclic: true,
-        };
-        let r = sys.apply(&x_true);
-        let x = sys.solve(&r);
-        for (p, q) in x.iter().zip(&x_true) {
-            assert!((*p - *q).length() < 1e-13, "{p} vs {q}");
+    fn eigen_of_diagonal_and_rotated() {
+        let (vals, _) = jacobi_eigen([[3.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 2.0]]);
+        assert_eq!(vals, [3.0, 1.0, 2.0]);
+        // [[2,1,0],[1,2,0],[0,0,0]]: eigenvalues 3, 1, 0.
+        let (mut vals, _) = jacobi_eigen([[2.0, 1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 0.0]]);
+        vals.sort_by(f64::total_cmp);
+        for (v, w) in vals.iter().zip([0.0, 1.0, 3.0]) {
+            assert!((v - w).abs() < 1e-12, "{vals:?}");
         }
+    }
+
+    #[test]
+    fn slope_is_bounded_by_twice_the_smaller() {
+        for (a, b) in [(1.0, 10.0), (0.1, 0.2), (-3.0, -0.5), (5.0, 5.0)] {
+            let m = limited_slope(a, b, 1.0, 3.0);
+            let lim = 2.0 * f64::min(a.abs(), b.abs());
+            assert!(m.abs() <= lim + 1e-15 && m * a >= 0.0, "{a} {b} {m}");
+        }
+        assert_eq!(limited_slope(1.0, -1.0, 1.0, 1.0), 0.0);
+        assert_eq!(limited_slope(0.0, 2.0, 1.0, 1.0), 0.0);
+        assert_eq!(limited_slope(1.0, 2.0, 1.0, 1.0), 1.5);
     }
 }

@@ -258,9 +258,11 @@ pub enum CenterPiece {
 
 /// The bent centerline: key points P1..P4 and O1 (z = 0) and the arc's data.
 ///
-/// The arc's angles are measured CCW from +X about the normal (0, 0, 1). For θ > 0 the arc
-/// runs clockwise along the centerline (P2 → P3), so CCW it goes from P3 (start_angle =
-/// π/2 − θ) to P2 (end_angle = π/2); for θ < 0 it goes CCW from P2 (3π/2) to P3 (3π/2 + |θ|).
+/// The arc runs P2 → P3, so the three pieces join head to tail. Its angles are measured CCW
+/// about its normal from the X axis of that normal's arbitrary-axis frame (as DXF). For θ > 0 the
+/// bend turns clockwise in XY, which is counter-clockwise about the normal (0, 0, −1), whose
+/// frame's X axis is −X: from P2 (start_angle = π/2) to P3 (end_angle = π/2 + θ). For θ < 0 the
+/// normal is (0, 0, 1), from P2 (3π/2) to P3 (3π/2 + |θ|).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TempleCenterline {
     pub p1: DVec3,
@@ -331,7 +333,9 @@ impl TempleCenterline {
         };
         let mut best = seg(self.p1, self.p2).min(seg(self.p3, self.p4));
         let v = p - self.o1;
-        let ang = v.y.atan2(v.x).rem_euclid(TAU);
+        // The angle in the arc's own frame (the normal may be −Z).
+        let (ax, ay) = crate::geom::frame::arbitrary_axis(self.normal);
+        let ang = v.dot(ay).atan2(v.dot(ax)).rem_euclid(TAU);
         let rel = (ang - self.start_angle).rem_euclid(TAU);
         if rel <= self.sweep() {
             best = best.min(
@@ -356,10 +360,14 @@ pub fn centerline(p: &TempleParams) -> Result<TempleCenterline, TempleError> {
     let o1 = b.world(b.l, -b.r, 0.0);
     let p3 = b.world(b.l + b.r * b.sin, -b.r + b.r * b.cos, 0.0);
     let p4 = p3 + DVec3::new(b.lp * b.cos, -g * b.lp * b.sin, 0.0);
-    let (start_angle, end_angle) = if g > 0.0 {
-        ((FRAC_PI_2 - b.th).rem_euclid(TAU), FRAC_PI_2)
+    let (start_angle, end_angle, normal) = if g > 0.0 {
+        (FRAC_PI_2, FRAC_PI_2 + b.th, DVec3::NEG_Z)
     } else {
-        (3.0 * FRAC_PI_2, (3.0 * FRAC_PI_2 + b.th).rem_euclid(TAU))
+        (
+            3.0 * FRAC_PI_2,
+            (3.0 * FRAC_PI_2 + b.th).rem_euclid(TAU),
+            DVec3::Z,
+        )
     };
     Ok(TempleCenterline {
         p1,
@@ -372,7 +380,7 @@ pub fn centerline(p: &TempleParams) -> Result<TempleCenterline, TempleError> {
         radius: b.r,
         start_angle,
         end_angle,
-        normal: DVec3::Z,
+        normal,
     })
 }
 

@@ -430,6 +430,9 @@ fn hermite_pair(
     ends: [DVec3; 2],
     tans: [DVec3; 2],
 ) -> Result<[[DVec3; 3]; 2], TempleError> {
+    if let Some(pair) = rigid_pair(orig, bend, span) {
+        return Ok(pair);
+    }
     let [a, b] = ends;
     let [ta, tb] = tans;
     let tm = 0.5 * (span.0 + span.1);
@@ -452,4 +455,27 @@ fn hermite_pair(
             }
         },
     )
+}
+
+/// The original's two segments of `span`, moved by the bend, when the whole span lies where
+/// the bend is rigid (before the bend, or beyond it): the map is affine there, so the moved
+/// controls give the exact image — corners (zero tangents) and straight runs included.
+fn rigid_pair(orig: &QuadSpline, bend: &Bend, span: (f64, f64)) -> Option<[[DVec3; 3]; 2]> {
+    let n = orig.segments.len() as f64;
+    let (k0, k1) = (span.0 * n, span.1 * n);
+    let first = k0.round();
+    if (k0 - first).abs() > 1e-9 || (k1 - first - 2.0).abs() > 1e-9 || first < 0.0 {
+        return None;
+    }
+    let i = first as usize;
+    let segs = [*orig.segments.get(i)?, *orig.segments.get(i + 1)?];
+    let end = bend.l + bend.r * bend.th;
+    let ss = segs.iter().flatten().map(|p| bend.local(*p).0);
+    let (lo, hi) = ss.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+        (lo.min(s), hi.max(s))
+    });
+    if !(hi <= bend.l || bend.th == 0.0 || lo >= end) {
+        return None;
+    }
+    Some(segs.map(|sg| sg.map(|p| bend.map(p))))
 }

@@ -493,8 +493,24 @@ struct Item<'a> {
     dropped: bool,
 }
 
+/// A CAM file and what was left out of it, for the user.
+pub struct CamOutput {
+    pub dxf: String,
+    pub warnings: Vec<String>,
+}
+
 /// Write the drawing as the CAM profile (R12) with splines fitted within `tol`.
 pub fn write_cam(d: &Drawing, tol: f64) -> String {
+    let opts = super::OutputOptions {
+        cam_tol: tol,
+        ..Default::default()
+    };
+    write_cam_with(d, &opts).dxf
+}
+
+/// The CAM profile with the writer options (`cam_tol`, `cam_min_seg`, `insunits`).
+pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
+    let tol = opts.cam_tol;
     let mut items: Vec<Item> = Vec::new();
     for e in d.entities() {
         for prim in to_prims(e, tol) {
@@ -602,7 +618,10 @@ pub fn write_cam(d: &Drawing, tol: f64) -> String {
     }
     w.str(0, "ENDSEC");
     w.str(0, "EOF");
-    w.out
+    CamOutput {
+        dxf: w.out,
+        warnings: Vec::new(),
+    }
 }
 
 fn head(w: &mut DxfWriter, kind: &str, layer: &str, color: Option<i16>) {

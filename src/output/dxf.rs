@@ -48,6 +48,11 @@ const H_MLINESTYLE_STANDARD: u64 = 0x1F;
 
 /// Write the drawing as AutoCAD R2000 DXF (the CAD profile).
 pub fn write_cad(d: &Drawing) -> String {
+    write_cad_units(d, 4)
+}
+
+/// `write_cad` with the drawing unit (`$INSUNITS` code) in the header.
+pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     let mut w = DxfWriter::new();
     let mut next = d.next_handle();
     let mut alloc = || {
@@ -131,9 +136,9 @@ pub fn write_cad(d: &Drawing) -> String {
     var(&mut w, "$HANDSEED");
     w.handle(5, handseed);
     var(&mut w, "$MEASUREMENT");
-    w.int(70, 1);
+    w.int(70, super::measurement(insunits) as i64);
     var(&mut w, "$INSUNITS");
-    w.int(70, 4);
+    w.int(70, insunits as i64);
     w.str(0, "ENDSEC");
 
     // ---- CLASSES: the class-defined objects used in OBJECTS ----
@@ -642,7 +647,9 @@ pub(crate) fn write_entity(
             w.str(8, &e.layer);
         }
         EntityKind::Spline {
-            curve, fit_points, ..
+            curve,
+            fit_points,
+            closed,
         } => {
             entity_head(w, "SPLINE", e.handle, owner, e);
             w.str(100, "AcDbSpline");
@@ -650,7 +657,7 @@ pub(crate) fn write_entity(
             if let Some(n) = plane {
                 w.point(210, n);
             }
-            let mut flags = 0;
+            let mut flags = *closed as i64;
             if plane.is_some() {
                 flags |= 8;
             }

@@ -1,4 +1,5 @@
-//! The drawing model and its writers (SVG, DXF in two profiles), with atomic saving.
+//! The drawing model and its writers (SVG, DXF in two profiles, PDF and PNG through the SVG),
+//! with atomic saving.
 
 pub mod aci;
 pub mod atomic;
@@ -11,6 +12,8 @@ pub mod dxf_opened;
 pub mod dxf_writer;
 pub mod dxfin;
 pub mod entity;
+pub mod pdf;
+pub mod png;
 pub mod record;
 pub mod svg;
 
@@ -52,8 +55,16 @@ pub struct OutputOptions {
     pub view_dir: DVec3,
     /// SVG: stroke width in millimetres.
     pub stroke_width_mm: f64,
-    /// SVG: blank border around the extents, in drawing units.
+    /// SVG, PDF, PNG: blank border around the extents, in millimetres on paper.
     pub margin: f64,
+    /// The drawing unit (`INSUNITS`: 4 mm, 1 inch, ...): the DXF header and the physical size
+    /// of SVG, PDF and PNG.
+    pub insunits: i32,
+    /// PNG: pixels per inch.
+    pub dpi: f64,
+    /// CAM profile: the shortest segment written (drawing units) unless the geometry itself is
+    /// shorter.
+    pub cam_min_seg: f64,
 }
 
 impl Default for OutputOptions {
@@ -64,6 +75,9 @@ impl Default for OutputOptions {
             view_dir: DVec3::Z,
             stroke_width_mm: 0.25,
             margin: 5.0,
+            insunits: 4,
+            dpi: 300.0,
+            cam_min_seg: 0.05,
         }
     }
 }
@@ -77,7 +91,7 @@ pub enum OutputError {
         #[source]
         source: std::io::Error,
     },
-    #[error("unknown output format {0:?}: the file name must end in .svg or .dxf")]
+    #[error("unknown output format {0:?}: the file name must end in .svg, .dxf, .pdf or .png")]
     UnknownFormat(String),
     #[error("unknown DXF profile {0:?}: expected \"CAD\" or \"CAM\"")]
     BadProfile(String),
@@ -85,6 +99,16 @@ pub enum OutputError {
     BadTolerance(f64),
     #[error("view direction must be a finite non-zero vector")]
     BadViewDir,
+    #[error("INSUNITS must be a DXF unit code 0..=24, got {0}")]
+    BadUnits(i32),
+    #[error("dpi must be between 1 and 10000, got {0}")]
+    BadDpi(f64),
+    #[error("cam_min_seg must be zero or positive and finite, got {0}")]
+    BadMinSeg(f64),
+    #[error("the drawing at {dpi} dpi would be {w}x{h} pixels, more than a PNG should hold")]
+    TooLarge { dpi: f64, w: f64, h: f64 },
+    #[error("cannot convert the SVG: {0}")]
+    Convert(String),
     #[error("entity {handle:X}: {source}")]
     BadEntity {
         handle: u64,
@@ -101,7 +125,58 @@ impl OutputOptions {
         if !self.view_dir.is_finite() || self.view_dir.length() < 1e-12 {
             return Err(OutputError::BadViewDir);
         }
+        if !(0..=24).contains(&self.insunits) {
+            return Err(OutputError::BadUnits(self.insunits));
+        }
+        if !(self.dpi.is_finite() && (1.0..=10000.0).contains(&self.dpi)) {
+            return Err(OutputError::BadDpi(self.dpi));
+        }
+        if !(self.cam_min_seg.is_finite() && self.cam_min_seg >= 0.0) {
+            return Err(OutputError::BadMinSeg(self.cam_min_seg));
+        }
         Ok(())
+    }
+
+    /// Millimetres per drawing unit.
+    pub fn unit_mm(&self) -> f64 {
+        unit_mm(self.insunits)
+    }
+}
+
+/// Millimetres per drawing unit for a DXF `$INSUNITS` code; unitless (0) and the codes without
+/// a fixed length (astronomical, parsecs) draw as millimetres.
+pub fn unit_mm(insunits: i32) -> f64 {
+    match insunits {
+        1 => 25.4,
+        2 => 304.8,
+        3 => 1_609_344.0,
+        5 => 10.0,
+        6 => 1000.0,
+        7 => 1e6,
+        8 => 25.4e-6,
+        9 => 0.0254,
+        10 => 914.4,
+        11 => 1e-7,
+        12 => 1e-6,
+        13 => 1e-3,
+        14 => 100.0,
+        15 => 1e4,
+        16 => 1e5,
+        17 => 1e12,
+        21 => 1200.0 / 3937.0 * 1000.0,
+        22 => 1200.0 / 3937.0 * 1000.0 / 12.0,
+        23 => 1200.0 / 3937.0 * 1000.0 * 3.0,
+        24 => 1200.0 / 3937.0 * 1000.0 * 5280.0,
+        _ => 1.0,
+    }
+}
+
+/// `$MEASUREMENT` for a unit: 0 imperial (inches, feet, miles, mils, yards, US survey), 1
+/// metric.
+pub fn measurement(insunits: i32) -> i32 {
+    match insunits {
+        1 | 2 | 3 | 8 | 9 | 10 | 21..=24 => 0,
+        _ => 1,
     }
 }
 
@@ -110,6 +185,8 @@ impl OutputOptions {
 pub enum Format {
     Svg,
     Dxf,
+    Pdf,
+    Png,
 }
 
 impl Format {
@@ -123,6 +200,8 @@ impl Format {
         match ext.as_str() {
             "svg" => Ok(Format::Svg),
             "dxf" => Ok(Format::Dxf),
+            "pdf" => Ok(Format::Pdf),
+            "png" => Ok(Format::Png),
             _ => Err(OutputError::UnknownFormat(path.display().to_string())),
         }
     }
@@ -148,13 +227,22 @@ pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u
         Format::Dxf => match (opts.dxf_profile, d.document()) {
             // An opened drawing is written back in its own version and code page.
             (DxfProfile::Cad, Some(doc)) => dxf_opened::write_opened(d, doc),
-            (DxfProfile::Cad, None) => dxf::encode_cp1252(dxf::write_cad(d)),
-            (DxfProfile::Cam, _) => dxf::encode_cp1252(cam::write_cam(d, opts.cam_tol)),
+            (DxfProfile::Cad, None) => dxf::encode_cp1252(dxf::write_cad_units(d, opts.insunits)),
+            (DxfProfile::Cam, _) => {
+                let out = cam::write_cam_with(d, opts);
+                for w in &out.warnings {
+                    eprintln!("warning: CAM: {w}");
+                }
+                dxf::encode_cp1252(out.dxf)
+            }
         },
+        Format::Pdf => pdf::svg_to_pdf(&svg::write_svg(d, opts))?,
+        Format::Png => png::svg_to_png(&svg::write_svg(d, opts), opts.dpi)?,
     })
 }
 
-/// Write the drawing to `path` atomically, in the format of its extension (.svg or .dxf).
+/// Write the drawing to `path` atomically, in the format of its extension (.svg, .dxf, .pdf,
+/// .png).
 pub fn save(d: &Drawing, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
     let format = Format::from_path(path)?;
     let bytes = render(d, format, opts)?;

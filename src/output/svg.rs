@@ -1,5 +1,6 @@
 //! SVG output: one Inkscape layer (`<g inkscape:groupmode="layer">`) per drawing layer,
-//! 1 drawing unit = 1 mm (`width`/`height` in mm, `viewBox` in drawing units), Y up by a single
+//! at true scale in the drawing's unit (`INSUNITS`: `width`/`height` in mm, or in inches for an
+//! inch drawing; `viewBox` in drawing units), Y up by a single
 //! `scale(1,-1)` on each layer group, so path data is in drawing coordinates.
 //!
 //! Geometry is projected orthographically along the view direction (VIEWDIR, default +Z = plan
@@ -396,7 +397,8 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         lo = DVec2::ZERO;
         hi = DVec2::ZERO;
     }
-    let m = opts.margin.max(0.0);
+    let unit = opts.unit_mm();
+    let m = opts.margin.max(0.0) / unit;
     let (x0, y0) = (lo.x - m, -(hi.y + m));
     let (w, h) = (
         (hi.x - lo.x + 2.0 * m).max(1e-6),
@@ -409,10 +411,16 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         }
         num(&mut vb, x);
     }
+    // Physical size: an inch drawing is sized in inches, everything else in millimetres.
+    let (per_unit, suffix) = if opts.insunits == 1 {
+        (1.0, "in")
+    } else {
+        (unit, "mm")
+    };
     let mm = |x: f64| {
         let mut s = String::new();
-        num(&mut s, x);
-        s.push_str("mm");
+        num(&mut s, x * per_unit);
+        s.push_str(suffix);
         s
     };
     let mut doc = Document::new()
@@ -437,7 +445,7 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         }
     }
     let mut sw = String::new();
-    num(&mut sw, opts.stroke_width_mm);
+    num(&mut sw, opts.stroke_width_mm / unit);
     for (i, (layer, ents)) in layers.iter().zip(&buckets).enumerate() {
         if ents.is_empty() {
             continue;
@@ -507,6 +515,24 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
     let mut s = doc.to_string();
     s.push('\n');
     s
+}
+
+/// The usvg tree of an SVG this module wrote (for the PDF and PNG writers). Fonts are the
+/// system's, loaded once per process and only when the SVG has text.
+pub fn usvg_tree(svg: &str) -> Result<usvg::Tree, super::OutputError> {
+    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
+        std::sync::OnceLock::new();
+    let mut opt = usvg::Options::default();
+    if svg.contains("<text") {
+        opt.fontdb = FONTS
+            .get_or_init(|| {
+                let mut db = usvg::fontdb::Database::new();
+                db.load_system_fonts();
+                std::sync::Arc::new(db)
+            })
+            .clone();
+    }
+    usvg::Tree::from_str(svg, &opt).map_err(|e| super::OutputError::Convert(e.to_string()))
 }
 
 #[cfg(test)]

@@ -67,6 +67,8 @@ fn open_source(args: &BatchArgs) -> Result<Source, String> {
 
 /// Usage checks before any row runs: pattern fields exist, outputs do not clash.
 fn check_plan(src: &Source, files: &OutputFiles) -> Result<(), String> {
+    // The format comes from the pattern's extension, which no field changes.
+    super::check_output_formats(&files.patterns)?;
     match src.in_memory() {
         Some(rows) => files.check_clashes(rows),
         None => {
