@@ -5,8 +5,10 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+pub mod analysis;
 pub mod batch;
 pub mod check;
+pub mod completions;
 pub mod diag;
 pub mod doc;
 pub mod repl;
@@ -70,9 +72,18 @@ pub enum Command {
     /// Re-run a script whenever it (or a file it loads) changes, rewriting the outputs.
     Watch(watch::WatchArgs),
     /// Parse and lint without running; non-zero exit on errors.
-    Check { files: Vec<PathBuf> },
-    /// Print the reference of every builtin.
-    Doc,
+    Check(check::CheckArgs),
+    /// Print the reference of every builtin (or of one).
+    Doc {
+        /// A builtin's name: print only its signature and description.
+        name: Option<String>,
+    },
+    // Editor and shell support (issue 16).
+    /// Print a shell completion script: `lispcad completions bash > /etc/bash_completion.d/lispcad`.
+    Completions {
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
 }
 
 /// Entry point; returns the process exit status.
@@ -96,12 +107,14 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Repl { files }) => repl::repl(&files, &common),
         Some(Command::Run(args)) => run::run(&args, &common),
         Some(Command::Eval { expr, set }) => run::eval_expr(&expr, &set, &common),
-        Some(Command::Check { files }) => check::check(&files),
+        Some(Command::Check(args)) => check::check(&args),
         Some(Command::Batch(args)) => batch::batch(&args, &common),
         Some(Command::Watch(args)) => watch::watch(&args, &common),
-        Some(Command::Doc) => {
+        Some(Command::Doc { name: None }) => {
             print!("{}", doc::reference());
             EXIT_OK
         }
+        Some(Command::Doc { name: Some(n) }) => doc::one(&n),
+        Some(Command::Completions { shell }) => completions::print(shell),
     }
 }
