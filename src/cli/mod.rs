@@ -11,6 +11,7 @@ pub mod check;
 pub mod completions;
 pub mod diag;
 pub mod doc;
+pub mod lsp;
 pub mod repl;
 pub mod run;
 pub mod watch;
@@ -84,6 +85,8 @@ pub enum Command {
         #[arg(value_enum)]
         shell: clap_complete::Shell,
     },
+    /// Language server over stdio (LSP 3.17): diagnostics, hover, completion, definition.
+    Lsp,
 }
 
 /// Entry point; returns the process exit status.
@@ -116,5 +119,6 @@ fn dispatch(cli: Cli) -> i32 {
         }
         Some(Command::Doc { name: Some(n) }) => doc::one(&n),
         Some(Command::Completions { shell }) => completions::print(shell),
+        Some(Command::Lsp) => lsp::lsp(),
     }
 }
