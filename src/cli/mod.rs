@@ -14,6 +14,7 @@ pub mod doc;
 pub mod lsp;
 pub mod repl;
 pub mod run;
+pub mod serve;
 pub mod watch;
 
 pub const EXIT_OK: i32 = 0;
@@ -87,6 +88,8 @@ pub enum Command {
     },
     /// Language server over stdio (LSP 3.17): diagnostics, hover, completion, definition.
     Lsp,
+    /// Live preview in a browser on 127.0.0.1, re-running the script on every save.
+    Serve(serve::ServeArgs),
 }
 
 /// Entry point; returns the process exit status.
@@ -120,5 +123,6 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Doc { name: Some(n) }) => doc::one(&n),
         Some(Command::Completions { shell }) => completions::print(shell),
         Some(Command::Lsp) => lsp::lsp(),
+        Some(Command::Serve(args)) => serve::serve(&args, &common),
     }
 }
