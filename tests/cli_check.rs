@@ -161,3 +161,92 @@ fn functions_from_loaded_files_and_files_checked_together_are_defined() {
         "{err}"
     );
 }
+
+#[test]
+fn undefined_function_suggests_the_nearest_name() {
+    let (code, err) =
+        check("(defun dtr (a) (* pi (/ a 180.0)))\n(dtrr 90)\n(strcta \"a\")\n(zzqqxx)\n");
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("undefined function DTRR: no defun for it in this file and no builtin of that name; did you mean DTR?"), "{err}");
+    assert!(err.contains("undefined function STRCTA: no defun for it in this file and no builtin of that name; did you mean STRCAT?"), "{err}");
+    assert!(
+        err.contains(
+            "undefined function ZZQQXX: no defun for it in this file and no builtin of that name\n"
+        ),
+        "{err}"
+    );
+}
+
+#[test]
+fn json_format_lists_every_finding_with_positions() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("c.lsp"),
+        "(defun f (x)\n  (setq g 1)\n  (car x x))\n",
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("bad.lsp"), "(setq a 1))\n").unwrap();
+    let o = lispcad_in(
+        dir.path(),
+        &["check", "--format", "json", "c.lsp", "bad.lsp"],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        o.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["files"], 2);
+    assert_eq!(v["errors"], 2);
+    assert_eq!(v["warnings"], 1);
+    let d = v["diagnostics"].as_array().unwrap();
+    assert_eq!(d.len(), 3, "{v}");
+    assert_eq!(d[0]["file"], "c.lsp");
+    assert_eq!(d[0]["severity"], "warning");
+    assert!(d[0]["message"]
+        .as_str()
+        .unwrap()
+        .starts_with("setq of G in F"));
+    assert_eq!(
+        (d[0]["line"].clone(), d[0]["column"].clone()),
+        (2.into(), 3.into())
+    );
+    assert_eq!(
+        (d[0]["end_line"].clone(), d[0]["end_column"].clone()),
+        (2.into(), 13.into())
+    );
+    assert_eq!(d[1]["severity"], "error");
+    assert_eq!(
+        (d[1]["line"].clone(), d[1]["column"].clone()),
+        (3.into(), 3.into())
+    );
+    assert_eq!(d[2]["file"], "bad.lsp");
+    assert_eq!(d[2]["severity"], "error");
+    assert_eq!(d[2]["line"], 1);
+    // A clean file: an empty list, exit 0.
+    std::fs::write(dir.path().join("ok.lsp"), "(setq a 1)\n").unwrap();
+    let o = lispcad_in(dir.path(), &["check", "--format=json", "ok.lsp"]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["diagnostics"], serde_json::json!([]));
+}
+
+#[test]
+fn runtime_undefined_function_hint_is_in_the_diagnostic_not_the_message() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("r.lsp"),
+        "(defun dtr (a) (* pi (/ a 180.0)))\n\
+         (defun *error* (msg) (princ (strcat \"[\" msg \"]\")))\n\
+         (dtrr 90)\n",
+    )
+    .unwrap();
+    let o = lispcad_in(dir.path(), &["run", "r.lsp"]);
+    assert_eq!(o.status.code(), Some(1));
+    let out = String::from_utf8_lossy(&o.stdout);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(out.contains("[no function definition: DTRR]"), "{out}");
+    assert!(err.contains("× no function definition: DTRR\n"), "{err}");
+    assert!(err.contains("help: did you mean DTR?"), "{err}");
+}

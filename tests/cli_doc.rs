@@ -92,3 +92,58 @@ fn help_finds_every_builtin_in_the_repl() {
         assert_eq!(lines[2 * i + 1].trim(), doc, "{name}");
     }
 }
+
+#[test]
+fn doc_name_prints_one_builtin_and_suggests_on_a_typo() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = cli_support::lispcad_in(dir.path(), &["doc", "LINE"]);
+    assert_eq!(o.status.code(), Some(0));
+    let refs = reference();
+    let (_, sig, doc) = refs.iter().find(|(n, _, _)| n == "line").unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&o.stdout),
+        format!("{sig}\n  {doc}\n")
+    );
+    let o = cli_support::lispcad_in(dir.path(), &["doc", "lien"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty());
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr),
+        "error: no builtin named lien; did you mean line?\n"
+    );
+}
+
+#[test]
+fn completions_for_each_shell_name_the_subcommands() {
+    let dir = tempfile::tempdir().unwrap();
+    for shell in ["bash", "zsh", "fish"] {
+        let o = cli_support::lispcad_in(dir.path(), &["completions", shell]);
+        assert_eq!(o.status.code(), Some(0), "{shell}");
+        let text = String::from_utf8_lossy(&o.stdout);
+        for sub in ["run", "check", "watch", "batch", "completions"] {
+            assert!(text.contains(sub), "{shell} lacks {sub}");
+        }
+        assert!(text.contains("max-steps"), "{shell}");
+    }
+    let o = cli_support::lispcad_in(dir.path(), &["completions", "tcsh"]);
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn bash_completion_script_is_valid_bash() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = cli_support::lispcad_in(dir.path(), &["completions", "bash"]);
+    let script = dir.path().join("lispcad.bash");
+    std::fs::write(&script, &o.stdout).unwrap();
+    // Sourcing defines the function; `complete -p` shows it registered for lispcad.
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "source {} && complete -p lispcad",
+            script.display()
+        ))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("_lispcad"));
+}

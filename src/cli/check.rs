@@ -1,15 +1,31 @@
-//! `lispcad check`: parse and lint files without running them.
+//! `lispcad check`: parse and lint files without running them; human (miette) or JSON output.
 
 use std::collections::HashSet;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
+use clap::Args;
 use miette::{Diagnostic, LabeledSpan, NamedSource, SourceCode};
 
+use super::analysis::{self, Finding};
 use super::{EXIT_OK, EXIT_SCRIPT_ERROR, EXIT_USAGE};
-use crate::lang::lint::{defined_functions, lint_with, loaded_files, Severity};
-use crate::lang::reader::{read_source, Parsed, ReadError};
+use crate::lang::error::line_col;
+use crate::lang::lint::{defined_functions, Severity};
 use crate::lang::value::Sym;
 use crate::lang::Interp;
+
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    pub files: Vec<PathBuf>,
+    /// Output: human (miette diagnostics on stderr) or json (one object on stdout).
+    #[arg(long, value_name = "human|json", default_value = "human")]
+    pub format: Format,
+}
+
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Human,
+    Json,
+}
 
 #[derive(Debug)]
 struct LintReport {
@@ -38,136 +54,83 @@ impl Diagnostic for LintReport {
     }
 }
 
-/// One file read and parsed for checking.
-struct Source {
+/// A file's findings, for printing.
+struct Checked {
     name: String,
     text: String,
-    parsed: Result<Parsed, ReadError>,
+    findings: Vec<Finding>,
 }
 
-fn read_and_parse(it: &mut Interp, path: &Path) -> std::io::Result<Source> {
-    let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
-    let text = crate::lang::encoding::read_source_file(path, code_page)?;
-    let name = path.display().to_string();
-    let id = it.add_source(&name, &text);
-    let parsed = read_source(&text, id, &mut it.syms);
-    it.sync_cells();
-    Ok(Source { name, text, parsed })
-}
-
-/// The functions defined by the files a source loads with a literal name, followed
-/// transitively (`seen` stops cycles); unreadable or unparsable ones are skipped: they are not
-/// what is being checked.
-fn loaded_definitions(
-    it: &mut Interp,
-    dir: &Path,
-    parsed: &Parsed,
-    seen: &mut HashSet<PathBuf>,
-    out: &mut HashSet<Sym>,
-) {
-    for name in loaded_files(parsed, &it.syms) {
-        let mut p = dir.join(&name);
-        if p.extension().is_none() {
-            p.set_extension("lsp");
-        }
-        let Ok(canon) = p.canonicalize() else {
-            continue;
-        };
-        if !seen.insert(canon.clone()) {
-            continue;
-        }
-        let Ok(src) = read_and_parse(it, &canon) else {
-            continue;
-        };
-        let Ok(parsed) = src.parsed else { continue };
-        out.extend(defined_functions(&parsed));
-        let sub = canon.parent().map(Path::to_path_buf).unwrap_or_default();
-        loaded_definitions(it, &sub, &parsed, seen, out);
-    }
-}
-
-pub fn check(files: &[PathBuf]) -> i32 {
-    if files.is_empty() {
-        eprintln!("error: check needs at least one file");
-        return EXIT_USAGE;
-    }
-    super::diag::install_hook();
-    let mut errors = 0;
-    let mut warnings = 0;
-    let mut unreadable = false;
+fn check_all(files: &[PathBuf], unreadable: &mut bool) -> Vec<Checked> {
     // One interpreter for all files so their symbols are shared: functions defined in one
-    // file checked together with another, or loaded by it, are not "undefined" there.
+    // file checked together with another are not "undefined" there.
     let mut it = crate::builtins::new_interp();
     let mut sources = Vec::new();
     for file in files {
-        match read_and_parse(&mut it, file) {
-            Ok(src) => sources.push((file.clone(), src)),
+        let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
+        match crate::lang::encoding::read_source_file(file, code_page) {
+            Ok(text) => {
+                let parsed = analysis::parse(&mut it, &text);
+                sources.push((file, text, parsed));
+            }
             Err(e) => {
                 eprintln!("error: cannot read {}: {e}", file.display());
-                unreadable = true;
+                *unreadable = true;
             }
         }
     }
     let own: Vec<HashSet<Sym>> = sources
         .iter()
-        .map(|(_, s)| s.parsed.as_ref().map(defined_functions).unwrap_or_default())
+        .map(|(_, _, p)| p.as_ref().map(defined_functions).unwrap_or_default())
         .collect();
-    for (i, (file, src)) in sources.iter().enumerate() {
-        let report = |message: String, severity, at| LintReport {
-            message,
-            severity,
-            src: NamedSource::new(src.name.clone(), src.text.clone()),
-            at,
-        };
-        let parsed = match &src.parsed {
-            Ok(p) => p,
-            Err(e) => {
-                errors += 1;
-                let r = report(
-                    e.message.clone(),
-                    miette::Severity::Error,
-                    Some((e.start, e.end - e.start)),
-                );
-                eprintln!("{:?}", miette::Report::new(r));
-                continue;
-            }
-        };
-        let mut known: HashSet<Sym> = own
+    let mut out = Vec::new();
+    for (i, (file, text, parsed)) in sources.iter().enumerate() {
+        let known: HashSet<Sym> = own
             .iter()
             .enumerate()
             .filter(|(j, _)| *j != i)
             .flat_map(|(_, d)| d.iter().copied())
             .collect();
-        let dir = file
-            .parent()
-            .map(Path::to_path_buf)
-            .unwrap_or_else(|| PathBuf::from("."));
-        let mut seen = HashSet::new();
-        if let Ok(c) = file.canonicalize() {
-            seen.insert(c);
-        }
-        loaded_definitions(&mut it, &dir, parsed, &mut seen, &mut known);
-        for l in lint_with(&it, parsed, &known) {
-            let sev = match l.severity {
-                Severity::Error => {
-                    errors += 1;
-                    miette::Severity::Error
-                }
-                Severity::Warning => {
-                    warnings += 1;
-                    miette::Severity::Warning
-                }
-            };
-            let at = l
-                .span
-                .map(|s| (s.start as usize, (s.end - s.start) as usize));
-            eprintln!("{:?}", miette::Report::new(report(l.message, sev, at)));
-        }
+        let dir = super::run::parent_dir(file);
+        let findings = analysis::findings(&mut it, text, parsed, &dir, Some(file), &known);
+        out.push(Checked {
+            name: file.display().to_string(),
+            text: text.clone(),
+            findings,
+        });
     }
-    eprintln!(
-        "{} file(s) checked: {errors} error(s), {warnings} warning(s)",
-        files.len()
-    );
+    out
+}
+
+pub fn check(args: &CheckArgs) -> i32 {
+    let files = &args.files;
+    if files.is_empty() {
+        eprintln!("error: check needs at least one file");
+        return EXIT_USAGE;
+    }
+    super::diag::install_hook();
+    let mut unreadable = false;
+    let checked = check_all(files, &mut unreadable);
+    let count = |sev| {
+        checked
+            .iter()
+            .flat_map(|c| &c.findings)
+            .filter(|f| f.severity == sev)
+            .count()
+    };
+    let (errors, warnings) = (count(Severity::Error), count(Severity::Warning));
+    match args.format {
+        Format::Human => {
+            for c in &checked {
+                print_human(c);
+            }
+            eprintln!(
+                "{} file(s) checked: {errors} error(s), {warnings} warning(s)",
+                files.len()
+            );
+        }
+        Format::Json => println!("{}", to_json(&checked, files.len(), errors, warnings)),
+    }
     if unreadable {
         EXIT_USAGE
     } else if errors > 0 {
@@ -175,4 +138,54 @@ pub fn check(files: &[PathBuf]) -> i32 {
     } else {
         EXIT_OK
     }
+}
+
+fn print_human(c: &Checked) {
+    for f in &c.findings {
+        let severity = match f.severity {
+            Severity::Error => miette::Severity::Error,
+            Severity::Warning => miette::Severity::Warning,
+        };
+        let r = LintReport {
+            message: f.message.clone(),
+            severity,
+            src: NamedSource::new(c.name.clone(), c.text.clone()),
+            at: f.range.map(|(s, e)| (s, e - s)),
+        };
+        eprintln!("{:?}", miette::Report::new(r));
+    }
+}
+
+/// `{"files", "errors", "warnings", "diagnostics": [{file, severity, message, line, column,
+/// end_line, end_column}]}`; lines and columns 1-based, columns in characters, positions null
+/// when a lint has no form to point at.
+fn to_json(checked: &[Checked], files: usize, errors: usize, warnings: usize) -> String {
+    let diags: Vec<serde_json::Value> = checked
+        .iter()
+        .flat_map(|c| c.findings.iter().map(move |f| finding_json(c, f)))
+        .collect();
+    serde_json::json!({
+        "files": files,
+        "errors": errors,
+        "warnings": warnings,
+        "diagnostics": diags,
+    })
+    .to_string()
+}
+
+fn finding_json(c: &Checked, f: &Finding) -> serde_json::Value {
+    let pos = |o: usize| line_col(&c.text, o);
+    let (start, end) = match f.range {
+        Some((s, e)) => (Some(pos(s)), Some(pos(e))),
+        None => (None, None),
+    };
+    serde_json::json!({
+        "file": c.name,
+        "severity": match f.severity { Severity::Error => "error", Severity::Warning => "warning" },
+        "message": f.message,
+        "line": start.map(|p| p.0),
+        "column": start.map(|p| p.1),
+        "end_line": end.map(|p| p.0),
+        "end_column": end.map(|p| p.1),
+    })
 }

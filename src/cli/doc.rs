@@ -11,3 +11,20 @@ pub fn reference() -> String {
     }
     out
 }
+
+/// `lispcad doc NAME`: one builtin's signature and description; a usage error naming the
+/// nearest builtin when there is none of that name.
+pub fn one(name: &str) -> i32 {
+    if let Some(t) = crate::builtins::system::help_text(name) {
+        println!("{t}");
+        return super::EXIT_OK;
+    }
+    let names = crate::builtins::tables()
+        .into_iter()
+        .flat_map(|(_, t)| t.iter().map(|b| b.name));
+    match crate::lang::lint::nearest(name, names) {
+        Some(n) => eprintln!("error: no builtin named {name}; did you mean {n}?"),
+        None => eprintln!("error: no builtin named {name}"),
+    }
+    super::EXIT_USAGE
+}

@@ -5,14 +5,18 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+pub mod analysis;
 pub mod batch;
 pub mod check;
+pub mod completions;
 pub mod convert;
 pub mod diag;
 pub mod doc;
+pub mod lsp;
 pub mod params;
 pub mod repl;
 pub mod run;
+pub mod serve;
 pub mod watch;
 
 pub const EXIT_OK: i32 = 0;
@@ -93,13 +97,26 @@ pub enum Command {
     /// Re-run a script whenever it (or a file it loads) changes, rewriting the outputs.
     Watch(watch::WatchArgs),
     /// Parse and lint without running; non-zero exit on errors.
-    Check { files: Vec<PathBuf> },
+    Check(check::CheckArgs),
     /// Open drawings (DXF) and write them as .svg or .dxf.
     Convert(convert::ConvertArgs),
-    /// Print the reference of every builtin.
-    Doc,
     /// List the parameters a script declares with defparam (read, not run).
     Params { file: PathBuf },
+    /// Print the reference of every builtin (or of one).
+    Doc {
+        /// A builtin's name: print only its signature and description.
+        name: Option<String>,
+    },
+    // Editor and shell support (issue 16).
+    /// Print a shell completion script: `lispcad completions bash > /etc/bash_completion.d/lispcad`.
+    Completions {
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Language server over stdio (LSP 3.17): diagnostics, hover, completion, definition.
+    Lsp,
+    /// Live preview in a browser on 127.0.0.1, re-running the script on every save.
+    Serve(serve::ServeArgs),
 }
 
 /// A usage error message when an output's extension names no format lispcad writes, so the
@@ -132,14 +149,18 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Repl { files }) => repl::repl(&files, &common),
         Some(Command::Run(args)) => run::run(&args, &common),
         Some(Command::Eval { expr, set }) => run::eval_expr(&expr, &set, &common),
-        Some(Command::Check { files }) => check::check(&files),
+        Some(Command::Check(args)) => check::check(&args),
         Some(Command::Convert(args)) => convert::convert(&args, &common),
         Some(Command::Batch(args)) => batch::batch(&args, &common),
         Some(Command::Watch(args)) => watch::watch(&args, &common),
         Some(Command::Params { file }) => params::params(&file),
-        Some(Command::Doc) => {
+        Some(Command::Doc { name: None }) => {
             print!("{}", doc::reference());
             EXIT_OK
         }
+        Some(Command::Doc { name: Some(n) }) => doc::one(&n),
+        Some(Command::Completions { shell }) => completions::print(shell),
+        Some(Command::Lsp) => lsp::lsp(),
+        Some(Command::Serve(args)) => serve::serve(&args, &common),
     }
 }

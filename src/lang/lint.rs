@@ -167,6 +167,12 @@ fn arglist_syms(v: &Value) -> Vec<Sym> {
 }
 
 impl Ctx<'_> {
+    /// The function name nearest to a misspelt one: the file's defuns and the builtins.
+    fn suggest(&self, name: &str) -> Option<String> {
+        let own = self.defined.iter().map(|s| self.it.syms.name(*s));
+        nearest(name, own.chain(function_names(self.it))).map(str::to_uppercase)
+    }
+
     fn push(&mut self, severity: Severity, message: String, span: Option<Span>) {
         self.out.push(Lint {
             severity,
@@ -301,13 +307,71 @@ impl Ctx<'_> {
             }
             _ => {
                 if !self.defined.contains(&f) && !scope.contains(&f) {
+                    let hint = self
+                        .suggest(&name)
+                        .map(|s| format!("; did you mean {s}?"))
+                        .unwrap_or_default();
                     self.push(
                         Severity::Warning,
-                        format!("call of undefined function {name}: no defun for it in this file and no builtin of that name"),
+                        format!("call of undefined function {name}: no defun for it in this file and no builtin of that name{hint}"),
                         span,
                     );
                 }
             }
         }
+    }
+}
+
+/// The names bound to functions in an interpreter: builtins and loaded defuns.
+pub fn function_names(it: &Interp) -> impl Iterator<Item = &str> {
+    it.syms.all().filter_map(|(s, n)| {
+        matches!(
+            it.values.get(s.idx()),
+            Some(Value::Subr(_) | Value::Func(_))
+        )
+        .then_some(n)
+    })
+}
+
+/// The candidate closest to `name` by edit distance (case-insensitive), if close enough to be
+/// a likely typo: at most one edit for short names, a third of the length for longer ones.
+/// Ties go to the alphabetically first, so the answer does not depend on table order.
+pub fn nearest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    let want = name.to_lowercase();
+    let limit = (want.chars().count() / 3).max(1);
+    let mut best: Option<(usize, String, &'a str)> = None;
+    for c in candidates {
+        let lc = c.to_lowercase();
+        if lc == want || lc.is_empty() {
+            continue;
+        }
+        let d = strsim::damerau_levenshtein(&want, &lc);
+        if d > limit {
+            continue;
+        }
+        let better = match &best {
+            None => true,
+            Some((bd, bl, _)) => d < *bd || (d == *bd && lc < *bl),
+        };
+        if better {
+            best = Some((d, lc, c));
+        }
+    }
+    best.map(|(_, _, c)| c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::nearest;
+
+    #[test]
+    fn nearest_finds_typos_and_ignores_strangers() {
+        let names = ["dtr", "rtd", "distance", "strcat", "setq"];
+        assert_eq!(nearest("DTRR", names.iter().copied()), Some("dtr"));
+        assert_eq!(nearest("distnace", names.iter().copied()), Some("distance"));
+        assert_eq!(nearest("strcta", names.iter().copied()), Some("strcat"));
+        assert_eq!(nearest("frobnicate", names.iter().copied()), None);
+        // Equally near: the alphabetically first wins.
+        assert_eq!(nearest("xtr", names.iter().copied()), Some("dtr"));
     }
 }
