@@ -168,12 +168,15 @@ fn layer(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(a[0].clone())
 }
 
-/// Writer options given on the command line (`--dxf-profile`, `--cam-tol`): they win over
-/// the system variables. The host fills it in; the library never reads CLI structs.
+/// Writer options given on the command line (`--dxf-profile`, `--cam-tol`, `--cam-min-seg`,
+/// `--dpi`): they win over the system variables. The host fills it in; the library never
+/// reads CLI structs.
 #[derive(Clone, Debug, Default)]
 pub struct OutputOverrides {
     pub dxf_profile: Option<String>,
     pub cam_tol: Option<f64>,
+    pub cam_min_seg: Option<f64>,
+    pub dpi: Option<f64>,
 }
 
 /// The writer options from the system variables, overridden by the command line.

@@ -11,7 +11,6 @@ use super::{EXIT_OK, EXIT_SCRIPT_ERROR, EXIT_USAGE};
 use crate::lang::error::line_col;
 use crate::lang::lint::{defined_functions, Severity};
 use crate::lang::value::Sym;
-use crate::lang::Interp;
 
 #[derive(Args, Debug)]
 pub struct CheckArgs {

@@ -73,6 +73,8 @@ impl From<&Common> for crate::builtins::drawing::OutputOverrides {
         crate::builtins::drawing::OutputOverrides {
             dxf_profile: c.dxf_profile.clone(),
             cam_tol: c.cam_tol,
+            cam_min_seg: c.cam_min_seg,
+            dpi: c.dpi,
         }
     }
 }

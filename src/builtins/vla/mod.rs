@@ -87,6 +87,20 @@ pub fn entity_class(k: &EntityKind) -> (&'static str, &'static str) {
         EntityKind::Face3d { .. } => ("IAcad3DFace", "AcDbFace"),
         EntityKind::Text { .. } => ("IAcadText", "AcDbText"),
         EntityKind::Mesh { .. } => ("IAcadPolyfaceMesh", "AcDbPolyFaceMesh"),
+        EntityKind::Ellipse { .. } => ("IAcadEllipse", "AcDbEllipse"),
+        EntityKind::Unmodelled { dxf_type } => match dxf_type.as_str() {
+            "INSERT" => ("IAcadBlockReference", "AcDbBlockReference"),
+            "MTEXT" => ("IAcadMText", "AcDbMText"),
+            "HATCH" => ("IAcadHatch", "AcDbHatch"),
+            "DIMENSION" => ("IAcadDimension", "AcDbDimension"),
+            "SOLID" => ("IAcadSolid", "AcDbTrace"),
+            "VIEWPORT" => ("IAcadPViewport", "AcDbViewport"),
+            "ATTDEF" => ("IAcadAttribute", "AcDbAttributeDefinition"),
+            "LEADER" => ("IAcadLeader", "AcDbLeader"),
+            "XLINE" => ("IAcadXline", "AcDbXline"),
+            "RAY" => ("IAcadRay", "AcDbRay"),
+            _ => ("IAcadEntity", "AcDbEntity"),
+        },
     }
 }
 
