@@ -94,9 +94,9 @@ pub struct Interp {
     stack_floor: usize,
     /// >0 inside `vl-catch-all-apply`: errors are caught there, not offered to `*error*`.
     pub catch_depth: u32,
-    in_error_handler: bool,
+    pub(super) in_error_handler: bool,
     pub(super) lambda_cache: HashMap<*const Cons, (Value, std::rc::Rc<Lambda>)>,
-    exts: Vec<(TypeId, Box<dyn Any>)>,
+    pub(super) exts: Vec<(TypeId, Box<dyn Any>)>,
     /// Files `load`ed so far (for `watch`).
     pub loaded_files: Vec<PathBuf>,
     /// The directory of the script being run: relative paths in `load` resolve against it.
@@ -173,6 +173,11 @@ impl Interp {
         self.max_steps = n.unwrap_or(u64::MAX);
         self.steps = 0;
         self.next_check = self.max_steps.min(CHECK_EVERY);
+    }
+
+    /// Starts counting steps again under the same budget.
+    pub fn restart_steps(&mut self) {
+        self.set_max_steps(Some(self.max_steps));
     }
 
     pub fn steps(&self) -> u64 {

@@ -114,6 +114,13 @@ impl SymbolTable {
             .copied()
     }
 
+    /// Forgets every symbol interned after the first `n` (see `Interp::restore_globals`).
+    pub fn truncate(&mut self, n: usize) {
+        for name in self.names.drain(n.max(FIXED.len())..) {
+            self.index.remove(&name);
+        }
+    }
+
     pub fn name(&self, s: Sym) -> &str {
         &self.names[s.idx()]
     }
