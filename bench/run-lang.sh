@@ -9,7 +9,8 @@
 #   - the peak resident memory (max RSS) of each, in MB, and its ratio.
 # The load average before and after is printed: say it when quoting the figures.
 #
-#   bench/run-lang.sh [REPS]        (LISPCAD=path overrides the binary; PROGS="fib list" picks)
+#   bench/run-lang.sh [REPS]        (LISPCAD=path overrides the binary; PROGS="fib list" picks;
+#                                    BEFORE=path adds an older lispcad as one more peer)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
@@ -30,12 +31,15 @@ if [[ -n "$guile" ]]; then
 fi
 
 exec "$python" - "$here/lang" "$reps" "${PROGS:-fib loop list strings alist empty}" \
-  "$lispcad" "$python" "$lua" "$guile" <<'PY'
+  "$lispcad" "$python" "$lua" "$guile" "${BEFORE:-}" <<'PY'
 import os, statistics, subprocess, sys, time
 
-lang_dir, reps, progs, lispcad, python, lua, guile = sys.argv[1:8]
+lang_dir, reps, progs, lispcad, python, lua, guile, before = sys.argv[1:9]
 reps, progs = int(reps), progs.split()
-langs = [("lispcad", [lispcad, "run"], "lsp"), ("cpython", [python], "py")]
+langs = [("lispcad", [lispcad, "run"], "lsp")]
+if before:
+    langs.append(("before", [before, "run"], "lsp"))
+langs.append(("cpython", [python], "py"))
 if lua:
     langs.append(("lua5.4", [lua], "lua"))
 if guile:

@@ -59,8 +59,8 @@ impl Hasher for Fnv {
     }
 }
 
-/// Room for the library's names without rehashing at start-up.
-const INITIAL_SYMBOLS: usize = 2048;
+/// Room for the library's names (about 300) without rehashing at start-up.
+const INITIAL_SYMBOLS: usize = 512;
 
 #[derive(Clone)]
 pub struct SymbolTable {
