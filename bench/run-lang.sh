@@ -20,6 +20,8 @@ if [[ ! -x "$lispcad" ]]; then
   (cd "$root" && cargo build --release --quiet)
 fi
 python="$(command -v python3.11 || command -v python3)"
+# A version manager's shim (pyenv) is a shell script: time the interpreter itself.
+python="$("$python" -c 'import sys; print(sys.executable)')"
 lua="$(command -v lua5.4 || true)"
 guile="$(command -v guile || true)"
 
