@@ -1,77 +1,101 @@
 #!/usr/bin/env bash
-# Runs the four language benchmarks (bench/lang/{fib,loop,list,empty}) on lispcad, CPython 3,
-# Lua 5.4 and Guile 3.0, REPS times each, interleaved (rep 1 of every program on every
-# language, then rep 2, ...) so load from other processes on a shared machine spreads over
-# all of them; prints the minimum wall time and the minimum CPU time (user+sys, less sensitive
-# to other load) of each, with the ratio lispcad/peer.
+# Runs the language benchmarks (bench/lang/{fib,loop,list,strings,alist,empty}) on lispcad,
+# CPython 3.11, Lua 5.4 and Guile 3.0, REPS times each (default 9), interleaved: rep 1 of every
+# program on every language, then rep 2, ... so load from other processes on a shared machine
+# spreads over all of them. Prints, per program:
+#   - the median wall time and median CPU time (user+sys) of each language, in ms;
+#   - paired ratios lispcad/peer: each rep's lispcad run is divided by the same rep's peer run
+#     (adjacent in time, so they saw the same load), and the median of those ratios is shown;
+#   - the peak resident memory (max RSS) of each, in MB, and its ratio.
+# The load average before and after is printed: say it when quoting the figures.
 #
-#   bench/run-lang.sh [REPS]        (default 5; LISPCAD=path overrides the binary)
+#   bench/run-lang.sh [REPS]        (LISPCAD=path overrides the binary; PROGS="fib list" picks;
+#                                    BEFORE=path adds an older lispcad as one more peer)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(dirname "$here")"
-reps="${1:-5}"
+reps="${1:-9}"
 lispcad="${LISPCAD:-$root/target/release/lispcad}"
 if [[ ! -x "$lispcad" ]]; then
   (cd "$root" && cargo build --release --quiet)
 fi
 python="$(command -v python3.11 || command -v python3)"
+# A version manager's shim (pyenv) is a shell script: time the interpreter itself.
+python="$("$python" -c 'import sys; print(sys.executable)')"
 lua="$(command -v lua5.4 || true)"
 guile="$(command -v guile || true)"
 
-langs=(lispcad python lua guile)
-progs=(fib loop list empty)
-declare -A cmd best
-cmd[lispcad]="$lispcad run"
-cmd[python]="$python"
-cmd[lua]="$lua"
-cmd[guile]="$guile --no-debug"
-declare -A ext=([lispcad]=lsp [python]=py [lua]=lua [guile]=scm)
-
-available() { [[ "$1" == lispcad || "$1" == python ]] && return 0; [[ -n "${!1}" ]]; }
-
-# Guile compiles a script on first use and caches it: one untimed warm-up run.
+# Guile compiles a script on first use and caches it: one untimed warm-up run each.
 if [[ -n "$guile" ]]; then
-  for p in "${progs[@]}"; do $guile "$here/lang/$p.scm" >/dev/null 2>&1 || true; done
+  for p in ${PROGS:-fib loop list strings alist empty}; do
+    "$guile" --no-debug "$here/lang/$p.scm" >/dev/null 2>&1 || true
+  done
 fi
 
-TIMEFORMAT="%3R %3U %3S"
-tfile="$(mktemp)"
-trap 'rm -f "$tfile"' EXIT
-declare -A cpu
-for ((r = 1; r <= reps; r++)); do
-  for p in "${progs[@]}"; do
-    for l in "${langs[@]}"; do
-      available "$l" || continue
-      f="$here/lang/$p.${ext[$l]}"
-      { time ${cmd[$l]} "$f" >/dev/null 2>&1 || { echo "FAILED: $l $p" >&2; exit 1; }; } 2>"$tfile"
-      read -r e u s <"$tfile"
-      ms=$(awk -v e="$e" 'BEGIN { printf "%d", e * 1000 }')
-      cms=$(awk -v u="$u" -v s="$s" 'BEGIN { printf "%d", (u + s) * 1000 }')
-      k="$l:$p"
-      if [[ -z "${best[$k]:-}" || $ms -lt ${best[$k]} ]]; then best[$k]=$ms; fi
-      if [[ -z "${cpu[$k]:-}" || $cms -lt ${cpu[$k]} ]]; then cpu[$k]=$cms; fi
-    done
-  done
-done
+exec "$python" - "$here/lang" "$reps" "${PROGS:-fib loop list strings alist empty}" \
+  "$lispcad" "$python" "$lua" "$guile" "${BEFORE:-}" <<'PY'
+import os, statistics, subprocess, sys, time
 
-ratio() { # lispcad ms / peer ms, 2 decimals; "-" without a peer
-  local a="$1" b="${2:-}"
-  [[ -z "$b" ]] && { echo "-"; return; }
-  ((b == 0)) && b=1
-  ((a == 0)) && a=1
-  awk -v a="$a" -v b="$b" 'BEGIN { printf "%.2f", a / b }'
-}
-table() { # title, name of the array of minima
-  local -n m="$2"
-  echo "$1"
-  printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" program lispcad cpython lua5.4 guile3 "/cpython" "/lua" "/guile"
-  for p in "${progs[@]}"; do
-    L="${m[lispcad:$p]}"
-    P="${m[python:$p]:-}"; U="${m[lua:$p]:-}"; G="${m[guile:$p]:-}"
-    printf "%-6s %9s %9s %9s %9s   %8s %8s %8s\n" "$p" "$L" "${P:--}" "${U:--}" "${G:--}" \
-      "$(ratio "$L" "$P")" "$(ratio "$L" "$U")" "$(ratio "$L" "$G")"
-  done
-}
-table "minimum wall time of $reps interleaved runs, in ms (ratio = lispcad / peer)" best
-echo
-table "minimum CPU time (user+sys) of the same runs, in ms" cpu
+lang_dir, reps, progs, lispcad, python, lua, guile, before = sys.argv[1:9]
+reps, progs = int(reps), progs.split()
+langs = [("lispcad", [lispcad, "run"], "lsp")]
+if before:
+    langs.append(("before", [before, "run"], "lsp"))
+langs.append(("cpython", [python], "py"))
+if lua:
+    langs.append(("lua5.4", [lua], "lua"))
+if guile:
+    langs.append(("guile3", [guile, "--no-debug"], "scm"))
+
+rss_file = os.path.join(os.environ.get("TMPDIR", "/tmp"), f"run-lang-{os.getpid()}.rss")
+
+def run(cmd):
+    """Wall seconds, CPU seconds (user+sys) and peak RSS in KB of one run. The peak comes from
+    GNU time, which starts the program from its own small process: Linux carries a process's
+    peak RSS across exec, so a program started straight from this (larger) Python process
+    would report at least Python's size."""
+    t0 = time.perf_counter()
+    p = subprocess.Popen(["/usr/bin/time", "-f", "%M", "-o", rss_file] + cmd,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, ru = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - t0
+    p.returncode = os.waitstatus_to_exitcode(status)
+    if p.returncode != 0:
+        sys.exit(f"FAILED ({p.returncode}): {' '.join(cmd)}")
+    with open(rss_file) as f:
+        rss = int(f.read().split()[-1])
+    return wall, ru.ru_utime + ru.ru_stime, rss
+
+print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+res = {}  # (lang, prog) -> list of (wall, cpu, rss)
+for _ in range(reps):
+    for p in progs:
+        for name, cmd, ext in langs:
+            res.setdefault((name, p), []).append(run(cmd + [os.path.join(lang_dir, f"{p}.{ext}")]))
+print(f"load average after:  {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+os.remove(rss_file)
+
+peers = [n for n, _, _ in langs[1:]]
+def table(title, k, scale, unit, paired=True):
+    print(f"\n{title}")
+    head = f"{'program':8}" + "".join(f"{n:>10}" for n, _, _ in langs)
+    head += "   " + "".join(f"{'/' + n:>10}" for n in peers)
+    print(head)
+    for p in progs:
+        row = f"{p:8}"
+        for n, _, _ in langs:
+            row += f"{statistics.median(r[k] for r in res[(n, p)]) * scale:>10.{0 if unit == 'ms' else 1}f}"
+        row += "   "
+        for n in peers:
+            a, b = res[("lispcad", p)], res[(n, p)]
+            if paired:
+                ratio = statistics.median(x[k] / max(y[k], 1e-9) for x, y in zip(a, b))
+            else:
+                ratio = max(x[k] for x in a) / max(max(y[k] for y in b), 1)
+            row += f"{ratio:>10.2f}"
+        print(row)
+
+table(f"median wall time of {reps} interleaved runs, ms; ratio = median of paired lispcad/peer", 0, 1000, "ms")
+table(f"median CPU time (user+sys) of the same runs, ms; paired ratios as above", 1, 1000, "ms")
+table("peak resident memory (max RSS), MB; ratio of the largest peaks", 2, 1 / 1024, "MB", paired=False)
+PY

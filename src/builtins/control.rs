@@ -6,7 +6,7 @@ use crate::builtin;
 use crate::lang::builtin::{Builtin, MANY};
 use crate::lang::compile::Args;
 use crate::lang::error::{err, ErrorKind, LResult, LispError};
-use crate::lang::value::Object;
+use crate::lang::value::{ListBuilder, Object};
 use crate::lang::{Interp, Value};
 
 pub static BUILTINS: &[Builtin] = &[
@@ -46,7 +46,8 @@ fn mapcar(it: &mut Interp, a: &[Value]) -> LResult {
     for l in &a[1..] {
         lists.push(it.list_arg(l)?.clone());
     }
-    let mut out = Vec::new();
+    // Results go straight into the list, front to back: no vector of a million values beside it.
+    let mut out = ListBuilder::new();
     loop {
         let mut args = Args::new();
         for l in lists.iter_mut() {
@@ -56,7 +57,7 @@ fn mapcar(it: &mut Interp, a: &[Value]) -> LResult {
                     let next = c.cdr.clone();
                     *l = next;
                 }
-                _ => return Ok(Value::list(out)),
+                _ => return Ok(out.finish()),
             }
         }
         out.push(it.apply_args(f, args)?);

@@ -4,6 +4,7 @@ use crate::builtin;
 use crate::lang::builtin::{bad_arg, Builtin, MANY};
 use crate::lang::compile::Args;
 use crate::lang::error::{err, Exn, LResult};
+use crate::lang::value::ListBuilder;
 use crate::lang::{Interp, Value};
 
 /// car/cdr compositions: the letters between c and r, applied right to left.
@@ -358,14 +359,25 @@ fn member(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn subst(it: &mut Interp, a: &[Value]) -> LResult {
-    let items = elements(it, &a[2])?;
-    Ok(Value::list(items.into_iter().map(|x| {
-        if x.equal(&a[1], 0.0) {
-            a[0].clone()
-        } else {
-            x
+    // Straight into the new list: entity-list updates call this in tight loops.
+    let mut out = ListBuilder::new();
+    let mut cur = &a[2];
+    loop {
+        match cur {
+            Value::Nil => return Ok(out.finish()),
+            Value::Cons(c) => {
+                let x = &c.car;
+                out.push(if x.equal(&a[1], 0.0) {
+                    a[0].clone()
+                } else {
+                    x.clone()
+                });
+                cur = &c.cdr;
+            }
+            other if cur.is_eq(&a[2]) => return Err(bad_arg(it, "listp", other)),
+            _ => return Err(err("bad list")),
         }
-    })))
+    }
 }
 
 fn vl_remove(it: &mut Interp, a: &[Value]) -> LResult {

@@ -538,8 +538,11 @@ fn eval_args(it: &mut Interp, args: &[Code]) -> Result<Args, Exn> {
 /// call runs. Calls of up to four arguments keep them in a fixed array on the Rust stack, and
 /// a user function takes them from there by move.
 pub(super) fn call_symbol(fsym: Sym, args: Vec<Operand>, span: Option<Span>) -> Code {
+    // The arguments are evaluated straight into an array (left to right, as AutoLISP does)
+    // that the callee's parameters take by move: no argument vector on the heap, no
+    // default-then-overwrite of each slot.
     macro_rules! fixed {
-        ($n:literal) => {{
+        ($n:literal, [$($i:literal),*]) => {{
             let args: Box<[Operand; $n]> = args
                 .into_boxed_slice()
                 .try_into()
@@ -547,23 +550,20 @@ pub(super) fn call_symbol(fsym: Sym, args: Vec<Operand>, span: Option<Span>) -> 
                 .expect("arity matches");
             Box::new(move |it: &mut Interp| {
                 check_defined(it, fsym, span)?;
-                let mut argv: [Value; $n] = Default::default();
-                for (slot, a) in argv.iter_mut().zip(args.iter()) {
-                    *slot = a.eval(it)?;
-                }
-                dispatch(it, fsym, &mut argv, span)
+                let argv: [Value; $n] = [$(args[$i].eval(it)?),*];
+                dispatch(it, fsym, argv, span)
             }) as Code
         }};
     }
     match args.len() {
         0 => Box::new(move |it: &mut Interp| {
             check_defined(it, fsym, span)?;
-            dispatch(it, fsym, &mut [], span)
+            dispatch(it, fsym, [], span)
         }),
-        1 => fixed!(1),
-        2 => fixed!(2),
-        3 => fixed!(3),
-        4 => fixed!(4),
+        1 => fixed!(1, [0]),
+        2 => fixed!(2, [0, 1]),
+        3 => fixed!(3, [0, 1, 2]),
+        4 => fixed!(4, [0, 1, 2, 3]),
         _ => {
             let args = args.into_boxed_slice();
             Box::new(move |it| {
@@ -572,13 +572,13 @@ pub(super) fn call_symbol(fsym: Sym, args: Vec<Operand>, span: Option<Span>) -> 
                 for a in args.iter() {
                     argv.push(a.eval(it)?);
                 }
-                dispatch(it, fsym, &mut argv, span)
+                dispatch(it, fsym, argv, span)
             })
         }
     }
 }
 
-#[inline]
+#[inline(always)]
 fn check_defined(it: &Interp, fsym: Sym, span: Option<Span>) -> Result<(), Exn> {
     if it.values[fsym.idx()].is_nil() {
         return Err(undefined(it, fsym, span));
@@ -594,25 +594,34 @@ fn undefined(it: &Interp, fsym: Sym, span: Option<Span>) -> Exn {
     )
 }
 
-#[inline]
-fn dispatch(it: &mut Interp, fsym: Sym, argv: &mut [Value], span: Option<Span>) -> LResult {
+/// Calls whatever `fsym`'s cell holds with evaluated arguments: a builtin gets them as a
+/// slice, a user function binds them by move.
+#[inline(always)]
+fn dispatch<A>(it: &mut Interp, fsym: Sym, argv: A, span: Option<Span>) -> LResult
+where
+    A: AsRef<[Value]> + IntoIterator<Item = Value>,
+    A::IntoIter: ExactSizeIterator,
+{
     match &it.values[fsym.idx()] {
+        Value::Func(l) => {
+            // The clone keeps the function alive if its body redefines its own name.
+            let l = l.clone();
+            match it.enter_lambda_with(&l, argv) {
+                Ok(v) => Ok(v),
+                Err(e) => Err(add_frame(it, with_span(e, span), Some(fsym), span)),
+            }
+        }
         Value::Subr(b) => {
             let b = *b;
+            let argv = argv.as_ref();
             match b.check_arity(argv.len()) {
                 Ok(()) => (b.f)(it, argv).map_err(|e| with_span(e, span)),
                 Err(e) => Err(with_span(e, span)),
             }
         }
-        Value::Func(l) => {
-            // The clone keeps the function alive if its body redefines its own name.
-            let l = l.clone();
-            it.enter_lambda(&l, argv)
-                .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
-        }
         other => {
             let f = other.clone();
-            it.apply_args(&f, argv.iter_mut().map(std::mem::take).collect())
+            it.apply_args(&f, argv.into_iter().collect())
                 .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
         }
     }
@@ -646,14 +655,26 @@ impl Interp {
 
     /// `call_lambda` taking the arguments by move out of `args` (left nil).
     pub fn enter_lambda(&mut self, l: &Lambda, args: &mut [Value]) -> LResult {
+        self.enter_lambda_with(l, args.iter_mut().map(std::mem::take))
+    }
+
+    /// The call itself, taking the arguments from any exact-size source (an array on the
+    /// caller's stack in compiled calls).
+    #[inline(always)]
+    pub(crate) fn enter_lambda_with<A>(&mut self, l: &Lambda, args: A) -> LResult
+    where
+        A: IntoIterator<Item = Value>,
+        A::IntoIter: ExactSizeIterator,
+    {
+        let args = args.into_iter();
         if args.len() != l.params.len() {
             return Err(arg_count_error(args.len() < l.params.len()));
         }
         self.tick()?;
         self.check_stack()?;
         let base = self.saves_len();
-        for (p, a) in l.params.iter().zip(args.iter_mut()) {
-            self.bind(*p, std::mem::take(a));
+        for (p, a) in l.params.iter().zip(args) {
+            self.bind(*p, a);
         }
         for p in l.locals.iter() {
             self.bind(*p, Value::Nil);
@@ -737,7 +758,7 @@ impl Interp {
     /// by identity so `(mapcar '(lambda ...) big-list)` compiles once.
     fn lambda_of_list(&mut self, f: &Value) -> Result<Rc<Lambda>, Exn> {
         let key = match f {
-            Value::Cons(c) => Rc::as_ptr(c),
+            Value::Cons(c) => c.as_ptr(),
             _ => unreachable!(),
         };
         if let Some((_, l)) = self.lambda_cache.get(&key) {

@@ -34,19 +34,46 @@ pub(super) fn stack_pointer() -> usize {
     std::hint::black_box(&marker) as *const u8 as usize
 }
 
+/// Stack sizes tried in turn for the evaluation thread: under an address-space limit
+/// (`ulimit -v`) the largest reservation can fail, and a smaller stack with a proportionally
+/// smaller recursion limit is better than no evaluator.
+const EVAL_STACK_FALLBACKS: [usize; 4] = [EVAL_STACK_SIZE, 256 << 20, 64 << 20, 16 << 20];
+
+/// What the stack check leaves free on a stack of `size` bytes: the margin, or a quarter of a
+/// small stack.
+fn usable_stack(size: usize) -> usize {
+    size - STACK_MARGIN.min(size / 4)
+}
+
 /// Runs `f` on a thread with a large stack, so deep (but bounded) recursion in Lisp programs
-/// ends in the evaluator's clean "stack overflow" error rather than a Rust abort.
+/// ends in the evaluator's clean "stack overflow" error rather than a Rust abort. When no
+/// thread can be started (address space exhausted), `f` runs on the calling thread with the
+/// default budget: recursion is then shallower, but every command still works.
 pub fn with_eval_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
-    std::thread::Builder::new()
-        .name("lispcad-eval".into())
-        .stack_size(EVAL_STACK_SIZE)
-        .spawn(move || {
-            STACK_BOUNDS.with(|b| b.set(Some((stack_pointer(), EVAL_STACK_SIZE - STACK_MARGIN))));
-            f()
-        })
-        .expect("spawn evaluation thread")
-        .join()
-        .unwrap_or_else(|p| std::panic::resume_unwind(p))
+    let mut f = Some(f);
+    for size in EVAL_STACK_FALLBACKS {
+        // `spawn` consumes its closure even when it fails, so the task travels in a shared
+        // slot the thread takes it from; after a failed spawn it is still there.
+        let slot = Arc::new(std::sync::Mutex::new(f.take()));
+        let task = Arc::clone(&slot);
+        let spawned = std::thread::Builder::new()
+            .name("lispcad-eval".into())
+            .stack_size(size)
+            .spawn(move || {
+                STACK_BOUNDS.with(|b| b.set(Some((stack_pointer(), usable_stack(size)))));
+                let f = task.lock().ok().and_then(|mut t| t.take());
+                f.map(|f| f())
+            });
+        match spawned {
+            Ok(handle) => match handle.join() {
+                Ok(Some(v)) => return v,
+                Ok(None) => unreachable!("the evaluation thread found its task"),
+                Err(p) => std::panic::resume_unwind(p),
+            },
+            Err(_) => f = slot.lock().ok().and_then(|mut t| t.take()),
+        }
+    }
+    f.expect("the task is still here when no thread started")()
 }
 
 pub struct Interp {
@@ -64,13 +91,13 @@ pub struct Interp {
     next_check: u64,
     max_steps: u64,
     pub interrupt: Arc<AtomicBool>,
-    stack_top: usize,
-    stack_budget: usize,
+    /// The stack address below which `check_stack` fails.
+    stack_floor: usize,
     /// >0 inside `vl-catch-all-apply`: errors are caught there, not offered to `*error*`.
     pub catch_depth: u32,
-    in_error_handler: bool,
+    pub(super) in_error_handler: bool,
     pub(super) lambda_cache: HashMap<*const Cons, (Value, std::rc::Rc<Lambda>)>,
-    exts: Vec<(TypeId, Box<dyn Any>)>,
+    pub(super) exts: Vec<(TypeId, Box<dyn Any>)>,
     /// Files `load`ed so far (for `watch`).
     pub loaded_files: Vec<PathBuf>,
     /// The directory of the script being run: relative paths in `load` resolve against it.
@@ -95,8 +122,7 @@ impl Interp {
             next_check: u64::MAX,
             max_steps: u64::MAX,
             interrupt: Arc::new(AtomicBool::new(false)),
-            stack_top,
-            stack_budget,
+            stack_floor: stack_top.saturating_sub(stack_budget),
             catch_depth: 0,
             in_error_handler: false,
             lambda_cache: HashMap::new(),
@@ -150,6 +176,11 @@ impl Interp {
         self.next_check = self.max_steps.min(CHECK_EVERY);
     }
 
+    /// Starts counting steps again under the same budget.
+    pub fn restart_steps(&mut self) {
+        self.set_max_steps(Some(self.max_steps));
+    }
+
     pub fn steps(&self) -> u64 {
         self.steps
     }
@@ -184,7 +215,7 @@ impl Interp {
     /// Fails cleanly before the Rust stack runs out.
     #[inline]
     pub fn check_stack(&self) -> Result<(), Exn> {
-        if stack_pointer() < self.stack_floor() {
+        if stack_pointer() < self.stack_floor {
             Err(stack_overflow())
         } else {
             Ok(())
@@ -193,7 +224,7 @@ impl Interp {
 
     /// The stack address below which `check_stack` fails.
     pub(super) fn stack_floor(&self) -> usize {
-        self.stack_top.saturating_sub(self.stack_budget)
+        self.stack_floor
     }
 
     #[inline]
@@ -386,10 +417,5 @@ pub fn read_error(e: ReadError, src: u32) -> Exn {
 /// Marks the current thread as one started with `stack_size` bytes of stack (for thread pools
 /// that run Lisp code, such as `batch`'s): the stack check then uses the whole stack.
 pub fn mark_eval_thread(stack_size: usize) {
-    STACK_BOUNDS.with(|b| {
-        b.set(Some((
-            stack_pointer(),
-            stack_size.saturating_sub(STACK_MARGIN),
-        )))
-    });
+    STACK_BOUNDS.with(|b| b.set(Some((stack_pointer(), usable_stack(stack_size)))));
 }

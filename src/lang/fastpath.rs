@@ -14,6 +14,7 @@ use super::eval::Interp;
 use super::value::{Sym, Value};
 
 #[derive(Clone, Copy)]
+#[repr(u8)]
 enum Bin {
     Add,
     Sub,
@@ -28,12 +29,50 @@ enum Bin {
 }
 
 #[derive(Clone, Copy)]
+#[repr(u8)]
 enum Un {
     Inc,
     Dec,
     Neg,
     Sin,
     Cos,
+}
+
+/// The operator back from the const parameter the code closures carry it in: the closures
+/// are monomorphised per operator, so this folds away and no `match` on the operator runs.
+#[inline(always)]
+const fn bin_of(op: u8) -> Bin {
+    const ALL: [Bin; 10] = [
+        Bin::Add,
+        Bin::Sub,
+        Bin::Mul,
+        Bin::Div,
+        Bin::Lt,
+        Bin::Gt,
+        Bin::Le,
+        Bin::Ge,
+        Bin::Eq,
+        Bin::Ne,
+    ];
+    ALL[op as usize]
+}
+
+#[inline(always)]
+const fn un_of(op: u8) -> Un {
+    const ALL: [Un; 5] = [Un::Inc, Un::Dec, Un::Neg, Un::Sin, Un::Cos];
+    ALL[op as usize]
+}
+
+/// Runs `$body` with `$o` a `const u8` naming the operator `$op`, for each possible operator.
+macro_rules! with_op {
+    ($op:expr, $ty:ident [$($v:ident),*], $o:ident => $body:expr) => {
+        match $op {
+            $($ty::$v => {
+                const $o: u8 = $ty::$v as u8;
+                $body
+            })*
+        }
+    };
 }
 
 struct Known {
@@ -187,7 +226,12 @@ struct OCode(Code);
 impl Opnd for OVar {
     #[inline(always)]
     fn get(&self, it: &mut Interp) -> LResult {
-        Ok(it.values[self.0].clone())
+        // Numbers first: a copy without the generic clone's dispatch over every variant.
+        Ok(match &it.values[self.0] {
+            Value::Int(i) => Value::Int(*i),
+            Value::Real(r) => Value::Real(*r),
+            v => v.clone(),
+        })
     }
 }
 
@@ -230,9 +274,8 @@ fn holds(it: &Interp, fi: usize, b: &'static Builtin) -> bool {
     matches!(&it.values[fi], Value::Subr(f) if std::ptr::eq(*f, b))
 }
 
-fn bin_code<X: Opnd, Y: Opnd>(
+fn bin_code<const OP: u8, X: Opnd, Y: Opnd>(
     head: Sym,
-    op: Bin,
     b: &'static Builtin,
     x: X,
     y: Y,
@@ -243,9 +286,10 @@ fn bin_code<X: Opnd, Y: Opnd>(
         let xv = x.get(it)?;
         let yv = y.get(it)?;
         if holds(it, fi, b) {
-            if let Some(v) = bin_numbers(op, &xv, &yv) {
-                xv.release();
-                yv.release();
+            if let Some(v) = bin_numbers(bin_of(OP), &xv, &yv) {
+                // Both are numbers: nothing to drop.
+                std::mem::forget(xv);
+                std::mem::forget(yv);
                 return Ok(v);
             }
         }
@@ -253,13 +297,18 @@ fn bin_code<X: Opnd, Y: Opnd>(
     })
 }
 
-fn un_code<X: Opnd>(head: Sym, op: Un, b: &'static Builtin, x: X, span: Option<Span>) -> Code {
+fn un_code<const OP: u8, X: Opnd>(
+    head: Sym,
+    b: &'static Builtin,
+    x: X,
+    span: Option<Span>,
+) -> Code {
     let fi = head.idx();
     Box::new(move |it| {
         let xv = x.get(it)?;
         if holds(it, fi, b) {
-            if let Some(v) = un_number(op, &xv) {
-                xv.release();
+            if let Some(v) = un_number(un_of(OP), &xv) {
+                std::mem::forget(xv);
                 return Ok(v);
             }
         }
@@ -320,7 +369,8 @@ pub fn compile(head: Sym, name: &str, mut args: Vec<Operand>, span: Option<Span>
             let (op, b) = (*op, *b);
             let y = args.pop().expect("two args");
             let x = args.pop().expect("two args");
-            return with_opnd!(x, x => with_opnd!(y, y => bin_code(head, op, b, x, y, span)));
+            return with_op!(op, Bin [Add, Sub, Mul, Div, Lt, Gt, Le, Ge, Eq, Ne], O =>
+                with_opnd!(x, x => with_opnd!(y, y => bin_code::<O, _, _>(head, b, x, y, span))));
         }
         if lname == "cons" {
             let y = args.pop().expect("two args");
@@ -333,7 +383,8 @@ pub fn compile(head: Sym, name: &str, mut args: Vec<Operand>, span: Option<Span>
         if let Some((_, op, b)) = k.uns.iter().find(|(n, _, _)| *n == lname) {
             let (op, b) = (*op, *b);
             let x = args.pop().expect("one arg");
-            return with_opnd!(x, x => un_code(head, op, b, x, span));
+            return with_op!(op, Un [Inc, Dec, Neg, Sin, Cos], O =>
+                with_opnd!(x, x => un_code::<O, _>(head, b, x, span)));
         }
         if lname == "car" || lname == "cdr" {
             let x = args.pop().expect("one arg");

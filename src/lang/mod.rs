@@ -17,6 +17,7 @@ pub mod eval;
 pub mod fastpath;
 pub mod lint;
 pub mod print;
+pub mod program;
 pub mod reader;
 pub mod real;
 pub mod symbols;

@@ -7,7 +7,6 @@
 //! input cannot exhaust the stack, and tells the REPL whether an entry is complete.
 
 use std::collections::HashMap;
-use std::rc::Rc;
 
 use pest::iterators::Pair;
 use pest::Parser;
@@ -32,7 +31,7 @@ pub struct SpanMap {
 impl SpanMap {
     pub fn get(&self, v: &Value) -> Option<Span> {
         match v {
-            Value::Cons(c) => self.map.get(&Rc::as_ptr(c)).copied(),
+            Value::Cons(c) => self.map.get(&c.as_ptr()).copied(),
             _ => None,
         }
     }
@@ -226,7 +225,7 @@ impl Builder<'_> {
 
     fn record(&mut self, v: &Value, span: Span) {
         if let Value::Cons(c) = v {
-            self.spans.map.insert(Rc::as_ptr(c), span);
+            self.spans.map.insert(c.as_ptr(), span);
         }
     }
 

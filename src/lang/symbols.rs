@@ -2,6 +2,7 @@
 //! compiler recognises get fixed indices so it can compare them without lookups.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 use std::rc::Rc;
 
 use super::value::Sym;
@@ -33,10 +34,38 @@ pub const S_DOT: Sym = Sym(17);
 /// The symbol NIL exists only for `read`-ing "nil"; the reader turns it into `Value::Nil`.
 pub const S_NIL: Sym = Sym(18);
 
+/// FNV-1a: symbol names are short and not attacker-chosen keys worth SipHash's cost, and
+/// start-up interns every builtin name.
+#[derive(Default)]
+struct Fnv(u64);
+
+impl Hasher for Fnv {
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        let mut h = if self.0 == 0 {
+            0xcbf2_9ce4_8422_2325
+        } else {
+            self.0
+        };
+        for b in bytes {
+            h = (h ^ u64::from(*b)).wrapping_mul(0x0100_0000_01b3);
+        }
+        self.0 = h;
+    }
+
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// Room for the library's names (about 300) without rehashing at start-up.
+const INITIAL_SYMBOLS: usize = 512;
+
 #[derive(Clone)]
 pub struct SymbolTable {
     names: Vec<Rc<str>>,
-    index: HashMap<Rc<str>, Sym>,
+    index: HashMap<Rc<str>, Sym, BuildHasherDefault<Fnv>>,
 }
 
 impl Default for SymbolTable {
@@ -48,8 +77,8 @@ impl Default for SymbolTable {
 impl SymbolTable {
     pub fn new() -> Self {
         let mut t = SymbolTable {
-            names: Vec::new(),
-            index: HashMap::new(),
+            names: Vec::with_capacity(INITIAL_SYMBOLS),
+            index: HashMap::with_capacity_and_hasher(INITIAL_SYMBOLS, Default::default()),
         };
         for (i, name) in FIXED.iter().enumerate() {
             let s = t.intern(name);
@@ -63,7 +92,11 @@ impl SymbolTable {
         if let Some(s) = self.index.get(name) {
             return *s;
         }
-        let upper: Rc<str> = Rc::from(name.to_uppercase());
+        let upper: Rc<str> = if name.is_ascii() {
+            Rc::from(name.to_ascii_uppercase())
+        } else {
+            Rc::from(name.to_uppercase())
+        };
         if let Some(s) = self.index.get(&upper) {
             return *s;
         }
@@ -79,6 +112,13 @@ impl SymbolTable {
             .get(name)
             .or_else(|| self.index.get(name.to_uppercase().as_str()))
             .copied()
+    }
+
+    /// Forgets every symbol interned after the first `n` (see `Interp::restore_globals`).
+    pub fn truncate(&mut self, n: usize) {
+        for name in self.names.drain(n.max(FIXED.len())..) {
+            self.index.remove(&name);
+        }
     }
 
     pub fn name(&self, s: Sym) -> &str {

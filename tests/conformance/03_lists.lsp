@@ -61,6 +61,12 @@
 ;=> (A X C X)
 (subst '(10 1.0 2.0) '(10 0.0 0.0) '((0 . "LINE") (10 0.0 0.0)))
 ;=> ((0 . "LINE") (10 1.0 2.0))
+(subst 9 2 nil)
+;=> nil
+(subst 9 2 5)
+;!! bad argument type: listp 5
+(subst 9 2 '(1 2 . 5))
+;!! bad list
 (vl-remove 2 '(1 2 3 2))
 ;=> (1 3)
 (vl-remove-if 'minusp '(1 -2 3 -4))
