@@ -154,6 +154,9 @@ const QUERY: &str = r#"
 (show (cdr (assoc 70 (tblsearch "LAYER" "Frozen"))))
 (show (sslength (ssget "X" '((8 . "Outline")))))
 (show (cdr (assoc 0 (entget (handent (cdr (assoc 5 (entget ins))))))))
+(show (cdr (assoc 2 (tblsearch "BLOCK" "TAG"))))
+(show (cdr (assoc 2 (tblnext "APPID" T))))
+(show (cdr (assoc 3 (tblsearch "STYLE" "Standard"))))
 "#;
 
 #[test]
@@ -175,9 +178,8 @@ fn opened_entities_answer_entget_and_ssget() {
     assert_eq!(
         lines,
         vec![
-            // Model space and the active layout (entities of other layouts live in their
-            // blocks, which are kept but not yet listed).
-            "23",
+            // Model space (22), the active layout (1) and the other layout, Sheet2 (1).
+            "24",
             "1",
             "\"TAG\"",
             "\"ATTRIB\"",
@@ -190,6 +192,9 @@ fn opened_entities_answer_entget_and_ssget() {
             "1",
             "2",
             "\"INSERT\"",
+            "\"TAG\"",
+            "\"ACAD\"",
+            "\"txt\"",
         ],
         "{out}"
     );

@@ -363,6 +363,10 @@ impl Job<'_> {
                 Ok(it) => it,
                 Err(m) => return Outcome::Failed(m),
             };
+            // One `--open` drawing for every row (`--open GLOB`, a row per file, comes at merge).
+            if let Err(m) = super::run::open_start_drawing(&mut it, self.common) {
+                return Outcome::Failed(m);
+            }
             // Rows run in parallel: none of them may wait on the terminal.
             it.ext::<crate::builtins::input::InputState>().no_terminal = true;
             it.syms = syms.clone();

@@ -78,6 +78,9 @@ pub enum DrawingError {
 pub struct SourceRecord {
     pub tags: TagList,
     pub original: Entity,
+    /// For an entity of a layout other than model space and the active paper space: the
+    /// index of its layout's BLOCK record in the BLOCKS section, where it is written back.
+    pub block: Option<usize>,
 }
 
 /// The drawing: layers ("0" always exists) and entities in insertion order.

@@ -21,8 +21,20 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
     };
     let owner = doc.model_space_owner().unwrap_or(0);
     let mut ents = String::with_capacity(1 << 16);
+    // Entities of the other layouts go back into their layout blocks.
+    let mut in_blocks: Vec<(usize, String)> = Vec::new();
     for (e, src) in d.entities_with_sources() {
-        write_one(&mut ents, e, src, doc, owner, &mut alloc);
+        match src.and_then(|s| s.block) {
+            Some(b) => {
+                let mut s = String::new();
+                write_one(&mut s, e, src, doc, owner, &mut alloc);
+                match in_blocks.iter_mut().find(|(i, _)| *i == b) {
+                    Some((_, text)) => text.push_str(&s),
+                    None => in_blocks.push((b, s)),
+                }
+            }
+            None => write_one(&mut ents, e, src, doc, owner, &mut alloc),
+        }
     }
     let layers = layer_records(d, doc, &mut alloc);
     let handseed = format!("{:X}", alloc());
@@ -69,8 +81,12 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
             }
             Section::Other { name, records } => {
                 begin(&mut out, name);
-                for r in records {
+                let blocks = name == "BLOCKS";
+                for (i, r) in records.iter().enumerate() {
                     r.write_to(&mut out);
+                    if let Some((_, text)) = in_blocks.iter().find(|(b, _)| blocks && *b == i) {
+                        out.push_str(text);
+                    }
                 }
             }
         }

@@ -13,6 +13,7 @@ import math
 import sys
 
 import ezdxf
+from ezdxf import recover
 from ezdxf.entities import DXFGraphic
 from ezdxf.lldxf.tagger import binary_tags_loader
 from ezdxf.math import Vec2, Vec3
@@ -79,16 +80,20 @@ def file_handseed(path):
 
 def compare(orig, copy):
     diffs = []
+    damaged = False
     try:
         a = ezdxf.readfile(orig)
     except ezdxf.DXFStructureError:
-        # A damaged original (some real files are): ezdxf's own recovery reads it.
-        from ezdxf import recover
+        # A damaged original (some real files are): ezdxf's own recovery reads it, and the
+        # copy, kept as it was, may need the same.
+        damaged = True
         a, _ = recover.readfile(orig)
     try:
         b = ezdxf.readfile(copy)
-    except Exception as ex:  # noqa: BLE001
-        return {"orig": orig, "copy": copy, "load_error": str(ex), "diffs": []}
+    except ezdxf.DXFStructureError as ex:
+        if not damaged:
+            return {"orig": orig, "copy": copy, "load_error": str(ex), "diffs": []}
+        b, _ = recover.readfile(copy)
     # ezdxf's audit silently re-links some owners (SEQEND): audit both before comparing.
     orig_audit = a.audit()
     auditor = b.audit()
@@ -143,7 +148,14 @@ def same_deep(a, b):
 
 def main():
     args = sys.argv[1:]
-    out = [compare(args[i], args[i + 1]) for i in range(0, len(args), 2)]
+    pairs = [(args[i], args[i + 1]) for i in range(0, len(args), 2)]
+    if len(pairs) > 50:
+        # Many files (LibreCAD's parts): use both cores.
+        import multiprocessing
+        with multiprocessing.Pool(2) as pool:
+            out = pool.starmap(compare, pairs, chunksize=16)
+    else:
+        out = [compare(a, b) for a, b in pairs]
     print(json.dumps(out, indent=1))
 
 
