@@ -1,6 +1,7 @@
 //! Symbol tables as AutoLISP sees them: `tblsearch`/`tblnext` over LAYER (the drawing's
-//! layers), LTYPE (Continuous and the line types layers name) and STYLE (Standard and the
-//! styles text uses), and `entmake` of LAYER records.
+//! layers), and, for an opened drawing, every table of the file and its BLOCK definitions;
+//! for a drawing made from scratch LTYPE (Continuous and the line types layers name) and
+//! STYLE (Standard and the styles text uses). `entmake` of LAYER records.
 
 use super::dxf_list::{int, real, text, Groups};
 use super::EntityState;
