@@ -180,6 +180,13 @@ impl Drawing {
             self.layers.push(Layer::new(&e.layer));
         }
         let h = e.handle;
+        // A record the file gave no handle (old R12 files) keeps having none when written back.
+        let source = source.map(|mut s| {
+            if s.original.handle == 0 {
+                s.original.handle = h;
+            }
+            s
+        });
         let i = self.entities.len();
         let sorted = self.entities.last().is_none_or(|l| l.handle < h);
         if !sorted && self.by_handle.is_none() {

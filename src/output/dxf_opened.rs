@@ -60,9 +60,13 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                 begin(&mut out, "TABLES");
                 for t in ts {
                     if t.name.eq_ignore_ascii_case("LAYER") {
-                        t.head
-                            .with(70, &layers.len().to_string(), 2)
-                            .write_to(&mut out);
+                        if layers == t.records {
+                            t.head.write_to(&mut out);
+                        } else {
+                            t.head
+                                .with(70, &layers.len().to_string(), 2)
+                                .write_to(&mut out);
+                        }
                         for r in &layers {
                             r.write_to(&mut out);
                         }
@@ -159,11 +163,16 @@ fn write_one(
                 s.tags.write_to(out);
                 return;
             }
-            let mut t = s.tags.with(8, &e.layer, 100);
-            t = match e.color {
-                Some(c) => t.with(62, &c.to_string(), 8),
-                None => t.with(62, "256", 8),
-            };
+            let mut t = s.tags.clone();
+            if e.layer != s.original.layer {
+                t = t.with(8, &e.layer, 100);
+            }
+            if e.color != s.original.color {
+                t = match e.color {
+                    Some(c) => t.with(62, &c.to_string(), 8),
+                    None => t.with(62, "256", 8),
+                };
+            }
             if e.handle != s.original.handle {
                 t = t.with(5, &format!("{:X}", e.handle), 0);
                 if !doc.is_r12() {
@@ -304,6 +313,8 @@ fn layer_records(d: &Drawing, doc: &DxfDocument, alloc: &mut impl FnMut() -> u64
     let template = find("0").or(old.first());
     d.layers()
         .iter()
+        // Layer "0" exists in every drawing: a file without its record stays without it.
+        .filter(|l| find(&l.name).is_some() || l.name != "0" || **l != Layer::new("0"))
         .map(|l| match find(&l.name) {
             Some(r) => patch_layer(r, l),
             None => {

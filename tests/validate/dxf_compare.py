@@ -22,6 +22,8 @@ TOL = 1e-9
 
 
 def same(a, b):
+    if a is None or b is None:
+        return a is b
     if isinstance(a, (Vec3, Vec2, tuple, list)) and isinstance(b, (Vec3, Vec2, tuple, list)):
         a, b = list(a), list(b)
         return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
