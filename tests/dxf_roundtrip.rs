@@ -154,6 +154,9 @@ const QUERY: &str = r#"
 (show (cdr (assoc 70 (tblsearch "LAYER" "Frozen"))))
 (show (sslength (ssget "X" '((8 . "Outline")))))
 (show (cdr (assoc 0 (entget (handent (cdr (assoc 5 (entget ins))))))))
+(show (cdr (assoc 2 (tblsearch "BLOCK" "TAG"))))
+(show (cdr (assoc 2 (tblnext "APPID" T))))
+(show (cdr (assoc 3 (tblsearch "STYLE" "Standard"))))
 "#;
 
 #[test]
@@ -175,9 +178,8 @@ fn opened_entities_answer_entget_and_ssget() {
     assert_eq!(
         lines,
         vec![
-            // Model space and the active layout (entities of other layouts live in their
-            // blocks, which are kept but not yet listed).
-            "23",
+            // Model space (22), the active layout (1) and the other layout, Sheet2 (1).
+            "24",
             "1",
             "\"TAG\"",
             "\"ATTRIB\"",
@@ -190,7 +192,59 @@ fn opened_entities_answer_entget_and_ssget() {
             "1",
             "2",
             "\"INSERT\"",
+            "\"TAG\"",
+            "\"ACAD\"",
+            "\"txt\"",
         ],
         "{out}"
+    );
+}
+
+/// `command` ERASE and LAYER on an opened drawing: the erased entities are gone, the layer's
+/// flags and colour change in its own record, nothing else differs.
+const COMMANDS: &str = r#"
+(command "_.ERASE" (ssget "X" '((0 . "ARC"))) "")
+(command "_.LAYER" "_Color" "4" "Outline" "_LOck" "Frozen" "")
+"#;
+
+#[test]
+fn erase_and_layer_commands_edit_the_opened_drawing() {
+    let dir = tempfile::tempdir().unwrap();
+    let files = samples(&dir.path().join("src"));
+    std::fs::write(dir.path().join("c.lsp"), COMMANDS).unwrap();
+    let input = files
+        .iter()
+        .find(|f| f.file_stem().unwrap() == "R2013")
+        .unwrap();
+    let out = dir.path().join("out.dxf");
+    let o = lispcad(
+        dir.path(),
+        &[
+            "run",
+            "c.lsp",
+            "--open",
+            input.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = &compare(&[(input.clone(), out)])[0];
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r}");
+    let mut diffs = strs(&r["diffs"]);
+    diffs.sort();
+    assert_eq!(diffs.len(), 3, "{diffs:?}");
+    assert!(
+        diffs.iter().any(|d| d.ends_with("ARC missing")),
+        "{diffs:?}"
+    );
+    assert!(
+        diffs.iter().any(|d| d.contains("LAYER color: 1 -> 4")),
+        "{diffs:?}"
+    );
+    assert!(
+        diffs.iter().any(|d| d.contains("LAYER flags: 1 -> 5")),
+        "{diffs:?}"
     );
 }

@@ -343,7 +343,11 @@ fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
         // Modelled entities are re-written from the model in their new drawing; only the
         // unmodelled ones need their groups.
         let src = match e.kind {
-            EntityKind::Unmodelled { .. } => src.cloned(),
+            EntityKind::Unmodelled { .. } => src.cloned().map(|mut s| {
+                // Into this drawing's model space, whatever layout it came from.
+                s.block = None;
+                s
+            }),
             _ => None,
         };
         added.push(d.push_loaded(e, src));

@@ -45,7 +45,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("ssadd", "(ssadd [ename [ss]])", "A new empty set, a new set with ename, or ss with ename added (returns ss).", 0, 2, select::ssadd),
     builtin!("ssdel", "(ssdel ename ss)", "Removes ename from ss; returns ss, or nil if it was not there.", 2, 2, select::ssdel),
     builtin!("ssmemb", "(ssmemb ename ss)", "ename if it is in ss, else nil.", 2, 2, select::ssmemb),
-    builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a LAYER, LTYPE or STYLE table entry as a DXF list, or nil.", 2, 3, tables::tblsearch),
+    builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a table entry (LAYER, LTYPE, STYLE; an opened drawing's every table and BLOCK) as a DXF list, or nil.", 2, 3, tables::tblsearch),
     builtin!("tblnext", "(tblnext table [rewind])", "The next record of a table (the first with rewind), or nil at the end.", 1, 2, tables::tblnext),
 ];
 

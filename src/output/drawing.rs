@@ -78,6 +78,9 @@ pub enum DrawingError {
 pub struct SourceRecord {
     pub tags: TagList,
     pub original: Entity,
+    /// For an entity of a layout other than model space and the active paper space: the
+    /// index of its layout's BLOCK record in the BLOCKS section, where it is written back.
+    pub block: Option<usize>,
 }
 
 /// The drawing: layers ("0" always exists) and entities in insertion order.
@@ -177,6 +180,13 @@ impl Drawing {
             self.layers.push(Layer::new(&e.layer));
         }
         let h = e.handle;
+        // A record the file gave no handle (old R12 files) keeps having none when written back.
+        let source = source.map(|mut s| {
+            if s.original.handle == 0 {
+                s.original.handle = h;
+            }
+            s
+        });
         let i = self.entities.len();
         let sorted = self.entities.last().is_none_or(|l| l.handle < h);
         if !sorted && self.by_handle.is_none() {

@@ -737,7 +737,10 @@ pub(crate) fn write_entity(
             w.str(100, "AcDbEllipse");
             w.point(10, *center);
             w.point(11, *major);
-            w.point(210, normal.normalize());
+            let n = normal.normalize();
+            if n != DVec3::Z {
+                w.point(210, n);
+            }
             w.float(40, *ratio);
             w.float(41, *start);
             w.float(42, *end);

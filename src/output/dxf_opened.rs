@@ -21,8 +21,20 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
     };
     let owner = doc.model_space_owner().unwrap_or(0);
     let mut ents = String::with_capacity(1 << 16);
+    // Entities of the other layouts go back into their layout blocks.
+    let mut in_blocks: Vec<(usize, String)> = Vec::new();
     for (e, src) in d.entities_with_sources() {
-        write_one(&mut ents, e, src, doc, owner, &mut alloc);
+        match src.and_then(|s| s.block) {
+            Some(b) => {
+                let mut s = String::new();
+                write_one(&mut s, e, src, doc, owner, &mut alloc);
+                match in_blocks.iter_mut().find(|(i, _)| *i == b) {
+                    Some((_, text)) => text.push_str(&s),
+                    None => in_blocks.push((b, s)),
+                }
+            }
+            None => write_one(&mut ents, e, src, doc, owner, &mut alloc),
+        }
     }
     let layers = layer_records(d, doc, &mut alloc);
     let handseed = format!("{:X}", alloc());
@@ -48,9 +60,13 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                 begin(&mut out, "TABLES");
                 for t in ts {
                     if t.name.eq_ignore_ascii_case("LAYER") {
-                        t.head
-                            .with(70, &layers.len().to_string(), 2)
-                            .write_to(&mut out);
+                        if layers == t.records {
+                            t.head.write_to(&mut out);
+                        } else {
+                            t.head
+                                .with(70, &layers.len().to_string(), 2)
+                                .write_to(&mut out);
+                        }
                         for r in &layers {
                             r.write_to(&mut out);
                         }
@@ -69,8 +85,12 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
             }
             Section::Other { name, records } => {
                 begin(&mut out, name);
-                for r in records {
+                let blocks = name == "BLOCKS";
+                for (i, r) in records.iter().enumerate() {
                     r.write_to(&mut out);
+                    if let Some((_, text)) = in_blocks.iter().find(|(b, _)| blocks && *b == i) {
+                        out.push_str(text);
+                    }
                 }
             }
         }
@@ -143,11 +163,16 @@ fn write_one(
                 s.tags.write_to(out);
                 return;
             }
-            let mut t = s.tags.with(8, &e.layer, 100);
-            t = match e.color {
-                Some(c) => t.with(62, &c.to_string(), 8),
-                None => t.with(62, "256", 8),
-            };
+            let mut t = s.tags.clone();
+            if e.layer != s.original.layer {
+                t = t.with(8, &e.layer, 100);
+            }
+            if e.color != s.original.color {
+                t = match e.color {
+                    Some(c) => t.with(62, &c.to_string(), 8),
+                    None => t.with(62, "256", 8),
+                };
+            }
             if e.handle != s.original.handle {
                 t = t.with(5, &format!("{:X}", e.handle), 0);
                 if !doc.is_r12() {
@@ -288,6 +313,8 @@ fn layer_records(d: &Drawing, doc: &DxfDocument, alloc: &mut impl FnMut() -> u64
     let template = find("0").or(old.first());
     d.layers()
         .iter()
+        // Layer "0" exists in every drawing: a file without its record stays without it.
+        .filter(|l| find(&l.name).is_some() || l.name != "0" || **l != Layer::new("0"))
         .map(|l| match find(&l.name) {
             Some(r) => patch_layer(r, l),
             None => {

@@ -45,8 +45,12 @@
 ;!! bad DXF group: (40 . "x")
 (entmake '((0 . "LINE") 5))
 ;!! bad DXF group: 5
+(entmake '((0 . "INSERT") (10 0 0 0)))
+;!! entmake: entity type INSERT is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT and LAYER are)
 (entmake '((0 . "ELLIPSE") (10 0 0 0)))
-;!! entmake: entity type ELLIPSE is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, 3DFACE, TEXT and LAYER are)
+;=> nil
+(cdr (assoc 40 (entmake '((0 . "ELLIPSE") (10 1 2 0) (11 3 0 0) (40 . 0.5)))))
+;=> 0.5
 (entmake '((0 . "NOSUCHTHING") (10 0 0 0)))
 ;=> nil
 (entmake 5)

@@ -4,20 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-pub fn manifest() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// The venv python `.ci/setup` creates. Missing = test failure (never a skip).
-pub fn python() -> PathBuf {
-    let p = manifest().join(".venv/bin/python");
-    assert!(
-        p.exists(),
-        "validator python missing at {}: run `bash .ci/setup` first",
-        p.display()
-    );
-    p
-}
+#[path = "../output_support/mod.rs"]
+mod output_support;
+pub use output_support::{manifest, python};
 
 /// Writes the ezdxf sample drawings (every version, binary too) into `dir`; their paths.
 pub fn samples(dir: &Path) -> Vec<PathBuf> {

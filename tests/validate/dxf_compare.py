@@ -13,6 +13,7 @@ import math
 import sys
 
 import ezdxf
+from ezdxf import recover
 from ezdxf.entities import DXFGraphic
 from ezdxf.lldxf.tagger import binary_tags_loader
 from ezdxf.math import Vec2, Vec3
@@ -21,6 +22,8 @@ TOL = 1e-9
 
 
 def same(a, b):
+    if a is None or b is None:
+        return a is b
     if isinstance(a, (Vec3, Vec2, tuple, list)) and isinstance(b, (Vec3, Vec2, tuple, list)):
         a, b = list(a), list(b)
         return len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
@@ -79,16 +82,20 @@ def file_handseed(path):
 
 def compare(orig, copy):
     diffs = []
+    damaged = False
     try:
         a = ezdxf.readfile(orig)
     except ezdxf.DXFStructureError:
-        # A damaged original (some real files are): ezdxf's own recovery reads it.
-        from ezdxf import recover
+        # A damaged original (some real files are): ezdxf's own recovery reads it, and the
+        # copy, kept as it was, may need the same.
+        damaged = True
         a, _ = recover.readfile(orig)
     try:
         b = ezdxf.readfile(copy)
-    except Exception as ex:  # noqa: BLE001
-        return {"orig": orig, "copy": copy, "load_error": str(ex), "diffs": []}
+    except ezdxf.DXFStructureError as ex:
+        if not damaged:
+            return {"orig": orig, "copy": copy, "load_error": str(ex), "diffs": []}
+        b, _ = recover.readfile(copy)
     # ezdxf's audit silently re-links some owners (SEQEND): audit both before comparing.
     orig_audit = a.audit()
     auditor = b.audit()
@@ -143,7 +150,14 @@ def same_deep(a, b):
 
 def main():
     args = sys.argv[1:]
-    out = [compare(args[i], args[i + 1]) for i in range(0, len(args), 2)]
+    pairs = [(args[i], args[i + 1]) for i in range(0, len(args), 2)]
+    if len(pairs) > 50:
+        # Many files (LibreCAD's parts): use both cores.
+        import multiprocessing
+        with multiprocessing.Pool(2) as pool:
+            out = pool.starmap(compare, pairs, chunksize=16)
+    else:
+        out = [compare(a, b) for a, b in pairs]
     print(json.dumps(out, indent=1))
 
 

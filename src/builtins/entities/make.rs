@@ -32,7 +32,6 @@ pub struct PendingPolyline {
 /// AutoCAD entity types lispcad does not model: `entmake` says so instead of returning a
 /// silent nil (which AutoCAD gives for unknown types).
 const UNSUPPORTED: &[&str] = &[
-    "ELLIPSE",
     "INSERT",
     "MTEXT",
     "HATCH",
@@ -183,6 +182,21 @@ pub fn kind_of(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<EntityKin
                 style: g.string(it, 7)?.unwrap_or_else(|| "Standard".to_string()),
             }
         }
+        "ELLIPSE" => {
+            let (Some(center), Some(major), Some(ratio)) =
+                (g.point(it, 10)?, g.point(it, 11)?, g.real(it, 40)?)
+            else {
+                return Ok(None);
+            };
+            EntityKind::Ellipse {
+                center,
+                major,
+                normal,
+                ratio,
+                start: g.real(it, 41)?.unwrap_or(0.0),
+                end: g.real(it, 42)?.unwrap_or(std::f64::consts::TAU),
+            }
+        }
         _ => return Ok(None),
     };
     Ok(Some(kind))
@@ -310,7 +324,7 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         "LAYER" => super::tables::make_layer(it, &g)?,
         t if UNSUPPORTED.contains(&t) => {
             return Err(err(format!(
-                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, 3DFACE, TEXT and LAYER are)"
+                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT and LAYER are)"
             )))
         }
         t => make_entity(it, t, &g)?.is_some(),
@@ -422,7 +436,14 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         return Ok(Value::Nil);
     };
     let layer = g.string(it, 8)?.unwrap_or_default();
-    let kind = if ty == "POLYLINE" {
+    let unmodelled = drawing(it)
+        .get(name.handle)
+        .filter(|e| matches!(e.kind, EntityKind::Unmodelled { .. }))
+        .map(|e| e.kind.clone());
+    let kind = if let Some(k) = unmodelled {
+        // Kept as read (INSERT, MTEXT, HATCH...): layer and colour change, the geometry stays.
+        k
+    } else if ty == "POLYLINE" {
         // The header carries no geometry; flags 70 bit 1 may open or close it.
         let Some(e) = drawing(it).get(name.handle) else {
             return Ok(Value::Nil);

@@ -1,16 +1,53 @@
 //! Symbol tables as AutoLISP sees them: `tblsearch`/`tblnext` over LAYER (the drawing's
-//! layers), LTYPE (Continuous and the line types layers name) and STYLE (Standard and the
-//! styles text uses), and `entmake` of LAYER records.
+//! layers), and, for an opened drawing, every table of the file and its BLOCK definitions;
+//! for a drawing made from scratch LTYPE (Continuous and the line types layers name) and
+//! STYLE (Standard and the styles text uses). `entmake` of LAYER records.
 
 use super::dxf_list::{int, real, text, Groups};
 use super::EntityState;
 use crate::builtins::drawing::drawing;
 use crate::lang::error::{Exn, LResult};
 use crate::lang::{Interp, Value};
+use crate::output::record::TagList;
 use crate::output::{Drawing, EntityKind, Layer};
 
+/// The records of an opened drawing's table (or its BLOCK definitions), as read; `None`
+/// for a drawing made from scratch or for LAYER, which follows the drawing's layers.
+fn opened_records(it: &mut Interp, table: &str) -> Option<Vec<(String, Value)>> {
+    let doc = drawing(it).document()?;
+    let recs: Vec<TagList> = match table {
+        "LAYER" => return None,
+        // Model and paper space are layouts, not blocks, to tblnext.
+        "BLOCK" => doc
+            .section_records("BLOCKS")
+            .iter()
+            .filter(|r| r.type_name() == "BLOCK")
+            .filter(|r| {
+                !r.get(2).is_some_and(|n| {
+                    n.starts_with("*Model_Space")
+                        || n.to_ascii_uppercase().starts_with("*PAPER_SPACE")
+                })
+            })
+            .cloned()
+            .collect(),
+        _ => doc.table(table)?.records.clone(),
+    };
+    Some(
+        recs.iter()
+            .map(|r| {
+                let name = r.get(2).unwrap_or("").to_string();
+                (name, super::tag_list::table_record_list(it, r))
+            })
+            .collect(),
+    )
+}
+
 /// The records of a table, each as (name, DXF list), in table order.
-fn records(d: &Drawing, table: &str) -> Vec<(String, Value)> {
+fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
+    if let Some(r) = opened_records(it, table) {
+        return r;
+    }
+    let d: &Drawing = drawing(it);
     match table {
         "LAYER" => d
             .layers()
@@ -98,7 +135,7 @@ fn set_cursor(it: &mut Interp, table: &str, pos: usize) {
 pub fn tblsearch(it: &mut Interp, a: &[Value]) -> LResult {
     let table = it.string(&a[0])?.to_uppercase();
     let name = it.string(&a[1])?.to_string();
-    let recs = records(drawing(it), &table);
+    let recs = records(it, &table);
     let Some(i) = recs.iter().position(|(n, _)| n.eq_ignore_ascii_case(&name)) else {
         return Ok(Value::Nil);
     };
@@ -120,7 +157,7 @@ pub fn tblnext(it: &mut Interp, a: &[Value]) -> LResult {
             .find(|(t, _)| *t == table)
             .map_or(0, |c| c.1)
     };
-    let recs = records(drawing(it), &table);
+    let recs = records(it, &table);
     let Some((_, rec)) = recs.into_iter().nth(pos) else {
         set_cursor(it, &table, pos);
         return Ok(Value::Nil);

@@ -313,7 +313,11 @@ fn kind(
             }
         }
         "SPLINE" => {
-            let degree = f.i(71).max(1) as usize;
+            let degree = f.i(71);
+            if !(1..=32).contains(&degree) {
+                return None;
+            }
+            let degree = degree as usize;
             let ctrl = f.points(10);
             let knots = f.all(40);
             let weights = f.all(41);

@@ -22,7 +22,8 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
         last_pos: Pos::Line(1),
     };
     let mut sections = Vec::new();
-    let mut groups: Vec<TagList> = Vec::new();
+    let mut groups: Vec<(TagList, Option<usize>)> = Vec::new();
+    let mut layout_groups: Vec<(TagList, Option<usize>)> = Vec::new();
     let mut seen_any = false;
     while let Some((rec, pos)) = rs.next(false)? {
         seen_any = true;
@@ -35,20 +36,46 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
                         for (c, v) in rec.iter().skip(2) {
                             h.push(c, v);
                         }
-                        rs.section_body(&name, pos, false, |_| Ok(()))?;
+                        rs.header_rest(pos, &mut h)?;
                         Section::Header(h)
                     }
                     "TABLES" => Section::Tables(rs.tables(pos)?),
                     "ENTITIES" => {
                         rs.section_body(&name, pos, true, |r| {
-                            group_entity(&mut groups, r);
+                            group_entity(&mut groups, r, None);
                             Ok(())
                         })?;
                         Section::Entities
                     }
+                    "BLOCKS" => {
+                        let mut records: Vec<TagList> = Vec::new();
+                        let mut layout: Option<usize> = None;
+                        rs.section_body(&name, pos, true, |r| {
+                            match r.type_name() {
+                                "BLOCK" => {
+                                    let is_layout = r.get(2).is_some_and(|n| {
+                                        n.len() > 12 && n[..12].eq_ignore_ascii_case("*Paper_Space")
+                                    });
+                                    layout = is_layout.then_some(records.len());
+                                    records.push(r);
+                                }
+                                "ENDBLK" => {
+                                    layout = None;
+                                    records.push(r);
+                                }
+                                // Layout entities are drawing entities (`ssget "X"` sees them).
+                                _ => match layout {
+                                    Some(b) => group_entity(&mut layout_groups, r, Some(b)),
+                                    None => records.push(r),
+                                },
+                            }
+                            Ok(())
+                        })?;
+                        Section::Other { name, records }
+                    }
                     _ => {
                         let mut records = Vec::new();
-                        rs.section_body(&name, pos, name == "BLOCKS", |r| {
+                        rs.section_body(&name, pos, false, |r| {
                             records.push(r);
                             Ok(())
                         })?;
@@ -77,23 +104,24 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
         sections,
         recovered,
     };
+    groups.append(&mut layout_groups);
     Ok(build_drawing(doc, groups))
 }
 
 /// POLYLINE's VERTEX records, INSERT's ATTRIBs and their SEQEND travel with their owner.
-fn group_entity(groups: &mut Vec<TagList>, r: TagList) {
+fn group_entity(groups: &mut Vec<(TagList, Option<usize>)>, r: TagList, block: Option<usize>) {
     let follower = matches!(r.type_name(), "VERTEX" | "ATTRIB" | "SEQEND");
     match groups.last_mut() {
-        Some(g) if follower => {
+        Some((g, _)) if follower => {
             for (c, v) in r.iter() {
                 g.push(c, v);
             }
         }
-        _ => groups.push(r),
+        _ => groups.push((r, block)),
     }
 }
 
-fn build_drawing(doc: DxfDocument, groups: Vec<TagList>) -> Drawing {
+fn build_drawing(doc: DxfDocument, groups: Vec<(TagList, Option<usize>)>) -> Drawing {
     let mut d = Drawing::new();
     let layers: Vec<Layer> = doc
         .table_records("LAYER")
@@ -117,7 +145,7 @@ fn build_drawing(doc: DxfDocument, groups: Vec<TagList>) -> Drawing {
             max_handle = max_handle.max(all_handles_max(r));
         }
     }
-    for g in &groups {
+    for (g, _) in &groups {
         max_handle = max_handle.max(all_handles_max(g));
     }
     let seed = doc
@@ -126,10 +154,17 @@ fn build_drawing(doc: DxfDocument, groups: Vec<TagList>) -> Drawing {
         .unwrap_or(0);
     d.set_handle_seed(seed.max(max_handle + 1));
     let clayer = doc.header_var("$CLAYER").map(str::to_string);
-    for g in groups {
+    for (g, block) in groups {
         let e = factory::entity(&g);
         let original = e.clone();
-        d.push_loaded(e, Some(SourceRecord { tags: g, original }));
+        d.push_loaded(
+            e,
+            Some(SourceRecord {
+                tags: g,
+                original,
+                block,
+            }),
+        );
     }
     if let Some(l) = clayer {
         let _ = d.set_current_layer(&l);
@@ -234,6 +269,23 @@ impl Records<'_> {
         Ok(Some((list, pos)))
     }
 
+    /// The rest of a HEADER section. dxflib (LibreCAD) writes an ENDSEC in the middle of its
+    /// header and goes on with variables: such an ENDSEC and what follows it stay part of
+    /// the header, so the file is written back as it was.
+    fn header_rest(&mut self, start: Pos, h: &mut TagList) -> Result<(), DxfReadError> {
+        let mut other = Vec::new();
+        self.section_body("HEADER", start, false, |r| {
+            other.push(r);
+            Ok(())
+        })?;
+        for r in other {
+            for (c, v) in r.iter() {
+                h.push(c, v);
+            }
+        }
+        Ok(())
+    }
+
     /// The records of a section up to its ENDSEC, handed to `each`.
     fn section_body(
         &mut self,
@@ -252,6 +304,7 @@ impl Records<'_> {
                 return Ok(());
             };
             match rec.type_name() {
+                "ENDSEC" if name == "HEADER" && rec.len() > 1 => each(rec)?,
                 "ENDSEC" => return Ok(()),
                 "SECTION" | "EOF" => {
                     self.damaged(

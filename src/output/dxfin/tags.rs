@@ -294,6 +294,7 @@ impl<'a> Tagger<'a> {
             let code = std::str::from_utf8(text)
                 .ok()
                 .and_then(|s| s.parse::<i32>().ok());
+            let (value_at, value_line) = (self.at, self.line);
             let Some(value) = self.line() else {
                 if self.recover {
                     self.recovered += 1;
@@ -315,8 +316,8 @@ impl<'a> Tagger<'a> {
                 None if self.recover => {
                     // Realign: drop one line and try again from the next.
                     self.recovered += 1;
-                    self.at -= value.len() + 1;
-                    self.line -= 1;
+                    self.at = value_at;
+                    self.line = value_line;
                 }
                 None => {
                     return Some(Err(DxfReadError::at(
@@ -474,7 +475,12 @@ pub fn decode_unicode_escapes(s: &str) -> String {
         out.push_str(&rest[..i]);
         let hex = rest.get(i + 3..i + 7);
         match hex
-            .filter(|h| h.bytes().all(|b| b.is_ascii_hexdigit()))
+            // Upper-case hex only, as ezdxf decodes: a lower-case one stays text, so it is
+            // written back as it was.
+            .filter(|h| {
+                h.bytes()
+                    .all(|b| b.is_ascii_digit() || (b'A'..=b'F').contains(&b))
+            })
             .and_then(|h| u32::from_str_radix(h, 16).ok())
             .and_then(char::from_u32)
         {
