@@ -55,6 +55,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
 pub fn init(it: &mut Interp) {
     system::init(it);
     command::init(it);
+    vla::init(it);
 }
 
 /// Finds a builtin's descriptor by name (case-insensitive).
