@@ -67,3 +67,20 @@
 (entmake '((0 . "POINT") (10 0 0 0)))
 (vlax-curve-getStartParam (entlast))
 ;!! bad argument type: curvep <Entity name: 104>
+;; ELLIPSE (a CURVE value until the drawing has ELLIPSE entities): the parameter is the angle.
+(setq el (ellipse '(0 0 0) '(4 0 0) 0.5))
+;=> #<ELLIPSE (0 0 0) major (4 0 0) ratio 0.5>
+(list (vlax-curve-getStartParam el) (vlax-curve-getEndParam el) (vlax-curve-isClosed el) (vlax-curve-isPeriodic el))
+;=> (0.0 6.28319 T T)
+(vlax-curve-getPointAtParam el pi)
+;=> (-4.0 2.44929e-16 0.0)
+(vlax-curve-getArea el)
+;=> 25.1327
+(vlax-curve-getFirstDeriv el 0.0)
+;=> (0.0 2.0 0.0)
+(vlax-curve-getParamAtPoint el '(0.0 -2.0 0.0))
+;=> 4.71239
+(intersect el (line '(-10 0 0) '(10 0 0)))
+;=> ((4.0 0.0 0.0) (-4.0 2.44929e-16 0.0))
+(ellipse '(0 0 0) '(0 0 1) 0.5)
+;!! major axis: must be perpendicular to the normal

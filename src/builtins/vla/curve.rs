@@ -55,7 +55,11 @@ pub struct AcCurve {
 impl AcCurve {
     fn new(curve: Curve) -> AcCurve {
         let (lo, hi) = natural_range(&curve);
-        let periodic = matches!(curve, Curve::Circle(_));
+        let periodic = match &curve {
+            Curve::Circle(_) => true,
+            Curve::Ellipse(e) => e.is_full(),
+            _ => false,
+        };
         AcCurve {
             curve,
             lo,
@@ -72,10 +76,23 @@ impl AcCurve {
         if !param.is_finite() || param < self.lo - slack || param > self.hi + slack {
             return None;
         }
+        if let Curve::Ellipse(e) = &self.curve {
+            // The ellipse's angle is not linear in the core's t: convert exactly.
+            return Some(if param >= self.hi {
+                1.0
+            } else if param <= self.lo {
+                0.0
+            } else {
+                e.t_at_angle(param)
+            });
+        }
         Some(((param - self.lo) / span).clamp(0.0, 1.0))
     }
 
     pub fn param_of(&self, t: f64) -> f64 {
+        if let Curve::Ellipse(e) = &self.curve {
+            return if t >= 1.0 { self.hi } else { e.angle_at(t) };
+        }
         self.lo + (self.hi - self.lo) * t
     }
 
@@ -95,6 +112,7 @@ fn natural_range(c: &Curve) -> (f64, f64) {
         // The lispcad spline through fit points: its quadratic segment index plus fraction.
         Curve::Spline(q) => (0.0, q.segments.len() as f64),
         Curve::BSpline(b) => b.domain(),
+        Curve::Ellipse(e) => (e.start_angle(), e.end_angle()),
     }
 }
 
@@ -325,6 +343,7 @@ fn first_deriv(it: &mut Interp, a: &[Value]) -> LResult {
             let (lo, hi) = b.domain();
             crate::geom::curve_measure::derivs_u(b, lo + (hi - lo) * t)[1]
         }
+        Curve::Ellipse(e) => e.deriv_at_angle(param),
         _ => c.curve.deriv(t) / c.scale(),
     };
     Ok(point3(d))
@@ -336,6 +355,9 @@ fn second_deriv(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(t) = c.t_of(param) else {
         return Ok(Value::Nil);
     };
+    if let Curve::Ellipse(e) = &c.curve {
+        return Ok(point3(e.second_deriv_at_angle(param)));
+    }
     Ok(point3(c.curve.second_deriv(t) / (c.scale() * c.scale())))
 }
 
