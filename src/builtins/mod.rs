@@ -16,6 +16,7 @@ pub mod io;
 pub mod lists;
 pub mod numbers;
 pub mod predicates;
+pub mod settings;
 pub mod special;
 pub mod strings;
 pub mod surfaces;

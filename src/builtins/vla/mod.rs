@@ -12,6 +12,7 @@ use crate::lang::value::Object;
 use crate::lang::{Interp, Value};
 use crate::output::entity::EntityKind;
 
+pub mod compat;
 pub mod curve;
 pub mod methods;
 pub mod object;
@@ -30,6 +31,7 @@ pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
         ),
         ("Visual LISP: methods (vla-*)", object::METHODS),
         ("Visual LISP: variants and safearrays", variant::BUILTINS),
+        ("AutoCAD compatibility", compat::BUILTINS),
     ]
 }
 
