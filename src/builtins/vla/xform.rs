@@ -3,9 +3,10 @@
 //! their points, circles, arcs and LWPOLYLINEs go through the geometry core's curve transform
 //! (which keeps them exact and flips their orientation under a mirror).
 
-use glam::{DMat3, DMat4, DVec3};
+use glam::{DMat3, DMat4, DVec2, DVec3};
 
 use crate::builtins::drawing::curve_entity;
+use crate::geom::frame::Ocs;
 use crate::output::entity::EntityKind;
 
 use super::curve::entity_curve;
@@ -75,7 +76,81 @@ pub fn transform_entity(k: &EntityKind, m: &DMat4) -> Result<EntityKind, String>
             let c = entity_curve(k)
                 .ok_or("not a curve")?
                 .map_err(|e| e.to_string())?;
-            curve_entity(&c.transform(m).map_err(|e| e.to_string())?)
+            let n0 = match k {
+                EntityKind::Circle { normal, .. }
+                | EntityKind::Arc { normal, .. }
+                | EntityKind::LwPolyline { normal, .. } => *normal,
+                _ => DVec3::Z,
+            };
+            keep_normal(
+                curve_entity(&c.transform(m).map_err(|e| e.to_string())?),
+                n0,
+            )
         }
     })
+}
+
+/// A mirror turns a planar entity's normal over; AutoCAD's MIRROR keeps the normal and
+/// describes the same points from the original side (angles swapped, bulges negated).
+fn keep_normal(k: EntityKind, n0: DVec3) -> EntityKind {
+    let ocs = Ocs::new(n0);
+    let angle = |center: DVec3, p: DVec3| {
+        let v = p - center;
+        crate::geom::arc::norm_angle(v.dot(ocs.y).atan2(v.dot(ocs.x)))
+    };
+    match k {
+        EntityKind::Circle {
+            center,
+            radius,
+            normal,
+        } if normal.dot(n0) < 0.0 => EntityKind::Circle {
+            center,
+            radius,
+            normal: n0,
+        },
+        EntityKind::Arc {
+            center,
+            radius,
+            start,
+            end,
+            normal,
+        } if normal.dot(n0) < 0.0 => {
+            let flipped = Ocs::new(normal);
+            let (p0, p1) = (
+                flipped.on_circle(center, radius, start),
+                flipped.on_circle(center, radius, end),
+            );
+            EntityKind::Arc {
+                center,
+                radius,
+                start: angle(center, p1),
+                end: angle(center, p0),
+                normal: n0,
+            }
+        }
+        EntityKind::LwPolyline {
+            points,
+            bulges,
+            closed,
+            elevation,
+            normal,
+        } if normal.dot(n0) < 0.0 => {
+            let flipped = Ocs::new(normal);
+            let wcs: Vec<DVec3> = points
+                .iter()
+                .map(|p| flipped.to_wcs(*p, elevation))
+                .collect();
+            EntityKind::LwPolyline {
+                points: wcs
+                    .iter()
+                    .map(|p| DVec2::new(p.dot(ocs.x), p.dot(ocs.y)))
+                    .collect(),
+                bulges: bulges.iter().map(|b| -b).collect(),
+                closed,
+                elevation: wcs.first().map_or(0.0, |p| p.dot(ocs.n)),
+                normal: n0,
+            }
+        }
+        other => other,
+    }
 }
