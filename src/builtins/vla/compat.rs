@@ -24,7 +24,6 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("mode_tile", "(mode_tile key mode)", "Refused: DCL dialogs are not available headless.", 0, MANY, no_dialog),
     builtin!("acad_colordlg", "(acad_colordlg color [flag])", "Refused: dialogs are not available headless (set the colour in the script).", 0, MANY, no_dialog),
     builtin!("acad_truecolordlg", "(acad_truecolordlg color [flag])", "Refused: dialogs are not available headless (set the colour in the script).", 0, MANY, no_dialog),
-    builtin!("getfiled", "(getfiled title default ext flags)", "Refused: file dialogs are not available headless (pass the file name to the script).", 0, MANY, no_dialog),
 ];
 
 fn entmakex(it: &mut Interp, a: &[Value]) -> LResult {

@@ -318,7 +318,6 @@ const READ_ONLY: &[&str] = &[
     "VERSION",
     "FULLNAME",
     "PATH",
-    "STARTPOINT_ARC",
     "ISRATIONAL",
 ];
 
