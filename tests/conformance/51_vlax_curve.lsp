@@ -84,3 +84,11 @@
 ;=> ((4.0 0.0 0.0) (-4.0 2.44929e-16 0.0))
 (ellipse '(0 0 0) '(0 0 1) 0.5)
 ;!! major axis: must be perpendicular to the normal
+;; A changed entity is measured anew (the measures are cached per unchanged entity).
+(entmake '((0 . "LINE") (10 0.0 0.0 0.0) (11 3.0 4.0 0.0)))
+(setq l2 (entlast))
+(vlax-curve-getDistAtParam l2 (vlax-curve-getEndParam l2))
+;=> 5.0
+(entmod (subst '(11 6.0 8.0 0.0) (assoc 11 (entget l2)) (entget l2)))
+(list (vlax-curve-getEndParam l2) (vlax-curve-getPointAtDist l2 10.0))
+;=> (10.0 (6.0 8.0 0.0))
