@@ -326,3 +326,13 @@ fn getdist_accepts_architectural_and_fractional_input() {
     );
     assert_eq!(got, ["18.0", "1.5", "0.75", "2.0"]);
 }
+
+#[test]
+fn command_pause_takes_the_next_answer() {
+    let got = values(
+        "(progn (command \"_.LINE\" '(0 0) pause \"\") (cdr (assoc 11 (entget (entlast))))) \
+         (progn (command \"_.CIRCLE\" pause pause) (cdr (assoc 40 (entget (entlast)))))",
+        "5,5\n1,1\n2.5\n",
+    );
+    assert_eq!(got, ["(5.0 5.0 0.0)", "2.5"]);
+}

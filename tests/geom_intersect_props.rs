@@ -2,6 +2,7 @@
 //! chosen points find exactly those points, and argument order does not matter.
 
 use lispcad::geom::bspline::BSpline;
+use lispcad::geom::ellipse::Ellipse;
 use lispcad::geom::quadspline::QuadSpline;
 use lispcad::geom::{intersect, Curve, DVec3, Hit, HitKind};
 use proptest::prelude::*;
@@ -82,6 +83,30 @@ fn any_curve() -> impl Strategy<Value = Curve> {
         (prop::collection::vec(pt2(), 4..7), 2usize..4).prop_filter_map("bspline", |(p, d)| {
             BSpline::new(d, p, None, None).ok().map(Curve::BSpline)
         }),
+        (
+            pt(),
+            unit(),
+            0.5..8.0f64,
+            0.1..1.0f64,
+            0.0..6.3f64,
+            0.1..6.3f64,
+            unit()
+        )
+            .prop_filter_map("elliptical arc", |(c, dir, len, r, a, s, n)| {
+                let major = (dir - n * dir.dot(n)).try_normalize()? * len;
+                Ellipse::new(c, major, r, a, a + s, n)
+                    .ok()
+                    .map(Curve::Ellipse)
+            }),
+        (pt2(), 0.5..8.0f64, 0.0..3.2f64, 0.1..1.0f64).prop_filter_map(
+            "ellipse",
+            |(c, len, rot, r)| {
+                let major = DVec3::new(rot.cos(), rot.sin(), 0.0) * len;
+                Ellipse::new(c, major, r, 0.0, std::f64::consts::TAU, DVec3::Z)
+                    .ok()
+                    .map(Curve::Ellipse)
+            }
+        ),
     ]
 }
 

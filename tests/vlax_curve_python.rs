@@ -73,6 +73,11 @@ fn entities() -> Vec<(Json, String)> {
         json!({"kind": "POLYLINE", "pts": p3, "closed": false}),
         String::new(),
     ));
+    // A CURVE value (the drawing gets ELLIPSE entities with the DXF reader).
+    out.push((
+        json!({"kind": "ELLIPSE", "c": [1.0, -2.0, 0.5], "major": [3.0, 1.0, 0.0], "normal": [0.0, 0.0, 1.0], "ratio": 0.4, "a0": 0.7, "a1": 5.9}),
+        "(ellipse '(1.0 -2.0 0.5) '(3.0 1.0 0.0) 0.4 0.7 5.9)".into(),
+    ));
     let ctrl = [
         [0.0, 0.0, 0.0],
         [1.0, 3.0, 0.0],
@@ -180,10 +185,14 @@ fn vlax_curve_agrees_with_ezdxf_and_numpy() {
                 ));
             }
             eval("(entmake '((0 . \"SEQEND\")))");
+        } else if kind == "ELLIPSE" {
+            eval(&format!("(setq e {dxf})"));
         } else {
             eval(&format!("(entmake '{dxf})"));
         }
-        eval("(setq e (entlast))");
+        if kind != "ELLIPSE" {
+            eval("(setq e (entlast))");
+        }
         close(
             &nums(&eval("(vlax-curve-getStartParam e)")),
             &r["start"],

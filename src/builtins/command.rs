@@ -5,7 +5,7 @@
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
 //! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
-//! UCS (World only), and the
+//! MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO (marks), UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -22,13 +22,15 @@ use crate::output::{Drawing, Entity, EntityKind};
 
 #[path = "command/draw.rs"]
 mod draw;
+#[path = "command/edit.rs"]
+mod edit;
 #[path = "command/layer.rs"]
 mod layer;
 #[path = "command/text.rs"]
 mod text;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT); \"\" is Enter, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
+    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
     builtin!("command-s", "(command-s [arg...])", "As command, but a command left unfinished at the end of the call is cancelled. Returns nil.", 0, MANY, command_s),
     builtin!("vl-cmdf", "(vl-cmdf [arg...])", "As command; returns T.", 0, MANY, vl_cmdf),
 ];
@@ -89,6 +91,9 @@ pub(crate) enum Pending {
     Layer(layer::LayerCmd),
     Erase(Vec<u64>),
     Text(text::TextCmd),
+    Edit(edit::EditCmd),
+    /// UNDO: BEgin/End marks keep UNDOCTL's bit 8; the other options do nothing headless.
+    Undo,
     /// UCS: only the World UCS exists headless.
     Ucs,
     /// A display command with nothing to do headless: swallows the rest of the call.
@@ -137,11 +142,6 @@ fn classify(it: &Interp, v: &Value, last: DVec3) -> Result<Option<Input>, Exn> {
     Ok(Some(match v {
         Value::Nil => return Ok(None),
         Value::Str(s) if s.is_empty() => Input::Enter,
-        Value::Str(s) if s.as_str() == "\\" => {
-            return Err(err(
-                "command: PAUSE waits for the user, and there is none in a headless run",
-            ))
-        }
         Value::Str(s) => {
             if let Some(p) = parse_point_str(s, last) {
                 Input::Point(p)
@@ -199,6 +199,11 @@ fn start(name: &str) -> Result<Step, Exn> {
         "REDRAW",
         "REDRAWALL",
         "UNDO",
+        "MOVE",
+        "COPY",
+        "ROTATE",
+        "SCALE",
+        "MIRROR",
         "OSNAP",
         "GRAPHSCR",
         "TEXTSCR",
@@ -219,6 +224,11 @@ fn start(name: &str) -> Result<Step, Exn> {
         "R" => "REDRAW",
         "U" => "UNDO",
         "OS" => "OSNAP",
+        "M" => "MOVE",
+        "CO" | "CP" => "COPY",
+        "RO" => "ROTATE",
+        "SC" => "SCALE",
+        "MI" => "MIRROR",
         other => other,
     };
     let cmd = KNOWN.iter().copied().find(|k| *k == alias).unwrap_or("");
@@ -230,11 +240,17 @@ fn start(name: &str) -> Result<Step, Exn> {
         "ERASE" => Step::More(Pending::Erase(Vec::new())),
         "TEXT" => Step::More(Pending::Text(text::TextCmd::default())),
         "UCS" => Step::More(Pending::Ucs),
-        "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "UNDO" | "OSNAP"
-        | "GRAPHSCR" | "TEXTSCR" => Step::More(Pending::Ignore),
+        "MOVE" => Step::More(Pending::Edit(edit::EditCmd::new("MOVE"))),
+        "COPY" => Step::More(Pending::Edit(edit::EditCmd::new("COPY"))),
+        "ROTATE" => Step::More(Pending::Edit(edit::EditCmd::new("ROTATE"))),
+        "SCALE" => Step::More(Pending::Edit(edit::EditCmd::new("SCALE"))),
+        "MIRROR" => Step::More(Pending::Edit(edit::EditCmd::new("MIRROR"))),
+        "UNDO" => Step::More(Pending::Undo),
+        "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "OSNAP" | "GRAPHSCR"
+        | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO)"
             )));
         }
     })
@@ -282,6 +298,16 @@ fn erase(it: &mut Interp, mut picked: Vec<u64>, input: &Input) -> Result<Step, E
 /// Gives one input to the pending command (or starts one).
 fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> {
     let last = st.last_point.unwrap_or(DVec3::ZERO);
+    // PAUSE takes the next scripted answer (--answers), as the user's input at the prompt.
+    let answered;
+    let raw = if matches!(raw, Value::Str(s) if s.as_str() == "\\") {
+        answered = crate::builtins::input::console_read_line(it).map_err(|_| {
+            err("command: PAUSE waits for the user: give the answer with --answers in a headless run")
+        })?;
+        &answered
+    } else {
+        raw
+    };
     let Some(input) = classify(it, raw, last)? else {
         return Ok(());
     };
@@ -309,6 +335,17 @@ fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> 
             Some(Pending::Layer(l)) => l.feed(it, &inp, raw)?,
             Some(Pending::Draw(d)) => d.feed(it, &inp)?,
             Some(Pending::Text(t)) => t.feed(it, &inp, raw)?,
+            Some(Pending::Edit(e)) => e.feed(it, &inp)?,
+            Some(Pending::Undo) => {
+                let sv = it.ext::<SysVars>();
+                let ctl = sv.int("UNDOCTL");
+                match inp.keyword().as_deref() {
+                    Some("BE" | "BEGIN") => sv.put("UNDOCTL", Value::Int(ctl | 8)),
+                    Some("E" | "END") => sv.put("UNDOCTL", Value::Int(ctl & !8)),
+                    _ => {}
+                }
+                Step::Done
+            }
             Some(Pending::Ucs) => match inp.keyword().as_deref() {
                 Some("W" | "WORLD") => Step::Done,
                 _ if matches!(inp, Input::Enter) => Step::Done,

@@ -17,7 +17,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("exit", "(exit)", "Ends the program (calls *error* with \"quit / exit abort\").", 0, 0, exit),
     builtin!("quit", "(quit)", "Same as exit.", 0, 0, exit),
     builtin!("vl-exit-with-error", "(vl-exit-with-error msg)", "Ends the program with an error carrying msg.", 1, 1, exit_with_error),
-    builtin!("vl-exit-with-value", "(vl-exit-with-value value)", "Ends the program (the value is ignored headless).", 1, 1, exit_value),
+    builtin!("vl-exit-with-value", "(vl-exit-with-value value)", "Returns value from the nearest vl-catch-all-apply; outside one, ends the program.", 1, 1, exit_value),
     builtin!("vl-catch-all-apply", "(vl-catch-all-apply f list)", "Applies f to list; an error becomes an error object instead of stopping the program.", 2, 2, catch_all_apply),
     builtin!("vl-catch-all-error-p", "(vl-catch-all-error-p x)", "T if x is an error object from vl-catch-all-apply.", 1, 1, catch_all_error_p),
     builtin!("vl-catch-all-error-message", "(vl-catch-all-error-message err)", "The message of an error object.", 1, 1, catch_all_error_message),
@@ -81,7 +81,13 @@ fn exit_with_error(it: &mut Interp, a: &[Value]) -> LResult {
     Err(err(it.string(&a[0])?.to_string()))
 }
 
-fn exit_value(_: &mut Interp, _: &[Value]) -> LResult {
+/// The value of a pending `vl-exit-with-value`: the nearest `vl-catch-all-apply` returns it
+/// (an early return, as routines use it); with none, the program ends as with `exit`.
+#[derive(Default)]
+struct ExitValue(Option<Value>);
+
+fn exit_value(it: &mut Interp, a: &[Value]) -> LResult {
+    it.ext::<ExitValue>().0 = Some(a[0].clone());
     Err(LispError::new(ErrorKind::Exit, "quit / exit abort"))
 }
 
@@ -109,6 +115,9 @@ fn catch_all_apply(it: &mut Interp, a: &[Value]) -> LResult {
     it.catch_depth -= 1;
     match r {
         Ok(v) => Ok(v),
+        Err(e) if e.kind == ErrorKind::Exit && it.ext::<ExitValue>().0.is_some() => {
+            Ok(it.ext::<ExitValue>().0.take().unwrap_or_default())
+        }
         Err(e) if e.kind == ErrorKind::Abort => Err(e),
         Err(e) => Ok(Value::obj(CaughtError { message: e.message })),
     }

@@ -61,6 +61,16 @@ pub fn curve_entity(c: &Curve) -> EntityKind {
             fit_points: Vec::new(),
             closed: s.closed,
         },
+        // Drawn as the exact degree-2 rational SPLINE until the drawing has ELLIPSE entities.
+        Curve::Ellipse(e) => {
+            let (ctrl, knots, weights) = e.nurbs();
+            EntityKind::Spline {
+                curve: crate::geom::bspline::BSpline::new(2, ctrl, Some(knots), Some(weights))
+                    .expect("an ellipse's NURBS is valid"),
+                fit_points: Vec::new(),
+                closed: e.is_full(),
+            }
+        }
         Curve::BSpline(b) => EntityKind::Spline {
             curve: b.clone(),
             fit_points: Vec::new(),

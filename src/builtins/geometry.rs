@@ -23,6 +23,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("arc3", "(arc3 p1 p2 p3)", "The arc from p1 through p2 to p3.", 3, 3, arc3),
     builtin!("pline", "(pline points [closed] [bulges])", "A polyline; bulges: one per vertex, for the segment starting there (as LWPOLYLINE).", 1, 3, pline),
     builtin!("spline", "(spline points [closed])", "The C1 quadratic spline interpolating the points (the temple paper's spline).", 1, 2, spline),
+    builtin!("ellipse", "(ellipse center major-axis ratio [start end] [normal])", "An ellipse or elliptical arc as DXF's ELLIPSE: major-axis vector from the centre, minor/major ratio in (0, 1], eccentric-angle start and end (default the full ellipse), normal default (0 0 1).", 3, 6, ellipse),
     builtin!("bspline", "(bspline control-points degree [knots] [weights])", "A B-spline or NURBS curve; knots: the full vector (default clamped uniform).", 2, 4, bspline),
     builtin!("curve-length", "(curve-length c)", "The length of a curve.", 1, 1, curve_length),
     builtin!("point-at", "(point-at c t)", "The point at parameter t in [0, 1].", 2, 2, point_at),
@@ -129,6 +130,24 @@ fn arc(it: &mut Interp, a: &[Value]) -> LResult {
     )
     .map_err(geom_err)?;
     Ok(curve_value(c))
+}
+
+fn ellipse(it: &mut Interp, a: &[Value]) -> LResult {
+    let (start, end) = match (a.get(3), a.get(4)) {
+        (Some(s), Some(e)) if s.truthy() || e.truthy() => (it.num(s)?, it.num(e)?),
+        _ => (0.0, std::f64::consts::TAU),
+    };
+    let n = opt_normal(it, a, 5)?;
+    let e = crate::geom::ellipse::Ellipse::new(
+        vec3(it, &a[0])?,
+        vec3(it, &a[1])?,
+        it.num(&a[2])?,
+        start,
+        end,
+        n.unwrap_or(DVec3::Z),
+    )
+    .map_err(geom_err)?;
+    Ok(curve_value(Curve::Ellipse(e)))
 }
 
 fn arc3(it: &mut Interp, a: &[Value]) -> LResult {

@@ -425,6 +425,10 @@ fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn file_delete(it: &mut Interp, a: &[Value]) -> LResult {
+    // A missing file is nil wherever it is (AutoCAD's answer); only deleting needs permission.
+    if !path_arg(it, &a[0])?.is_file() {
+        return Ok(Value::Nil);
+    }
     let p = writable(it, &a[0])?;
     Ok(Value::bool(p.is_file() && std::fs::remove_file(p).is_ok()))
 }

@@ -567,6 +567,11 @@ fn acad_strlsort(it: &mut Interp, a: &[Value]) -> LResult {
     for x in &items {
         strs.push(it.string(x)?.to_string());
     }
-    strs.sort();
+    // Alphabetical as AutoCAD's collation: case only breaks ties.
+    strs.sort_by(|x, y| {
+        x.to_lowercase()
+            .cmp(&y.to_lowercase())
+            .then_with(|| x.cmp(y))
+    });
     Ok(Value::list(strs.iter().map(|s| Value::str(s))))
 }

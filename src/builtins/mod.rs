@@ -16,6 +16,7 @@ pub mod io;
 pub mod lists;
 pub mod numbers;
 pub mod predicates;
+pub mod settings;
 pub mod special;
 pub mod strings;
 pub mod surfaces;
@@ -60,6 +61,7 @@ pub fn open_libs(it: &mut Interp) {
     }
     system::init(it);
     command::init(it);
+    vla::init(it);
     crate::lang::fastpath::register_inlined(find);
 }
 

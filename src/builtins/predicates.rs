@@ -44,6 +44,10 @@ fn equal(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn boundp(it: &mut Interp, a: &[Value]) -> LResult {
+    // (boundp 'nil) is nil, not an error: nil reads as the empty list, not a symbol.
+    if a[0].is_nil() {
+        return Ok(Value::Nil);
+    }
     let s = it.symbol(&a[0])?;
     Ok(Value::bool(it.values[s.idx()].truthy()))
 }

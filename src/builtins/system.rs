@@ -58,10 +58,42 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!(
         "getenv",
         "(getenv name)",
-        "The value of an environment variable, or nil.",
+        "A setting from the per-user settings file (setenv), else the process environment, or nil.",
         1,
         1,
         getenv
+    ),
+    builtin!(
+        "setenv",
+        "(setenv name value)",
+        "Stores a setting in the per-user settings file ($LISPCAD_SETTINGS, default ~/.config/lispcad/settings); returns value.",
+        2,
+        2,
+        setenv
+    ),
+    builtin!(
+        "vl-registry-write",
+        "(vl-registry-write key [name] value)",
+        "Stores a value under a registry key in the per-user settings file; returns value.",
+        2,
+        3,
+        registry_write
+    ),
+    builtin!(
+        "vl-registry-read",
+        "(vl-registry-read key [name])",
+        "A value vl-registry-write stored, or nil.",
+        1,
+        2,
+        registry_read
+    ),
+    builtin!(
+        "vl-registry-delete",
+        "(vl-registry-delete key [name])",
+        "Removes a stored registry value; T if it was there.",
+        1,
+        2,
+        registry_delete
     ),
     builtin!(
         "setq-default",
@@ -445,7 +477,53 @@ fn doc_ref(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn getenv(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?;
+    if let Some(v) = super::settings::read(&format!("env\t{name}")) {
+        return Ok(Value::str(&v));
+    }
     Ok(std::env::var(name).map_or(Value::Nil, |v| Value::str(&v)))
+}
+
+fn setenv(it: &mut Interp, a: &[Value]) -> LResult {
+    let name = it.string(&a[0])?.to_string();
+    let value = it.string(&a[1])?.to_string();
+    super::settings::write(&format!("env\t{name}"), Some(&value)).map_err(err)?;
+    Ok(a[1].clone())
+}
+
+/// The settings key of a registry value: `reg<TAB>KEY\NAME` (case-insensitive, as the
+/// Windows registry).
+fn registry_key(it: &Interp, a: &[Value], with_name: bool) -> Result<String, crate::lang::Exn> {
+    let key = it.string(&a[0])?.to_uppercase();
+    let name = if with_name {
+        it.string(&a[1])?.to_uppercase()
+    } else {
+        String::new()
+    };
+    Ok(format!("reg\t{key}\\{name}"))
+}
+
+fn registry_write(it: &mut Interp, a: &[Value]) -> LResult {
+    let k = registry_key(it, a, a.len() == 3)?;
+    let v = a.last().cloned().unwrap_or_default();
+    let text = match &v {
+        Value::Str(s) => s.to_string(),
+        Value::Int(i) => i.to_string(),
+        other => return Err(crate::lang::builtin::bad_arg(it, "stringp", other)),
+    };
+    super::settings::write(&k, Some(&text)).map_err(err)?;
+    Ok(v)
+}
+
+fn registry_read(it: &mut Interp, a: &[Value]) -> LResult {
+    let k = registry_key(it, a, a.len() == 2)?;
+    Ok(super::settings::read(&k).map_or(Value::Nil, |v| Value::str(&v)))
+}
+
+fn registry_delete(it: &mut Interp, a: &[Value]) -> LResult {
+    let k = registry_key(it, a, a.len() == 2)?;
+    let was = super::settings::read(&k).is_some();
+    super::settings::write(&k, None).map_err(err)?;
+    Ok(Value::bool(was))
 }
 
 fn setq_default(it: &mut Interp, a: &[Value]) -> LResult {

@@ -13,6 +13,7 @@ use super::arc::Arc;
 use super::bezier::Bez;
 use super::bspline::BSpline;
 use super::circle::Circle;
+use super::ellipse::Ellipse;
 use super::error::{finite, finite3, invalid, GeomError, Result};
 use super::line::Line;
 use super::piece::{Piece, Span};
@@ -29,6 +30,7 @@ pub enum Curve {
     Polyline(Polyline),
     Spline(QuadSpline),
     BSpline(BSpline),
+    Ellipse(Ellipse),
 }
 
 impl From<Line> for Curve {
@@ -54,6 +56,11 @@ impl From<Polyline> for Curve {
 impl From<QuadSpline> for Curve {
     fn from(v: QuadSpline) -> Curve {
         Curve::Spline(v)
+    }
+}
+impl From<Ellipse> for Curve {
+    fn from(v: Ellipse) -> Curve {
+        Curve::Ellipse(v)
     }
 }
 impl From<BSpline> for Curve {
@@ -204,6 +211,7 @@ impl Curve {
             Curve::Polyline(_) => "PLINE",
             Curve::Spline(_) => "SPLINE",
             Curve::BSpline(_) => "BSPLINE",
+            Curve::Ellipse(_) => "ELLIPSE",
         }
     }
 
@@ -247,6 +255,7 @@ impl Curve {
                     .collect()
             }
             Curve::BSpline(b) => bspline_spans(b),
+            Curve::Ellipse(e) => e.spans(),
         }
     }
 
@@ -267,6 +276,7 @@ impl Curve {
             Curve::Arc(a) => a.eval(t.clamp(0.0, 1.0)),
             Curve::Spline(q) => q.eval(t),
             Curve::BSpline(b) => b.eval(t.clamp(0.0, 1.0)),
+            Curve::Ellipse(e) => e.point_at_angle(e.angle_at(t)),
             Curve::Polyline(_) => {
                 let spans = self.spans();
                 let (i, s) = Curve::locate(&spans, t);
@@ -409,6 +419,7 @@ impl Curve {
             Curve::Polyline(p) => p.closed,
             Curve::Spline(q) => q.closed,
             Curve::BSpline(b) => (b.eval(0.0) - b.eval(1.0)).length() <= 1e-12 * self.scale(),
+            Curve::Ellipse(e) => e.is_full(),
         }
     }
 
@@ -431,6 +442,10 @@ impl Curve {
             Curve::Line(l) => vec![l.p0, l.p1],
             Curve::Circle(c) => vec![c.center()],
             Curve::Arc(a) => vec![a.center()],
+            Curve::Ellipse(e) => {
+                let (c, m, n) = (e.center, e.major, e.minor);
+                vec![c + m, c + n, c - m, c - n]
+            }
         }
     }
 
@@ -443,6 +458,9 @@ impl Curve {
         }
         if let Curve::Circle(c) = self {
             return Ok(PI * c.radius() * c.radius());
+        }
+        if let Curve::Ellipse(e) = self {
+            return Ok(e.full_area());
         }
         let spans = self.spans();
         let va: DVec3 = spans.iter().map(|s| s.piece.vector_area()).sum();
@@ -467,6 +485,7 @@ impl Curve {
             Curve::Line(_) => None,
             Curve::Circle(c) => Some(c.normal()),
             Curve::Arc(a) => Some(a.normal()),
+            Curve::Ellipse(e) => Some(e.normal()),
             Curve::Polyline(p) => {
                 let pts = &p.vertices;
                 let o = pts[0];
@@ -549,6 +568,20 @@ impl Curve {
                 ctrl: b.ctrl.iter().map(|p| pt(*p)).collect(),
                 ..b.clone()
             })),
+            Curve::Ellipse(e) => {
+                let (u, v) = (e.major.normalize(), e.minor.normalize());
+                similarity_scale(lin, u, v, e.normal)?;
+                let (m, n) = (lin * e.major, lin * e.minor);
+                Ellipse::new(
+                    pt(e.center),
+                    m,
+                    e.ratio,
+                    e.start,
+                    e.start + e.sweep,
+                    m.cross(n),
+                )
+                .map(Curve::Ellipse)
+            }
         }
     }
 }
@@ -736,6 +769,13 @@ impl fmt::Display for Curve {
             Curve::BSpline(b) => {
                 write!(f, "#<BSPLINE degree {}, {} points>", b.degree, b.ctrl.len())
             }
+            Curve::Ellipse(e) => write!(
+                f,
+                "#<ELLIPSE {} major {} ratio {}>",
+                fmt_pt(e.center),
+                fmt_pt(e.major),
+                fmt_g(e.ratio)
+            ),
         }
     }
 }

@@ -73,6 +73,57 @@ impl Curve {
     }
 }
 
+/// A curve's spans with their cumulative lengths, for many length queries on one curve (the
+/// vlax-curve loops of published routines): a query measures one span, not the whole curve.
+pub struct Measured {
+    spans: Vec<Span>,
+    /// `cum[i]`: the length before span i; the last entry is the total.
+    cum: Vec<f64>,
+    acc: f64,
+}
+
+impl Measured {
+    pub fn new(c: &Curve) -> Measured {
+        let acc = LEN_ACC * c.scale();
+        let spans = c.spans();
+        let mut cum = Vec::with_capacity(spans.len() + 1);
+        let mut total = 0.0;
+        cum.push(0.0);
+        for sp in &spans {
+            total += sp.piece.length(acc);
+            cum.push(total);
+        }
+        Measured { spans, cum, acc }
+    }
+
+    pub fn total(&self) -> f64 {
+        self.cum[self.cum.len() - 1]
+    }
+
+    /// As `Curve::length_to`.
+    pub fn length_to(&self, t: f64) -> f64 {
+        let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+        let i = self
+            .spans
+            .partition_point(|s| s.t1 <= t)
+            .min(self.spans.len() - 1);
+        self.cum[i] + piece_length_to(&self.spans[i], t, self.acc)
+    }
+
+    /// As `Curve::param_at_length`, None outside [0, total] (beyond a relative 1e-12 slack).
+    pub fn param_at_length(&self, s: f64) -> Option<f64> {
+        let total = self.total();
+        let slack = 1e-12 * total.max(1.0);
+        if !s.is_finite() || s < -slack || s > total + slack {
+            return None;
+        }
+        let s = s.clamp(0.0, total);
+        let i = (self.cum.partition_point(|c| *c <= s).max(1) - 1).min(self.spans.len() - 1);
+        let sp = &self.spans[i];
+        Some(sp.t_of(sp.piece.param_at_length(s - self.cum[i], self.acc)))
+    }
+}
+
 /// The length of a span's piece from its start to public parameter t inside it.
 fn piece_length_to(sp: &Span, t: f64, acc: f64) -> f64 {
     let s = ((t - sp.t0) / (sp.t1 - sp.t0)).clamp(0.0, 1.0);

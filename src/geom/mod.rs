@@ -16,6 +16,7 @@ pub mod bspline;
 pub mod circle;
 pub mod curve;
 pub mod curve_measure;
+pub mod ellipse;
 pub mod error;
 pub(crate) mod fastmath;
 pub mod frame;

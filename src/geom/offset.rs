@@ -50,8 +50,8 @@ impl Curve {
                 Ok(Curve::Arc(Arc { radius: r, ..*a }))
             }
             Curve::Polyline(p) => offset_polyline(p, d).map(Curve::Polyline),
-            Curve::Spline(_) | Curve::BSpline(_) => Err(GeomError::Unsupported(
-                "offset: splines have no exact offset; use offset_approx (a polyline within \
+            Curve::Spline(_) | Curve::BSpline(_) | Curve::Ellipse(_) => Err(GeomError::Unsupported(
+                "offset: splines and ellipses have no exact offset; use offset_approx (a polyline within \
                  a tolerance) or offset (curve-points c tol)"
                     .into(),
             )),
@@ -62,7 +62,7 @@ impl Curve {
     /// the exact offset: the curve is flattened within `tol` and that polyline offset.
     pub fn offset_approx(&self, d: f64, tol: f64) -> Result<Curve> {
         match self {
-            Curve::Spline(_) | Curve::BSpline(_) => {
+            Curve::Spline(_) | Curve::BSpline(_) | Curve::Ellipse(_) => {
                 let normal = self.plane_normal().ok_or(GeomError::NotPlanar("offset"))?;
                 let mut pts = self.points(tol)?;
                 let closed = self.is_closed();

@@ -278,6 +278,18 @@ impl<'a> Compiler<'a> {
                 Err(e) => fail(e, span),
             },
             _ if self.syms.name(head) == "DEFPARAM" => super::defparam::compile(self, rest, span),
+            // `(vlax-for var collection body...)` is `foreach` over the collection's items
+            // (the library's `vlax-for-items` lists them: the language knows no collections).
+            _ if self.syms.name(head).eq_ignore_ascii_case("VLAX-FOR") && n >= 2 => {
+                match self.syms.lookup("VLAX-FOR-ITEMS") {
+                    Some(items) => {
+                        let coll = Value::list([Value::Sym(items), arg(1)]);
+                        let rest = Value::cons(arg(0), Value::cons(coll, rest.cdr().cdr()));
+                        self.compile_foreach(&rest, n, span)
+                    }
+                    None => arity_error(false, span),
+                }
+            }
             _ => {
                 let args = self.operands(rest);
                 super::fastpath::compile(head, self.syms.name(head), args, span)
@@ -288,7 +300,8 @@ impl<'a> Compiler<'a> {
     fn compile_setq(&mut self, rest: &Value, span: Option<Span>) -> Code {
         let items: Vec<&Value> = rest.iter().collect();
         if items.is_empty() {
-            return arity_error(true, span);
+            // AutoLISP: (setq) is nil, not an error.
+            return Box::new(|_| Ok(Value::Nil));
         }
         let mut pairs: Vec<(Sym, Operand)> = Vec::new();
         for chunk in items.chunks(2) {

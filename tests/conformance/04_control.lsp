@@ -4,7 +4,7 @@
 a
 ;=> 1
 (setq)
-;!! too few arguments
+;=> nil
 (setq 1 2)
 ;!! bad argument type: symbolp 1
 undefined-symbol-reads-as-nil

@@ -138,11 +138,11 @@
 (command "ZOOM" "E")
 ;=> nil
 (command "FOO")
-;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT)
+;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO)
 (command "LINE" '(0 0) "abc")
 ;!! LINE: expected a point, "C" (close, after two segments), "U" or "", got "abc"
 (command "LINE" '(0 0) pause)
-;!! command: PAUSE waits for the user, and there is none in a headless run
+;!! command: PAUSE waits for the user: give the answer with --answers in a headless run
 ;; CLAYER set by setvar is where commands draw.
 (command "LAYER" "N" "Via-setvar" "")
 (setvar "CLAYER" "Via-setvar")

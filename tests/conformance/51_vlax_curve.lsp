@@ -67,3 +67,28 @@
 (entmake '((0 . "POINT") (10 0 0 0)))
 (vlax-curve-getStartParam (entlast))
 ;!! bad argument type: curvep <Entity name: 104>
+;; ELLIPSE (a CURVE value until the drawing has ELLIPSE entities): the parameter is the angle.
+(setq el (ellipse '(0 0 0) '(4 0 0) 0.5))
+;=> #<ELLIPSE (0 0 0) major (4 0 0) ratio 0.5>
+(list (vlax-curve-getStartParam el) (vlax-curve-getEndParam el) (vlax-curve-isClosed el) (vlax-curve-isPeriodic el))
+;=> (0.0 6.28319 T T)
+(vlax-curve-getPointAtParam el pi)
+;=> (-4.0 2.44929e-16 0.0)
+(vlax-curve-getArea el)
+;=> 25.1327
+(vlax-curve-getFirstDeriv el 0.0)
+;=> (0.0 2.0 0.0)
+(vlax-curve-getParamAtPoint el '(0.0 -2.0 0.0))
+;=> 4.71239
+(intersect el (line '(-10 0 0) '(10 0 0)))
+;=> ((4.0 0.0 0.0) (-4.0 2.44929e-16 0.0))
+(ellipse '(0 0 0) '(0 0 1) 0.5)
+;!! major axis: must be perpendicular to the normal
+;; A changed entity is measured anew (the measures are cached per unchanged entity).
+(entmake '((0 . "LINE") (10 0.0 0.0 0.0) (11 3.0 4.0 0.0)))
+(setq l2 (entlast))
+(vlax-curve-getDistAtParam l2 (vlax-curve-getEndParam l2))
+;=> 5.0
+(entmod (subst '(11 6.0 8.0 0.0) (assoc 11 (entget l2)) (entget l2)))
+(list (vlax-curve-getEndParam l2) (vlax-curve-getPointAtDist l2 10.0))
+;=> (10.0 (6.0 8.0 0.0))

@@ -143,6 +143,25 @@ def answer(e):
         derivs = poly.derivs
         length_to = poly.length_to
         area = poly.area() if e['closed'] else None
+    elif k == 'ELLIPSE':
+        c, M, n = (np.array(e[x], float) for x in ('c', 'major', 'normal'))
+        n = n / np.linalg.norm(n)
+        m = e['ratio'] * np.cross(n, M)
+        lo, hi = e['a0'], e['a1']
+        if hi <= lo:
+            hi += 2 * math.pi
+        derivs = lambda a: [c + M * math.cos(a) + m * math.sin(a),
+                            -M * math.sin(a) + m * math.cos(a),
+                            -M * math.cos(a) - m * math.sin(a)]
+        speed = lambda a: np.linalg.norm(derivs(a)[1])
+        grid = np.linspace(lo, hi, 257)
+        cum = np.concatenate([[0.0], np.cumsum([integrate(speed, a, b, 1)
+                                                for a, b in zip(grid[:-1], grid[1:])])])
+
+        def length_to(a):
+            i = max(0, min(len(grid) - 2, int(np.searchsorted(grid, a, side='right')) - 1))
+            return cum[i] + integrate(speed, grid[i], a, 1)
+        area = None
     else:
         d = spline_derivs(e)
         p = e['degree']

@@ -12,12 +12,14 @@ use crate::builtin;
 use crate::builtins::entities::ename_arg;
 use crate::builtins::geometry::{curve_value, geom_err, geomtol, vec3, CurveValue};
 use crate::geom::curve::Curve;
+use crate::geom::curve_measure::Measured;
 use crate::geom::frame::Ocs;
 use crate::lang::builtin::{bad_arg, Builtin};
 use crate::lang::error::{Exn, LResult};
 use crate::lang::{Interp, Value};
 use crate::output::entity::EntityKind;
 use crate::output::Drawing;
+use std::rc::Rc;
 
 use super::Vla;
 
@@ -44,24 +46,34 @@ pub static BUILTINS: &[Builtin] = &[
 
 /// A curve with AutoCAD's parameter: the core curve's t ∈ [0, 1] maps linearly onto
 /// [lo, hi]. `periodic` marks the curves whose parameter wraps (circles).
-#[derive(Clone, Debug)]
 pub struct AcCurve {
     pub curve: Curve,
     pub lo: f64,
     pub hi: f64,
     pub periodic: bool,
+    /// Span lengths, measured on the first length query.
+    measured: std::cell::OnceCell<Measured>,
 }
 
 impl AcCurve {
     fn new(curve: Curve) -> AcCurve {
         let (lo, hi) = natural_range(&curve);
-        let periodic = matches!(curve, Curve::Circle(_));
+        let periodic = match &curve {
+            Curve::Circle(_) => true,
+            Curve::Ellipse(e) => e.is_full(),
+            _ => false,
+        };
         AcCurve {
             curve,
             lo,
             hi,
             periodic,
+            measured: std::cell::OnceCell::new(),
         }
+    }
+
+    fn measured(&self) -> &Measured {
+        self.measured.get_or_init(|| Measured::new(&self.curve))
     }
 
     /// The core parameter of an AutoCAD parameter, None outside the range (beyond a relative
@@ -72,10 +84,23 @@ impl AcCurve {
         if !param.is_finite() || param < self.lo - slack || param > self.hi + slack {
             return None;
         }
+        if let Curve::Ellipse(e) = &self.curve {
+            // The ellipse's angle is not linear in the core's t: convert exactly.
+            return Some(if param >= self.hi {
+                1.0
+            } else if param <= self.lo {
+                0.0
+            } else {
+                e.t_at_angle(param)
+            });
+        }
         Some(((param - self.lo) / span).clamp(0.0, 1.0))
     }
 
     pub fn param_of(&self, t: f64) -> f64 {
+        if let Curve::Ellipse(e) = &self.curve {
+            return if t >= 1.0 { self.hi } else { e.angle_at(t) };
+        }
         self.lo + (self.hi - self.lo) * t
     }
 
@@ -95,6 +120,7 @@ fn natural_range(c: &Curve) -> (f64, f64) {
         // The lispcad spline through fit points: its quadratic segment index plus fraction.
         Curve::Spline(q) => (0.0, q.segments.len() as f64),
         Curve::BSpline(b) => b.domain(),
+        Curve::Ellipse(e) => (e.start_angle(), e.end_angle()),
     }
 }
 
@@ -143,25 +169,49 @@ pub fn entity_curve(k: &EntityKind) -> Option<Result<Curve, crate::geom::GeomErr
     })
 }
 
+/// The curves of the entities queried last, with their measures: routines call vlax-curve
+/// many times on one entity. An entry is used only while the entity is unchanged.
+#[derive(Default)]
+struct CurveCache(Vec<(u64, EntityKind, Rc<AcCurve>)>);
+
 /// The curve an argument names: an entity name, a VLA entity or a CURVE value.
-pub fn ac_curve(it: &mut Interp, v: &Value) -> Result<AcCurve, Exn> {
+pub fn ac_curve(it: &mut Interp, v: &Value) -> Result<Rc<AcCurve>, Exn> {
     if let Some(c) = v.as_obj::<CurveValue>() {
-        return Ok(AcCurve::new(c.0.clone()));
+        return Ok(Rc::new(AcCurve::new(c.0.clone())));
     }
     let handle = match v.as_obj::<Vla>() {
         Some(Vla::Entity(h, _)) => *h,
         Some(_) => return Err(bad_arg(it, "curvep", v)),
         None => ename_arg(it, v)?.handle,
     };
+    let mut cache = std::mem::take(&mut it.ext::<CurveCache>().0);
     let d = it.ext::<Drawing>();
     let kind = match d.get(handle) {
-        Some(e) if !d.is_deleted(handle) => e.kind.clone(),
+        Some(e) if !d.is_deleted(handle) => &e.kind,
         _ => return Err(crate::lang::error::err("bad argument type: deleted entity")),
+    };
+    let hit = cache
+        .iter()
+        .find(|(h, k, _)| *h == handle && k == kind)
+        .map(|(_, _, c)| c.clone());
+    if let Some(c) = hit {
+        it.ext::<CurveCache>().0 = cache;
+        return Ok(c);
+    }
+    let kind = match it.ext::<Drawing>().get(handle) {
+        Some(e) => e.kind.clone(),
+        None => return Err(crate::lang::error::err("bad argument type: deleted entity")),
     };
     let c = entity_curve(&kind)
         .ok_or_else(|| bad_arg(it, "curvep", v))?
         .map_err(geom_err)?;
-    Ok(AcCurve::new(c))
+    let c = Rc::new(AcCurve::new(c));
+    if cache.len() >= 4 {
+        cache.remove(0);
+    }
+    cache.push((handle, kind, c.clone()));
+    it.ext::<CurveCache>().0 = cache;
+    Ok(c)
 }
 
 /// A point or vector as a list, without negative zeros (AutoCAD prints 0.0).
@@ -210,12 +260,12 @@ fn dist_at_param(it: &mut Interp, a: &[Value]) -> LResult {
     let c = ac_curve(it, &a[0])?;
     let param = it.num(&a[1])?;
     Ok(c.t_of(param)
-        .map_or(Value::Nil, |t| Value::Real(c.curve.length_to(t))))
+        .map_or(Value::Nil, |t| Value::Real(c.measured().length_to(t))))
 }
 
 /// The core parameter at a length along the curve, None outside [0, length].
 fn t_at_dist(c: &AcCurve, s: f64) -> Option<f64> {
-    c.curve.param_at_length(s).ok()
+    c.measured().param_at_length(s)
 }
 
 fn param_at_dist(it: &mut Interp, a: &[Value]) -> LResult {
@@ -227,7 +277,7 @@ fn param_at_dist(it: &mut Interp, a: &[Value]) -> LResult {
 fn dist_at_point(it: &mut Interp, a: &[Value]) -> LResult {
     let c = ac_curve(it, &a[0])?;
     let p = vec3(it, &a[1])?;
-    Ok(t_at_point(it, &c, p).map_or(Value::Nil, |t| Value::Real(c.curve.length_to(t))))
+    Ok(t_at_point(it, &c, p).map_or(Value::Nil, |t| Value::Real(c.measured().length_to(t))))
 }
 
 fn point_at_dist(it: &mut Interp, a: &[Value]) -> LResult {
@@ -325,6 +375,7 @@ fn first_deriv(it: &mut Interp, a: &[Value]) -> LResult {
             let (lo, hi) = b.domain();
             crate::geom::curve_measure::derivs_u(b, lo + (hi - lo) * t)[1]
         }
+        Curve::Ellipse(e) => e.deriv_at_angle(param),
         _ => c.curve.deriv(t) / c.scale(),
     };
     Ok(point3(d))
@@ -336,6 +387,9 @@ fn second_deriv(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(t) = c.t_of(param) else {
         return Ok(Value::Nil);
     };
+    if let Curve::Ellipse(e) = &c.curve {
+        return Ok(point3(e.second_deriv_at_angle(param)));
+    }
     Ok(point3(c.curve.second_deriv(t) / (c.scale() * c.scale())))
 }
 

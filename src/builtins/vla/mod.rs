@@ -12,11 +12,32 @@ use crate::lang::value::Object;
 use crate::lang::{Interp, Value};
 use crate::output::entity::EntityKind;
 
+pub mod compat;
 pub mod curve;
+pub mod methods;
+pub mod object;
+pub mod props;
+pub mod variant;
+pub mod xform;
 
 /// Every Visual LISP builtin, for `builtins::tables`.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    vec![("Visual LISP: curves (vlax-curve-*)", curve::BUILTINS)]
+    vec![
+        ("Visual LISP: curves (vlax-curve-*)", curve::BUILTINS),
+        ("Visual LISP: ActiveX objects", object::BUILTINS),
+        (
+            "Visual LISP: properties (vla-get-*, vla-put-*)",
+            object::PROPS,
+        ),
+        ("Visual LISP: methods (vla-*)", object::METHODS),
+        ("Visual LISP: variants and safearrays", variant::BUILTINS),
+        ("AutoCAD compatibility", compat::BUILTINS),
+    ]
+}
+
+/// The ActiveX constants (vlax-vb*, :vlax-true, acExtend*...).
+pub fn init(it: &mut Interp) {
+    variant::init(it);
 }
 
 /// What a VLA object stands for.

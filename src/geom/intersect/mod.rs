@@ -254,6 +254,7 @@ fn rank(c: &Curve) -> u8 {
         Curve::Polyline(_) => 3,
         Curve::Spline(_) => 4,
         Curve::BSpline(_) => 5,
+        Curve::Ellipse(_) => 6,
     }
 }
 
@@ -343,6 +344,12 @@ fn fingerprint(c: &Curve, out: &mut SmallVec<[f64; 16]>) {
             if let Some(w) = &b.weights {
                 out.extend(w.iter().copied());
             }
+        }
+        Curve::Ellipse(e) => {
+            pt3(out, e.center);
+            pt3(out, e.major);
+            pt3(out, e.normal);
+            out.extend([e.ratio, e.start, e.sweep]);
         }
     }
 }

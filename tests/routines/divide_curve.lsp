@@ -1,0 +1,11 @@
+;;; DIVPTS - divide a curve into equal parts, putting a POINT at each division.
+(vl-load-com)
+(defun divpts (ename parts / len step i pts p)
+  (setq len (vlax-curve-getDistAtParam ename (vlax-curve-getEndParam ename))
+        step (/ len parts)
+        i 1)
+  (while (< i parts)
+    (setq p (vlax-curve-getPointAtDist ename (* i step)))
+    (entmake (list '(0 . "POINT") (cons 10 p)))
+    (setq pts (cons p pts) i (1+ i)))
+  (reverse pts))

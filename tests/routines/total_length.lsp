@@ -1,0 +1,16 @@
+;;; TLEN - total length of the curves in a selection, in the style of the classic TLEN.LSP.
+(vl-load-com)
+(defun c:tlen (/ ss tl n ent itm obj l)
+  (setq ss (ssget "X" '((0 . "LINE,ARC,CIRCLE,LWPOLYLINE,POLYLINE,SPLINE")))
+        tl 0
+        n (1- (sslength ss)))
+  (while (>= n 0)
+    (setq ent (entget (setq itm (ssname ss n)))
+          obj (cdr (assoc 0 ent))
+          l (cond ((= obj "LINE") (distance (cdr (assoc 10 ent)) (cdr (assoc 11 ent))))
+                  (T (vlax-curve-getDistAtParam itm (vlax-curve-getEndParam itm))))
+          tl (+ tl l)
+          n (1- n)))
+  (princ (strcat "\nTotal length of " (itoa (sslength ss)) " objects: " (rtos tl 2 6)))
+  (princ)
+  tl)
