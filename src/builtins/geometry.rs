@@ -315,6 +315,9 @@ fn intersect_fn(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn intersect_info(it: &mut Interp, a: &[Value]) -> LResult {
+    if crate::builtins::surfaces::is_surface(&a[1]) {
+        return crate::builtins::surfaces::intersect_info_curve_surface(it, a);
+    }
     let tol = geomtol(it);
     let (c1, c2) = (curve(it, &a[0])?, curve(it, &a[1])?);
     let hits = intersect(c1, c2, tol);

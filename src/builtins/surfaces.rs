@@ -172,24 +172,34 @@ fn curve_ref(it: &Interp, v: &Value) -> Result<CurveRef, Exn> {
     Ok(Arc::new(curve(it, v)?.clone()))
 }
 
-/// `(intersect curve surface [near])`: closed forms for lines and circles/arcs against the
-/// parametric kinds paper 002 covers; any curve against a mesh through its hierarchy.
-pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+/// The hits of a curve on a surface or mesh: `(curve parameter, point, kind)`, or the curve
+/// itself when it lies on the surface (an OVERLAP). Closed forms for lines against cylinders,
+/// planes and spheres and circles/arcs against planes (paper 002); other curves and surfaces
+/// through the mesh, refined on the true curve and surface to GEOMTOL; any curve against a mesh
+/// through its hierarchy.
+fn curve_surface_hits(it: &mut Interp, a: &[Value]) -> Result<CurveSurfaceHits, Exn> {
     let c = curve(it, &a[0])?.clone();
     let s = surf(it, &a[1])?;
     let tol = geomtol(it);
     let ctol = chord_tol(it);
-    let mut pts: Vec<DVec3> = match (&c, &s) {
-        (Curve::Line(l), Surf::Param(s)) => surface::segment_surface_hits(l.p0, l.p1, s, tol)
-            .map_err(mesh_err)?
-            .into_iter()
-            .map(|(_, p)| p)
-            .collect(),
-        (Curve::Circle(ci), Surf::Param(s)) => {
-            let arc = ArcData::circle(ci.center(), ci.radius(), ci.normal());
-            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+    if let Surf::Param(s) = &s {
+        if surface::curve_on_surface(&c, s, tol).map_err(mesh_err)? {
+            return Ok(CurveSurfaceHits::Overlap(c));
         }
-        (Curve::Arc(ar), Surf::Param(s)) => {
+    }
+    let with_t = |pts: Vec<DVec3>| -> Vec<(f64, DVec3)> {
+        pts.into_iter().map(|p| (c.closest_point(p).0, p)).collect()
+    };
+    let hits: Vec<(f64, DVec3)> = match (&c, &s) {
+        (
+            Curve::Line(l),
+            Surf::Param(s @ (Surface::Cylinder(_) | Surface::Plane(_) | Surface::Sphere(_))),
+        ) => surface::segment_surface_hits(l.p0, l.p1, s, tol).map_err(mesh_err)?,
+        (Curve::Circle(ci), Surf::Param(s @ Surface::Plane(_))) => {
+            let arc = ArcData::circle(ci.center(), ci.radius(), ci.normal());
+            with_t(surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?)
+        }
+        (Curve::Arc(ar), Surf::Param(s @ Surface::Plane(_))) => {
             let arc = ArcData {
                 center: ar.center(),
                 radius: ar.radius(),
@@ -197,21 +207,40 @@ pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
                 start_angle: ar.start_angle(),
                 end_angle: ar.end_angle(),
             };
-            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+            with_t(surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?)
         }
-        (_, Surf::Param(s)) => surface::curve_surface_hits(&c, s, ctol)
-            .map_err(mesh_err)?
-            .into_iter()
-            .map(|h| h.point)
-            .collect(),
+        (_, Surf::Param(s)) => {
+            surface::curve_surface_hits_refined(&c, s, ctol, tol).map_err(mesh_err)?
+        }
         (Curve::Line(l), Surf::Discrete(m)) => surface::polyline_mesh_hits(&[l.p0, l.p1], m)
             .into_iter()
-            .map(|h| h.point)
+            .map(|h| (h.t, h.point))
             .collect(),
         (_, Surf::Discrete(m)) => surface::curve_mesh_hits(&c, m, ctol.min(1e-3))
             .into_iter()
-            .map(|h| h.point)
+            .map(|h| (h.t, h.point))
             .collect(),
+    };
+    Ok(CurveSurfaceHits::Points(hits))
+}
+
+enum CurveSurfaceHits {
+    Points(Vec<(f64, DVec3)>),
+    Overlap(Curve),
+}
+
+/// `(intersect curve surface [near])`: the points, sorted along the curve, or the curve itself
+/// in the list when it lies on the surface.
+pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut pts: Vec<DVec3> = match curve_surface_hits(it, a)? {
+        CurveSurfaceHits::Overlap(c) => {
+            if a.get(2).is_some_and(|v| v.truthy()) {
+                let near = vec3(it, &a[2])?;
+                return Ok(point3(c.closest_point(near).1));
+            }
+            return Ok(Value::list(vec![curve_value(c)]));
+        }
+        CurveSurfaceHits::Points(h) => h.into_iter().map(|(_, p)| p).collect(),
     };
     if let Some(near) = a.get(2).filter(|v| v.truthy()) {
         let near = vec3(it, near)?;
@@ -219,6 +248,43 @@ pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
         return Ok(pts.first().map_or(Value::Nil, |p| point3(*p)));
     }
     Ok(Value::list(pts.into_iter().map(point3).collect::<Vec<_>>()))
+}
+
+/// `(intersect-info curve surface)`: one association list per hit, t1 the curve's parameter, t2
+/// nil (a surface has two parameters); kind CROSS, or OVERLAP (with `(curve . c)`) when the curve
+/// lies on the surface.
+pub fn intersect_info_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let field = |it: &mut Interp, k: &str, v: Value| Value::cons(Value::Sym(it.intern(k)), v);
+    let kind = |it: &mut Interp, k: &str| {
+        let v = Value::Sym(it.intern(k));
+        field(it, "KIND", v)
+    };
+    let hits = curve_surface_hits(it, a)?;
+    let mut out = Vec::new();
+    match hits {
+        CurveSurfaceHits::Overlap(c) => {
+            let fields = vec![
+                field(it, "POINT", point3(c.eval(0.0))),
+                field(it, "T1", Value::Real(0.0)),
+                field(it, "T2", Value::Nil),
+                kind(it, "OVERLAP"),
+                field(it, "CURVE", curve_value(c)),
+            ];
+            out.push(Value::list(fields));
+        }
+        CurveSurfaceHits::Points(h) => {
+            for (t, p) in h {
+                let fields = vec![
+                    field(it, "POINT", point3(p)),
+                    field(it, "T1", Value::Real(t)),
+                    field(it, "T2", Value::Nil),
+                    kind(it, "CROSS"),
+                ];
+                out.push(Value::list(fields));
+            }
+        }
+    }
+    Ok(Value::list(out))
 }
 
 /// Polylines as PLINE curves (closed ones closed); a one-point polyline (an isolated tangent

@@ -416,3 +416,141 @@ fn densify_plane(
         densify_plane(s, m, n1, p0, n, tol, chord_tol, depth + 1, out);
     }
 }
+
+/// Carries a curve/surface hit onto the true surface and the true curve: Newton on
+/// `S(u, v) − C(t) = 0` (three equations, three unknowns), with a parameter on a domain edge
+/// held there. Returns `(t, point, residual)`.
+pub(crate) fn newton_curve_hit(
+    s: &Patch,
+    c: &dyn crate::geom::ParamCurve,
+    t0: f64,
+    p: DVec3,
+) -> (f64, DVec3, f64) {
+    let mut uv = s.project(p, None);
+    let mut t = t0.clamp(0.0, 1.0);
+    let mut best = (t, p, f64::INFINITY);
+    let mut fixed = [false; 3];
+    for _ in 0..40 {
+        let (ps, pc) = (s.eval(uv), c.eval(t));
+        let r = ps - pc;
+        if r.length() < best.2 {
+            best = (t, 0.5 * (ps + pc), r.length());
+        }
+        if r.length() <= 1e-15 * (1.0 + ps.length()) {
+            break;
+        }
+        let (su, sv) = s.derivs(uv);
+        const H: f64 = 1e-7;
+        let (ta, tb) = ((t - H).max(0.0), (t + H).min(1.0));
+        let dc = (c.eval(tb) - c.eval(ta)) / (tb - ta);
+        let mut cols = [su, sv, -dc];
+        for (k, col) in cols.iter_mut().enumerate() {
+            if fixed[k] {
+                *col = DVec3::ZERO;
+            }
+        }
+        let mut jjt = DMat3::ZERO;
+        for col in &cols {
+            jjt += outer(*col, *col);
+        }
+        let lambda = 1e-12
+            * jjt
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |m, x| m.max(x.abs()));
+        jjt += DMat3::from_diagonal(DVec3::splat(lambda.max(1e-300)));
+        if jjt.determinant().abs() <= 1e-300 {
+            break;
+        }
+        let y = jjt.inverse() * r;
+        uv.x -= cols[0].dot(y);
+        uv.y -= cols[1].dot(y);
+        t -= cols[2].dot(y);
+        let e = s.normalise(&mut uv);
+        let te = !(0.0..=1.0).contains(&t);
+        t = t.clamp(0.0, 1.0);
+        fixed = [e[0], e[1], te];
+    }
+    best
+}
+
+/// The hits of a curve on a parametric surface: the mesh hits plus every place the curve passes
+/// within `chord_tol` of the mesh boundary (a hit on a boundary edge of the true surface can miss
+/// the mesh by roundoff), each carried onto both true objects; kept when they meet within
+/// `tol`, one per point.
+pub(crate) fn curve_hits_refined(
+    s: &Patch,
+    mesh: &crate::geom::mesh::Mesh,
+    c: &dyn crate::geom::ParamCurve,
+    samples: (&[f64], &[DVec3]),
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<(f64, DVec3)> {
+    let (ts, pts) = samples;
+    let mut cands: Vec<(f64, DVec3)> = super::hits::polyline_mesh_hits(pts, mesh)
+        .into_iter()
+        .map(|h| {
+            let i = (h.t.floor() as usize).min(ts.len() - 2);
+            (ts[i] + (ts[i + 1] - ts[i]) * (h.t - i as f64), h.point)
+        })
+        .collect();
+    for l in mesh.boundary() {
+        let n = l.points.len();
+        for k in 0..n {
+            let (q0, q1) = (l.points[k], l.points[(k + 1) % n]);
+            for i in 0..pts.len().saturating_sub(1) {
+                let (f, p, d) = segment_gap(pts[i], pts[i + 1], q0, q1);
+                if d <= 2.0 * chord_tol {
+                    cands.push((ts[i] + (ts[i + 1] - ts[i]) * f, p));
+                }
+            }
+        }
+    }
+    let mut out: Vec<(f64, DVec3)> = Vec::new();
+    for (t, p) in cands {
+        let (t, q, r) = newton_curve_hit(s, c, t, p);
+        if r <= tol && !out.iter().any(|o| o.1.distance(q) <= tol) {
+            out.push((t, q));
+        }
+    }
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out
+}
+
+/// Closest approach of segments `p0p1` and `q0q1`: (fraction along p, point on p, distance).
+fn segment_gap(p0: DVec3, p1: DVec3, q0: DVec3, q1: DVec3) -> (f64, DVec3, f64) {
+    let (d1, d2, r) = (p1 - p0, q1 - q0, p0 - q0);
+    let (a, e, f) = (d1.dot(d1), d2.dot(d2), d2.dot(r));
+    let (mut s, mut t);
+    if a <= 1e-300 && e <= 1e-300 {
+        return (0.0, p0, p0.distance(q0));
+    }
+    if a <= 1e-300 {
+        s = 0.0;
+        t = (f / e).clamp(0.0, 1.0);
+    } else {
+        let c = d1.dot(r);
+        if e <= 1e-300 {
+            t = 0.0;
+            s = (-c / a).clamp(0.0, 1.0);
+        } else {
+            let b = d1.dot(d2);
+            let den = a * e - b * b;
+            s = if den > 0.0 {
+                ((b * f - c * e) / den).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            t = (b * s + f) / e;
+            if t < 0.0 {
+                t = 0.0;
+                s = (-c / a).clamp(0.0, 1.0);
+            } else if t > 1.0 {
+                t = 1.0;
+                s = ((b - c) / a).clamp(0.0, 1.0);
+            }
+        }
+    }
+    let (cp, cq) = (p0 + d1 * s, q0 + d2 * t);
+    (s, cp, cp.distance(cq))
+}
