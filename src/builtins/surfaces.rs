@@ -36,7 +36,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines.", 2, 2, surface_intersect),
     builtin!("trim-surface", "(trim-surface s cutter keep-point)", "The part of s, cut along its intersection with cutter, that holds the point nearest keep-point.", 3, 3, trim_surface),
     builtin!("surface-corners", "(surface-corners s [angle])", "The boundary corners: where the boundary's tangent turns by more than angle (default 30 degrees, in radians).", 1, 2, surface_corners),
-    builtin!("extend-surface", "(extend-surface s distance [angle])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners).", 2, 3, extend_surface),
+    builtin!("extend-surface", "(extend-surface s distance [angle] [holes])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners); holes extended inward unless holes is nil; an error where the strips would overlap.", 2, 4, extend_surface),
     builtin!("surface-area", "(surface-area s)", "The area of a surface.", 1, 1, surface_area),
     builtin!("surface-boundary", "(surface-boundary s)", "The boundary loops of a surface as closed polylines.", 1, 1, surface_boundary),
 ];
@@ -465,7 +465,10 @@ fn extend_surface(it: &mut Interp, a: &[Value]) -> LResult {
     let m = discrete(it, &a[0])?;
     let d = it.num(&a[1])?;
     let angle = corner_angle(it, a, 2)?;
-    Ok(mesh_value(mesh::extend(&m, d, angle).map_err(mesh_err)?))
+    let holes = a.get(3).is_none_or(|v| v.truthy());
+    Ok(mesh_value(
+        mesh::extend_with(&m, d, angle, holes).map_err(mesh_err)?,
+    ))
 }
 
 fn surface_area(it: &mut Interp, a: &[Value]) -> LResult {
