@@ -41,5 +41,43 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// The refinement of surface/surface curves on the true surfaces: cone ∩ off-axis cylinder with
+/// and without it (the mesh seeds alone), so the difference over the curve's point count is the
+/// cost per refined point.
+fn refine(c: &mut Criterion) {
+    use lispcad::geom::curve::Curve;
+    use lispcad::geom::surface::{mesh_surface, surface_intersect, Surface};
+    let cone = Surface::revolve(
+        std::sync::Arc::new(Curve::line(DVec3::ZERO, DVec3::new(2.0, 0.0, 4.0)).unwrap()),
+        DVec3::ZERO,
+        DVec3::Z,
+        std::f64::consts::TAU,
+    )
+    .unwrap();
+    let cyl = Surface::cylinder(DVec3::new(0.5, 0.0, -1.0), DVec3::Z, 1.0, 6.0).unwrap();
+    let tol = 1e-3;
+    let points: usize = surface_intersect(&cone, &cyl, tol)
+        .unwrap()
+        .iter()
+        .map(|p| p.points.len())
+        .sum();
+    eprintln!("refine: cone/cylinder curve of {points} points at CHORDTOL {tol}");
+    let mut g = c.benchmark_group("refine");
+    g.sample_size(10);
+    g.bench_function("cone_cylinder_seeds_only", |bch| {
+        bch.iter(|| {
+            let (ma, mb) = (
+                mesh_surface(&cone, tol).unwrap(),
+                mesh_surface(&cyl, tol).unwrap(),
+            );
+            intersect_meshes(&ma, &mb)
+        })
+    });
+    g.bench_function("cone_cylinder_refined", |bch| {
+        bch.iter(|| surface_intersect(black_box(&cone), black_box(&cyl), tol).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, refine);
 criterion_main!(benches);

@@ -101,3 +101,94 @@ fn cylinder_extends_along_its_axis() {
     assert!((e.area() - exact).abs() < 0.01 * exact);
     assert!(extend(&m, 0.0, FRAC_PI_6).is_err());
 }
+
+/// Area covered twice or more, by rasterising the triangles (projected on z = 0) on a fine
+/// grid offset by an irrational fraction so no sample falls on an edge.
+fn overlap_area(m: &Mesh, cells: usize) -> f64 {
+    let b = m.bounds().unwrap();
+    let (x0, y0) = (b.min.x - 0.01, b.min.y - 0.01);
+    let h = ((b.max.x - x0).max(b.max.y - y0) + 0.01) / cells as f64;
+    let mut count = vec![0u8; cells * cells];
+    for t in 0..m.len() {
+        let [p, q, r] = m.corners_of(t);
+        let area2 = (q - p).cross(r - p).z;
+        if area2 == 0.0 {
+            continue;
+        }
+        let lo = p.min(q).min(r);
+        let hi = p.max(q).max(r);
+        let i0 = (((lo.x - x0) / h).floor().max(0.0) as usize).min(cells - 1);
+        let i1 = (((hi.x - x0) / h).ceil().max(0.0) as usize).min(cells - 1);
+        let j0 = (((lo.y - y0) / h).floor().max(0.0) as usize).min(cells - 1);
+        let j1 = (((hi.y - y0) / h).ceil().max(0.0) as usize).min(cells - 1);
+        for j in j0..=j1 {
+            for i in i0..=i1 {
+                let s = DVec3::new(
+                    x0 + (i as f64 + 0.5 + 0.0123) * h,
+                    y0 + (j as f64 + 0.5 + 0.0371) * h,
+                    0.0,
+                );
+                let w = |a: DVec3, b: DVec3| (b - a).cross(s - a).z / area2;
+                if w(p, q) > 0.0 && w(q, r) > 0.0 && w(r, p) > 0.0 {
+                    count[j * cells + i] = count[j * cells + i].saturating_add(1);
+                }
+            }
+        }
+    }
+    count.iter().filter(|&&c| c >= 2).count() as f64 * h * h
+}
+
+fn ring() -> Mesh {
+    use lispcad::geom::curve::Curve;
+    let profile = Curve::line(DVec3::new(2.0, 0.0, 0.0), DVec3::new(5.0, 0.0, 0.0)).unwrap();
+    let s = Surface::revolve(
+        std::sync::Arc::new(profile),
+        DVec3::ZERO,
+        DVec3::Z,
+        2.0 * PI,
+    )
+    .unwrap();
+    mesh_surface(&s, 0.01).unwrap()
+}
+
+#[test]
+fn a_ring_extended_by_3_never_overlaps_itself() {
+    use lispcad::geom::mesh::extend_with;
+    let r = ring();
+    assert_eq!(overlap_area(&r, 400), 0.0);
+    // Inward by 3 through a hole of radius 2: no clean extension, a clear error.
+    let e = extend_with(&r, 3.0, FRAC_PI_6, true)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("extend-surface") && e.contains("hole"), "{e}");
+    // Holes left alone: the outer rim grows to radius 8, nothing overlaps.
+    let m = extend_with(&r, 3.0, FRAC_PI_6, false).unwrap();
+    assert_eq!(overlap_area(&m, 400), 0.0);
+    let exact = PI * (64.0 - 4.0);
+    assert!((m.area() - exact).abs() < 0.01 * exact, "{}", m.area());
+    assert!(m
+        .vertices()
+        .iter()
+        .all(|p| p.truncate().length() >= 2.0 - 1e-9));
+    // Inward by 1 fits the hole: extended consistently to radius 1.
+    let m = extend_with(&r, 1.0, FRAC_PI_6, true).unwrap();
+    assert_eq!(overlap_area(&m, 400), 0.0);
+    let inner = m
+        .vertices()
+        .iter()
+        .map(|p| p.truncate().length())
+        .fold(f64::MAX, f64::min);
+    assert!((inner - 1.0).abs() < 0.01, "{inner}");
+}
+
+#[test]
+fn concave_corners_are_mitred_without_overlap_or_refused() {
+    let l = l_shape();
+    for d in [0.25, 0.5, 0.9] {
+        let e = extend(&l, d, FRAC_PI_6).unwrap();
+        assert_eq!(overlap_area(&e, 300), 0.0, "distance {d}");
+    }
+    // Past the notch's edges (length 1) the mitred strips would fold over: an error.
+    let e = extend(&l, 1.5, FRAC_PI_6).unwrap_err().to_string();
+    assert!(e.contains("folds"), "{e}");
+}

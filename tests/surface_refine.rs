@@ -166,3 +166,44 @@ fn tangent_contacts_come_back_as_points_and_lines() {
         assert!((rho(*p) - 2f64.sqrt()).abs() < 1e-12 && p.z.abs() < 1e-15);
     }
 }
+
+#[test]
+fn swept_and_coons_surfaces_meet_a_plane_on_both_true_surfaces() {
+    // A tilted square region through the origin.
+    let n = DVec3::new(0.2, -0.1, 1.0).normalize();
+    let (x, y) = (
+        n.any_orthonormal_pair().0 * 20.0,
+        n.any_orthonormal_pair().1 * 20.0,
+    );
+    let square = Surface::plane(vec![-x - y, x - y, x + y, -x + y]).unwrap();
+    let on_plane = |p: DVec3| n.dot(p).abs() <= 1e-9;
+    // Torus piece: a circle of radius 1 about (5, 0, 0) swept along a quarter circle of radius 5.
+    let profile = c(Curve::circle(DVec3::new(5.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap());
+    let guide = c(Curve::arc(DVec3::ZERO, 5.0, 0.0, PI / 2.0, None).unwrap());
+    let sweep = Surface::sweep(profile, guide).unwrap();
+    let curves = surface_intersect(&sweep, &square, 0.01).unwrap();
+    assert!(!curves.is_empty());
+    for p in curves.iter().flat_map(|c| c.points.iter()) {
+        let torus = ((rho(*p) - 5.0).hypot(p.z) - 1.0).abs();
+        // The sweep's frames are interpolated, so its surface is the torus only within 1e-6;
+        // the point must lie on the plane to GEOMTOL and near the torus.
+        assert!(on_plane(*p) && torus <= 1e-6, "{p} {torus}");
+    }
+    // Quarter cylinder of radius 5 as a Coons patch.
+    let arc = |z: f64| c(Curve::arc(DVec3::new(0.0, 0.0, z), 5.0, 0.0, PI / 2.0, None).unwrap());
+    let line = |a: [f64; 3], b: [f64; 3]| {
+        c(Curve::line(DVec3::from_array(a), DVec3::from_array(b)).unwrap())
+    };
+    let coons = Surface::boundary([
+        arc(-2.0),
+        line([0.0, 5.0, -2.0], [0.0, 5.0, 2.0]),
+        arc(2.0),
+        line([5.0, 0.0, 2.0], [5.0, 0.0, -2.0]),
+    ])
+    .unwrap();
+    let curves = surface_intersect(&coons, &square, 0.01).unwrap();
+    assert_eq!(curves.len(), 1);
+    for p in &curves[0].points {
+        assert!(on_plane(*p) && (rho(*p) - 5.0).abs() <= 1e-9, "{p}");
+    }
+}

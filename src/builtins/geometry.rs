@@ -41,7 +41,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("mirror", "(mirror v p1 p2)", "The value mirrored in the line p1-p2 (the vertical plane through it).", 3, 3, mirror),
     builtin!("offset", "(offset c d)", "A planar curve offset by d (positive: to the left of its direction).", 2, 2, offset),
     builtin!("intersect", "(intersect a b [near])", "All intersection points of two curves sorted along a (overlaps as curves), or the one nearest to near; nil if none.", 2, 3, intersect_fn),
-    builtin!("intersect-info", "(intersect-info a b)", "One association list per hit: ((point . P) (t1 . u) (t2 . v) (kind . CROSS|TANGENT|OVERLAP)).", 2, 2, intersect_info),
+    builtin!("intersect-info", "(intersect-info a b)", "One association list per hit: ((point . P) (t1 . u) (t2 . v) (kind . CROSS|TANGENT|OVERLAP)); against a surface t2 is nil.", 2, 2, intersect_info),
 ];
 
 /// A curve value: `type` → CURVE.
@@ -334,6 +334,9 @@ fn intersect_fn(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn intersect_info(it: &mut Interp, a: &[Value]) -> LResult {
+    if crate::builtins::surfaces::is_surface(&a[1]) {
+        return crate::builtins::surfaces::intersect_info_curve_surface(it, a);
+    }
     let tol = geomtol(it);
     let (c1, c2) = (curve(it, &a[0])?, curve(it, &a[1])?);
     let hits = intersect(c1, c2, tol);

@@ -32,11 +32,11 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("mesh-surface", "(mesh-surface s [chord-tol])", "The discrete surface: an indexed triangle mesh within chord-tol (default CHORDTOL).", 1, 2, mesh_surface),
     builtin!("mesh-read", "(mesh-read \"file.stl\")", "Reads a triangle mesh from STL (ASCII or binary) or OBJ, welding shared vertices.", 1, 1, mesh_read),
     builtin!("mesh-write", "(mesh-write m \"file.obj\")", "Writes a surface or mesh as STL (binary) or OBJ, by extension; returns the file name.", 2, 2, mesh_write),
-    builtin!("surface-section", "(surface-section s plane-point plane-normal)", "The plane section of a surface: a list of polylines (closed where the section closes).", 3, 3, surface_section),
-    builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines.", 2, 2, surface_intersect),
+    builtin!("surface-section", "(surface-section s plane-point plane-normal)", "The plane section of a surface: a list of polylines (closed where the section closes), on the true surface within GEOMTOL.", 3, 3, surface_section),
+    builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines on both true surfaces within GEOMTOL; a tangent contact as a point (x y z).", 2, 2, surface_intersect),
     builtin!("trim-surface", "(trim-surface s cutter keep-point)", "The part of s, cut along its intersection with cutter, that holds the point nearest keep-point.", 3, 3, trim_surface),
     builtin!("surface-corners", "(surface-corners s [angle])", "The boundary corners: where the boundary's tangent turns by more than angle (default 30 degrees, in radians).", 1, 2, surface_corners),
-    builtin!("extend-surface", "(extend-surface s distance [angle])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners).", 2, 3, extend_surface),
+    builtin!("extend-surface", "(extend-surface s distance [angle] [holes])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners); holes extended inward unless holes is nil; an error where the strips would overlap.", 2, 4, extend_surface),
     builtin!("surface-area", "(surface-area s)", "The area of a surface.", 1, 1, surface_area),
     builtin!("surface-boundary", "(surface-boundary s)", "The boundary loops of a surface as closed polylines.", 1, 1, surface_boundary),
 ];
@@ -172,24 +172,34 @@ fn curve_ref(it: &Interp, v: &Value) -> Result<CurveRef, Exn> {
     Ok(Arc::new(curve(it, v)?.clone()))
 }
 
-/// `(intersect curve surface [near])`: closed forms for lines and circles/arcs against the
-/// parametric kinds paper 002 covers; any curve against a mesh through its hierarchy.
-pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+/// The hits of a curve on a surface or mesh: `(curve parameter, point, kind)`, or the curve
+/// itself when it lies on the surface (an OVERLAP). Closed forms for lines against cylinders,
+/// planes and spheres and circles/arcs against planes (paper 002); other curves and surfaces
+/// through the mesh, refined on the true curve and surface to GEOMTOL; any curve against a mesh
+/// through its hierarchy.
+fn curve_surface_hits(it: &mut Interp, a: &[Value]) -> Result<CurveSurfaceHits, Exn> {
     let c = curve(it, &a[0])?.clone();
     let s = surf(it, &a[1])?;
     let tol = geomtol(it);
     let ctol = chord_tol(it);
-    let mut pts: Vec<DVec3> = match (&c, &s) {
-        (Curve::Line(l), Surf::Param(s)) => surface::segment_surface_hits(l.p0, l.p1, s, tol)
-            .map_err(mesh_err)?
-            .into_iter()
-            .map(|(_, p)| p)
-            .collect(),
-        (Curve::Circle(ci), Surf::Param(s)) => {
-            let arc = ArcData::circle(ci.center(), ci.radius(), ci.normal());
-            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+    if let Surf::Param(s) = &s {
+        if surface::curve_on_surface(&c, s, tol).map_err(mesh_err)? {
+            return Ok(CurveSurfaceHits::Overlap(c));
         }
-        (Curve::Arc(ar), Surf::Param(s)) => {
+    }
+    let with_t = |pts: Vec<DVec3>| -> Vec<(f64, DVec3)> {
+        pts.into_iter().map(|p| (c.closest_point(p).0, p)).collect()
+    };
+    let hits: Vec<(f64, DVec3)> = match (&c, &s) {
+        (
+            Curve::Line(l),
+            Surf::Param(s @ (Surface::Cylinder(_) | Surface::Plane(_) | Surface::Sphere(_))),
+        ) => surface::segment_surface_hits(l.p0, l.p1, s, tol).map_err(mesh_err)?,
+        (Curve::Circle(ci), Surf::Param(s @ Surface::Plane(_))) => {
+            let arc = ArcData::circle(ci.center(), ci.radius(), ci.normal());
+            with_t(surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?)
+        }
+        (Curve::Arc(ar), Surf::Param(s @ Surface::Plane(_))) => {
             let arc = ArcData {
                 center: ar.center(),
                 radius: ar.radius(),
@@ -197,21 +207,40 @@ pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
                 start_angle: ar.start_angle(),
                 end_angle: ar.end_angle(),
             };
-            surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?
+            with_t(surface::arc_surface_hits(&arc, s, tol).map_err(mesh_err)?)
         }
-        (_, Surf::Param(s)) => surface::curve_surface_hits(&c, s, ctol)
-            .map_err(mesh_err)?
-            .into_iter()
-            .map(|h| h.point)
-            .collect(),
+        (_, Surf::Param(s)) => {
+            surface::curve_surface_hits_refined(&c, s, ctol, tol).map_err(mesh_err)?
+        }
         (Curve::Line(l), Surf::Discrete(m)) => surface::polyline_mesh_hits(&[l.p0, l.p1], m)
             .into_iter()
-            .map(|h| h.point)
+            .map(|h| (h.t, h.point))
             .collect(),
         (_, Surf::Discrete(m)) => surface::curve_mesh_hits(&c, m, ctol.min(1e-3))
             .into_iter()
-            .map(|h| h.point)
+            .map(|h| (h.t, h.point))
             .collect(),
+    };
+    Ok(CurveSurfaceHits::Points(hits))
+}
+
+enum CurveSurfaceHits {
+    Points(Vec<(f64, DVec3)>),
+    Overlap(Curve),
+}
+
+/// `(intersect curve surface [near])`: the points, sorted along the curve, or the curve itself
+/// in the list when it lies on the surface.
+pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut pts: Vec<DVec3> = match curve_surface_hits(it, a)? {
+        CurveSurfaceHits::Overlap(c) => {
+            if a.get(2).is_some_and(|v| v.truthy()) {
+                let near = vec3(it, &a[2])?;
+                return Ok(point3(c.closest_point(near).1));
+            }
+            return Ok(Value::list(vec![curve_value(c)]));
+        }
+        CurveSurfaceHits::Points(h) => h.into_iter().map(|(_, p)| p).collect(),
     };
     if let Some(near) = a.get(2).filter(|v| v.truthy()) {
         let near = vec3(it, near)?;
@@ -219,6 +248,43 @@ pub fn intersect_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
         return Ok(pts.first().map_or(Value::Nil, |p| point3(*p)));
     }
     Ok(Value::list(pts.into_iter().map(point3).collect::<Vec<_>>()))
+}
+
+/// `(intersect-info curve surface)`: one association list per hit, t1 the curve's parameter, t2
+/// nil (a surface has two parameters); kind CROSS, or OVERLAP (with `(curve . c)`) when the curve
+/// lies on the surface.
+pub fn intersect_info_curve_surface(it: &mut Interp, a: &[Value]) -> LResult {
+    let field = |it: &mut Interp, k: &str, v: Value| Value::cons(Value::Sym(it.intern(k)), v);
+    let kind = |it: &mut Interp, k: &str| {
+        let v = Value::Sym(it.intern(k));
+        field(it, "KIND", v)
+    };
+    let hits = curve_surface_hits(it, a)?;
+    let mut out = Vec::new();
+    match hits {
+        CurveSurfaceHits::Overlap(c) => {
+            let fields = vec![
+                field(it, "POINT", point3(c.eval(0.0))),
+                field(it, "T1", Value::Real(0.0)),
+                field(it, "T2", Value::Nil),
+                kind(it, "OVERLAP"),
+                field(it, "CURVE", curve_value(c)),
+            ];
+            out.push(Value::list(fields));
+        }
+        CurveSurfaceHits::Points(h) => {
+            for (t, p) in h {
+                let fields = vec![
+                    field(it, "POINT", point3(p)),
+                    field(it, "T1", Value::Real(t)),
+                    field(it, "T2", Value::Nil),
+                    kind(it, "CROSS"),
+                ];
+                out.push(Value::list(fields));
+            }
+        }
+    }
+    Ok(Value::list(out))
 }
 
 /// Polylines as PLINE curves (closed ones closed); a one-point polyline (an isolated tangent
@@ -399,7 +465,10 @@ fn extend_surface(it: &mut Interp, a: &[Value]) -> LResult {
     let m = discrete(it, &a[0])?;
     let d = it.num(&a[1])?;
     let angle = corner_angle(it, a, 2)?;
-    Ok(mesh_value(mesh::extend(&m, d, angle).map_err(mesh_err)?))
+    let holes = a.get(3).is_none_or(|v| v.truthy());
+    Ok(mesh_value(
+        mesh::extend_with(&m, d, angle, holes).map_err(mesh_err)?,
+    ))
 }
 
 fn surface_area(it: &mut Interp, a: &[Value]) -> LResult {

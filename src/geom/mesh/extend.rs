@@ -115,9 +115,35 @@ pub fn corners(mesh: &Mesh, angle: f64) -> Result<Vec<DVec3>, MeshError> {
     Ok(out)
 }
 
-/// The mesh extended outward by `distance` along all its boundary loops, the boundary split
-/// into runs at corners (tangent turn above `angle`).
+/// The mesh extended outward by `distance` along all its boundary loops (holes inward), the
+/// boundary split into runs at corners (tangent turn above `angle`). See [`extend_with`].
 pub fn extend(mesh: &Mesh, distance: f64, angle: f64) -> Result<Mesh, MeshError> {
+    extend_with(mesh, distance, angle, true)
+}
+
+/// Whether a loop is a hole: walked with the surface on its left, its total signed turn about
+/// the facets' normals is about −2π (an outer boundary turns +2π, a cylinder's rim 0).
+fn is_hole(mesh: &Mesh, l: &Loop) -> bool {
+    let v = mesh.vertices();
+    let n = l.verts.len();
+    let total: f64 = (0..n)
+        .map(|i| {
+            let p = v[l.verts[i] as usize];
+            let a = p - v[l.verts[(i + n - 1) % n] as usize];
+            let b = v[l.verts[(i + 1) % n] as usize] - p;
+            let [x, y, z] = mesh.corners_of(l.facets[i] as usize);
+            let nrm = (y - x).cross(z - x).normalize_or_zero();
+            a.cross(b).dot(nrm).atan2(a.dot(b))
+        })
+        .sum();
+    total < -std::f64::consts::PI
+}
+
+/// [`extend`], with `holes` false leaving the holes' boundaries as they are. The strips are
+/// mitred exactly at concave vertices and fanned at convex corners; an extension whose strips
+/// would overlap themselves or the surface (a concave run or a hole too small for `distance`)
+/// is an error naming the place, never a folded result.
+pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Result<Mesh, MeshError> {
     let angle = check_angle(angle)?;
     if !(distance.is_finite() && distance > 0.0) {
         return Err(MeshError::BadParameter {
@@ -129,6 +155,9 @@ pub fn extend(mesh: &Mesh, distance: f64, angle: f64) -> Result<Mesh, MeshError>
     let mut verts = mesh.vertices().to_vec();
     let mut tris = mesh.triangles().to_vec();
     for l in oriented_loops(mesh) {
+        if !holes && is_hole(mesh, &l) {
+            continue;
+        }
         let n = l.verts.len();
         let mv = mesh.vertices();
         let p = |i: usize| mv[l.verts[i % n] as usize];
@@ -175,8 +204,16 @@ pub fn extend(mesh: &Mesh, distance: f64, angle: f64) -> Result<Mesh, MeshError>
                 q_in[i] = first;
                 q_out[i] = first + k as u32;
             } else {
+                // The exact mitre: where the two edges' offset lines meet.
                 let m = (o_in + o_out).normalize_or(o_out);
-                let c = m.dot(o_out).max(0.25);
+                let c = m.dot(o_out);
+                if c < 0.05 {
+                    return Err(MeshError::Invalid(format!(
+                        "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
+                         extension there",
+                        b.x, b.y, b.z
+                    )));
+                }
                 verts.push(b + m * (distance / c));
                 q_in[i] = (verts.len() - 1) as u32;
                 q_out[i] = q_in[i];
@@ -194,5 +231,88 @@ pub fn extend(mesh: &Mesh, distance: f64, angle: f64) -> Result<Mesh, MeshError>
             "extension produced a non-finite point".into(),
         ));
     }
-    Mesh::new(verts, tris)
+    let out = Mesh::new(verts, tris)?;
+    if let Some(p) = first_overlap(&out, mesh.len()) {
+        return Err(MeshError::Invalid(format!(
+            "extend-surface: extending by {distance} folds the strips over each other or the \
+             surface near ({:.6}, {:.6}, {:.6}) (a concave boundary or a hole too small for \
+             that distance){}",
+            p.x,
+            p.y,
+            p.z,
+            if holes {
+                "; pass nil as the fourth argument to leave holes alone"
+            } else {
+                ""
+            }
+        )));
+    }
+    Ok(out)
+}
+
+/// A point where a strip triangle (index ≥ `first_new`) overlaps another triangle with positive
+/// area (coplanar) or crosses it (not sharing a vertex); None when the extension is clean.
+fn first_overlap(m: &Mesh, first_new: usize) -> Option<DVec3> {
+    let b = m.bounds()?;
+    let eps = 1e-9 * (b.max - b.min).length().max(1e-300);
+    let bvh = m.bvh();
+    let mut pairs = bvh.overlapping_pairs(bvh);
+    pairs.retain(|&(s, t)| s < t && t as usize >= first_new);
+    pairs.sort_unstable();
+    pairs.into_iter().find_map(|(s, t)| {
+        let (ta, tb) = (m.triangles()[s as usize], m.triangles()[t as usize]);
+        let (a, bb) = (m.corners_of(s as usize), m.corners_of(t as usize));
+        let shared = ta.iter().filter(|v| tb.contains(v)).count();
+        overlap(a, bb, shared, eps).then(|| (a[0] + a[1] + a[2] + bb[0] + bb[1] + bb[2]) / 6.0)
+    })
+}
+
+/// Whether two triangles overlap: coplanar ones with an overlap wider than `eps` across every
+/// separating direction (2D separating axes), others when an edge of one passes through the
+/// inside of the other (only for triangles sharing no vertex).
+fn overlap(a: [DVec3; 3], b: [DVec3; 3], shared: usize, eps: f64) -> bool {
+    let na = (a[1] - a[0]).cross(a[2] - a[0]);
+    let nb = (b[1] - b[0]).cross(b[2] - b[0]);
+    let (la, lb) = (na.length(), nb.length());
+    if la == 0.0 || lb == 0.0 {
+        return false;
+    }
+    let (ua, ub) = (na / la, nb / lb);
+    let coplanar =
+        ua.cross(ub).length() <= 1e-9 && b.iter().all(|p| ua.dot(*p - a[0]).abs() <= eps);
+    if coplanar {
+        let (x, y) = crate::geom::frame::arbitrary_axis(ua);
+        let to2 = |p: DVec3| glam::DVec2::new(p.dot(x), p.dot(y));
+        let (a2, b2) = (a.map(to2), b.map(to2));
+        for tri in [&a2, &b2] {
+            for k in 0..3 {
+                let e = tri[(k + 1) % 3] - tri[k];
+                let axis = glam::DVec2::new(-e.y, e.x).normalize_or_zero();
+                let span = |t: &[glam::DVec2; 3]| {
+                    let d = t.map(|p| p.dot(axis));
+                    (d[0].min(d[1]).min(d[2]), d[0].max(d[1]).max(d[2]))
+                };
+                let ((a0, a1), (b0, b1)) = (span(&a2), span(&b2));
+                if a1.min(b1) - a0.max(b0) <= eps {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+    if shared > 0 {
+        return false;
+    }
+    let crosses = |p: &[DVec3; 3], t: &[DVec3; 3], n: DVec3| {
+        (0..3).any(|k| {
+            let (s, e) = (p[k], p[(k + 1) % 3]);
+            let (ds, de) = (n.dot(s - t[0]), n.dot(e - t[0]));
+            if !((ds > eps && de < -eps) || (ds < -eps && de > eps)) {
+                return false;
+            }
+            let x = s + (e - s) * (ds / (ds - de));
+            (0..3).all(|j| (t[(j + 1) % 3] - t[j]).cross(x - t[j]).dot(n) > eps * eps)
+        })
+    };
+    crosses(&a, &b, ua) || crosses(&b, &a, ub)
 }

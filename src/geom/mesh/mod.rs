@@ -22,7 +22,7 @@ pub use adjacency::{Adjacency, NO_NEIGHBOUR};
 pub use bvh::{Aabb, Bvh};
 pub use chain::{chain_segments, Polyline3, Segment};
 pub use error::MeshError;
-pub use extend::{corners, extend};
+pub use extend::{corners, extend, extend_with};
 pub use intersect::{intersect_meshes, intersect_meshes_with_stats, IntersectStats};
 pub(crate) use io::weld_tolerance_grid;
 pub use io::{

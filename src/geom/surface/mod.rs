@@ -25,9 +25,10 @@ pub use hits::{
 };
 pub use kinds::{Coons, Cylinder, PlaneRegion, Revolve, Ruled, Sphere, Surface, Sweep};
 pub use ops::{
-    arc_surface_hits, curve_surface_hits, segment_surface_hits, surface_area, surface_boundary,
-    surface_intersect, surface_intersect_seeded, surface_intersect_tol, surface_section,
-    surface_section_seeded, surface_section_tol,
+    arc_surface_hits, curve_on_surface, curve_surface_hits, curve_surface_hits_refined,
+    segment_surface_hits, surface_area, surface_boundary, surface_intersect,
+    surface_intersect_seeded, surface_intersect_tol, surface_section, surface_section_seeded,
+    surface_section_tol,
 };
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};

@@ -142,7 +142,14 @@ fn revolve_section(
     }
     let axis = r.axis_dir;
     let along = n.dot(axis).abs();
-    let (_, prof) = super::sampled::sample_curve(r.profile.as_ref(), tol, 16);
+    let (_, mut prof) = super::sampled::sample_curve(r.profile.as_ref(), tol, 16);
+    // A closed profile ends where it starts: the same point bit for bit, so a seam lying on the
+    // plane is one crossing (roundoff in the end point would hide it between last and first).
+    let last = prof.len() - 1;
+    let closed_profile = prof[0].distance(prof[last]) <= 1e-12 * (1.0 + prof[0].length());
+    if closed_profile {
+        prof[last] = prof[0];
+    }
     if (1.0 - along) <= 1e-14 {
         let mut out = Vec::new();
         // One crossing per sign change, a point on the plane counting as positive (as in the
@@ -202,12 +209,13 @@ fn revolve_section(
                 .rem_euclid(TAU);
             if theta <= r.angle + 1e-12 || (r.angle >= TAU) {
                 let rot = DQuat::from_axis_angle(axis, theta);
+                let open = &prof[..prof.len() - usize::from(closed_profile)];
                 out.push(Polyline3 {
-                    points: prof
+                    points: open
                         .iter()
                         .map(|x| r.axis_point + rot * (*x - r.axis_point))
                         .collect(),
-                    closed: false,
+                    closed: closed_profile,
                 });
             }
         }
@@ -309,11 +317,20 @@ pub fn segment_surface_hits(
             ts.into_iter().map(|t| (t, p0 + v * t)).collect()
         }
         _ => {
-            let m = mesh_surface(s, tol)?;
-            super::hits::polyline_mesh_hits(&[p0, p1], &m)
-                .into_iter()
-                .map(|h| (h.t, h.point))
-                .collect()
+            // The mesh seeds the hits; they are refined on the true surface (GEOMTOL-level
+            // tolerance scaled from `tol`, the caller's GEOMTOL).
+            let chord = (tol * 1e6).min(1e-2);
+            let m = mesh_surface(s, chord)?;
+            let line = crate::geom::line::Line { p0, p1 };
+            let patch = super::refine::Patch::new(s);
+            super::refine::curve_hits_refined(
+                &patch,
+                &m,
+                &line,
+                (&[0.0, 1.0], &[p0, p1]),
+                tol,
+                chord,
+            )
         }
     })
 }
@@ -354,6 +371,29 @@ pub fn curve_surface_hits(
     Ok(curve_mesh_hits(curve, &m, chord_tol))
 }
 
+/// Any curve against a parametric surface, the mesh hits (and near-misses of the mesh
+/// boundary) refined on the true curve and surface to within `tol`: `(t, point)` sorted by t.
+pub fn curve_surface_hits_refined(
+    curve: &dyn ParamCurve,
+    s: &Surface,
+    chord_tol: f64,
+    tol: f64,
+) -> Result<Vec<(f64, DVec3)>, SurfaceError> {
+    let chord_tol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
+    let tol = check_positive("GEOMTOL", tol)?;
+    let m: Mesh = mesh_surface(s, chord_tol)?;
+    let (ts, pts) = super::sampled::sample_curve(curve, chord_tol, 16);
+    let patch = super::refine::Patch::new(s);
+    Ok(super::refine::curve_hits_refined(
+        &patch,
+        &m,
+        curve,
+        (&ts, &pts),
+        tol,
+        chord_tol,
+    ))
+}
+
 /// Area: exact for cylinders (2πrh), spheres (4πr²) and planar regions (Newell's area); the
 /// mesh's area otherwise (which approaches the surface's from below as `chord_tol` shrinks).
 pub fn surface_area(s: &Surface, chord_tol: f64) -> Result<f64, SurfaceError> {
@@ -376,4 +416,45 @@ pub fn surface_boundary(s: &Surface, chord_tol: f64) -> Result<Vec<Polyline3>, S
         }],
         _ => mesh_surface(s, chord_tol)?.boundary(),
     })
+}
+
+/// Whether the whole curve lies on the surface (within `tol`): an OVERLAP, not a set of hits.
+/// Checked at 129 points along the curve, by closed-form distances for cylinders, spheres and
+/// planar regions and by projection onto the true surface otherwise.
+pub fn curve_on_surface(
+    curve: &dyn ParamCurve,
+    s: &Surface,
+    tol: f64,
+) -> Result<bool, SurfaceError> {
+    let tol = check_positive("GEOMTOL", tol)?;
+    let patch = match s {
+        Surface::Cylinder(_) | Surface::Sphere(_) | Surface::Plane(_) => None,
+        _ => Some(super::refine::Patch::new(s)),
+    };
+    let mut prev = None;
+    for i in 0..=128 {
+        let p = curve.eval(i as f64 / 128.0);
+        let on = match s {
+            Surface::Cylinder(c) => {
+                let h = (p - c.base).dot(c.axis);
+                let radial = (p - c.base - c.axis * h).length();
+                (radial - c.radius).abs() <= tol && h >= -tol && h <= c.height + tol
+            }
+            Surface::Sphere(sp) => (p.distance(sp.center) - sp.radius).abs() <= tol,
+            Surface::Plane(pl) => {
+                pl.normal.dot(p - pl.boundary[0]).abs() <= tol
+                    && point_in_polygon(p, &pl.boundary, pl.normal, tol).is_in()
+            }
+            _ => {
+                let patch = patch.as_ref().expect("built for the other kinds");
+                let uv = patch.project(p, prev);
+                prev = Some(uv);
+                patch.eval(uv).distance(p) <= tol
+            }
+        };
+        if !on {
+            return Ok(false);
+        }
+    }
+    Ok(true)
 }

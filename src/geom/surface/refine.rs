@@ -158,21 +158,9 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) ->
                 *c = DVec3::ZERO;
             }
         }
-        let mut jjt = DMat3::ZERO;
-        for c in &cols {
-            jjt += outer(*c, *c);
-        }
-        // Levenberg damping keeps the step bounded where the surfaces are tangent.
-        let lambda = 1e-12
-            * jjt
-                .to_cols_array()
-                .iter()
-                .fold(0.0f64, |m, x| m.max(x.abs()));
-        jjt += DMat3::from_diagonal(DVec3::splat(lambda.max(1e-300)));
-        if jjt.determinant().abs() <= 1e-300 {
+        let Some(y) = min_norm(&cols, r) else {
             break;
-        }
-        let y = jjt.inverse() * r;
+        };
         for (k, c) in cols.iter().enumerate() {
             uv[k / 2][k % 2] -= c.dot(y);
         }
@@ -187,9 +175,21 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) ->
     })
 }
 
-#[inline]
-fn outer(a: DVec3, b: DVec3) -> DMat3 {
-    DMat3::from_cols(a * b.x, a * b.y, a * b.z)
+/// `y = (JJᵀ + λI)⁻¹ r` for the Jacobian with columns `cols`: the minimum-norm Newton step is
+/// `−Jᵀy`. The small Levenberg damping λ keeps the step bounded where the surfaces (or the
+/// curve and the surface) are tangent.
+fn min_norm(cols: &[DVec3], r: DVec3) -> Option<DVec3> {
+    let mut jjt = DMat3::ZERO;
+    for c in cols {
+        jjt += DMat3::from_cols(*c * c.x, *c * c.y, *c * c.z);
+    }
+    let lambda = 1e-12
+        * jjt
+            .to_cols_array()
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+    jjt += DMat3::from_diagonal(DVec3::splat(lambda.max(1e-300)));
+    (jjt.determinant().abs() > 1e-300).then(|| jjt.inverse() * r)
 }
 
 /// The parameter midway between two, the short way round in a periodic direction.
@@ -201,6 +201,84 @@ fn mid(p: &Patch, a: DVec2, b: DVec2) -> DVec2 {
         }
     }
     m
+}
+
+/// Refined nodes joined into a polyline, each segment densified: a midpoint (from `mid`, None
+/// when it does not converge) is inserted while it lies farther than `chord_tol` from the chord.
+fn assemble<N: Copy>(
+    nodes: &[N],
+    closed: bool,
+    pos: impl Fn(&N) -> DVec3 + Copy,
+    mid: &impl Fn(&N, &N) -> Option<N>,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
+    let m = nodes.len();
+    let segs = if closed { m } else { m.saturating_sub(1) };
+    let mut out = Vec::with_capacity(m * 2);
+    for i in 0..m {
+        out.push(pos(&nodes[i]));
+        if i < segs {
+            densify(
+                nodes[i],
+                nodes[(i + 1) % m],
+                pos,
+                mid,
+                tol,
+                chord_tol,
+                0,
+                &mut out,
+            );
+        }
+    }
+    out.dedup_by(|x, y| x.distance(*y) <= tol);
+    Polyline3 {
+        points: out,
+        closed: closed && m >= 3,
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn densify<N: Copy>(
+    n0: N,
+    n1: N,
+    pos: impl Fn(&N) -> DVec3 + Copy,
+    mid: &impl Fn(&N, &N) -> Option<N>,
+    tol: f64,
+    chord_tol: f64,
+    depth: u32,
+    out: &mut Vec<DVec3>,
+) {
+    let (p0, p1) = (pos(&n0), pos(&n1));
+    if depth >= 16 || p0.distance(p1) <= 2.0 * tol {
+        return;
+    }
+    let Some(m) = mid(&n0, &n1) else {
+        return;
+    };
+    let pm = pos(&m);
+    let chord = p1 - p0;
+    let off = (pm - p0).cross(chord).length() / chord.length();
+    // A midpoint that wandered off between its ends (onto another branch) is not inserted.
+    let along = (pm - p0).dot(chord) / chord.length_squared();
+    if off > chord_tol && (0.0..=1.0).contains(&along) {
+        densify(n0, m, pos, mid, tol, chord_tol, depth + 1, out);
+        out.push(pm);
+        densify(m, n1, pos, mid, tol, chord_tol, depth + 1, out);
+    }
+}
+
+/// The midpoint of two intersection nodes, refined onto both patches.
+fn pair_mid<'p>(
+    a: &'p Patch<'p>,
+    b: &'p Patch<'p>,
+    tol: f64,
+) -> impl Fn(&Node, &Node) -> Option<Node> + 'p {
+    move |n0: &Node, n1: &Node| {
+        let uv = [mid(a, n0.uv[0], n1.uv[0]), mid(b, n0.uv[1], n1.uv[1])];
+        let m = newton_pair(a, b, uv, tol);
+        (m.residual <= tol).then_some(m)
+    }
 }
 
 /// One seeded polyline refined onto both surfaces and densified within `chord_tol`.
@@ -225,30 +303,14 @@ pub(crate) fn refine_pair_curve(
             nodes.push(n);
         }
     }
-    let closed = seed.closed;
-    let mut out = Vec::with_capacity(nodes.len() * 2);
-    let m = nodes.len();
-    let segs = if closed { m } else { m.saturating_sub(1) };
-    for i in 0..m {
-        out.push(nodes[i].point);
-        if i < segs {
-            densify(
-                a,
-                b,
-                nodes[i],
-                nodes[(i + 1) % m],
-                tol,
-                chord_tol,
-                0,
-                &mut out,
-            );
-        }
-    }
-    dedup(&mut out, tol);
-    Polyline3 {
-        points: out,
-        closed: closed && out_len_ok(m),
-    }
+    assemble(
+        &nodes,
+        seed.closed,
+        |n| n.point,
+        &pair_mid(a, b, tol),
+        tol,
+        chord_tol,
+    )
 }
 
 /// Closes an open refined curve whose ends are within a few of its own segment lengths — the
@@ -275,47 +337,19 @@ pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord
         return;
     }
     let mut extra = Vec::new();
-    densify(a, b, ne, ns, tol, chord_tol, 0, &mut extra);
+    let pos = |n: &Node| n.point;
+    densify(
+        ne,
+        ns,
+        pos,
+        &pair_mid(a, b, tol),
+        tol,
+        chord_tol,
+        0,
+        &mut extra,
+    );
     c.points.extend(extra);
     c.closed = true;
-}
-
-fn out_len_ok(m: usize) -> bool {
-    m >= 3
-}
-
-#[allow(clippy::too_many_arguments)]
-fn densify(
-    a: &Patch,
-    b: &Patch,
-    n0: Node,
-    n1: Node,
-    tol: f64,
-    chord_tol: f64,
-    depth: u32,
-    out: &mut Vec<DVec3>,
-) {
-    if depth >= 16 || n0.point.distance(n1.point) <= 2.0 * tol {
-        return;
-    }
-    let uv = [mid(a, n0.uv[0], n1.uv[0]), mid(b, n0.uv[1], n1.uv[1])];
-    let m = newton_pair(a, b, uv, tol);
-    if m.residual > tol {
-        return;
-    }
-    let chord = n1.point - n0.point;
-    let off = (m.point - n0.point).cross(chord).length() / chord.length();
-    // Also split a segment whose midpoint wandered off between its ends (a different branch).
-    let along = (m.point - n0.point).dot(chord) / chord.length_squared();
-    if off > chord_tol && (0.0..=1.0).contains(&along) {
-        densify(a, b, n0, m, tol, chord_tol, depth + 1, out);
-        out.push(m.point);
-        densify(a, b, m, n1, tol, chord_tol, depth + 1, out);
-    }
-}
-
-fn dedup(pts: &mut Vec<DVec3>, tol: f64) {
-    pts.dedup_by(|x, y| x.distance(*y) <= tol);
 }
 
 /// A point of a plane section: Newton on `n·(S(u, v) − p0) = 0` (minimum-norm step).
@@ -361,58 +395,136 @@ pub(crate) fn refine_section_curve(
             nodes.push((uv, s.eval(uv)));
         }
     }
-    let m = nodes.len();
-    let segs = if seed.closed { m } else { m.saturating_sub(1) };
-    let mut out = Vec::with_capacity(m * 2);
-    for i in 0..m {
-        out.push(nodes[i].1);
-        if i < segs {
-            densify_plane(
-                s,
-                nodes[i],
-                nodes[(i + 1) % m],
-                p0,
-                n,
-                tol,
-                chord_tol,
-                0,
-                &mut out,
-            );
-        }
-    }
-    dedup(&mut out, tol);
-    Polyline3 {
-        points: out,
-        closed: seed.closed && out_len_ok(m),
-    }
+    let mid_of = |a: &(DVec2, DVec3), b: &(DVec2, DVec3)| {
+        let (uv, r) = newton_plane(s, mid(s, a.0, b.0), p0, n, tol);
+        (r <= tol).then(|| (uv, s.eval(uv)))
+    };
+    assemble(&nodes, seed.closed, |x| x.1, &mid_of, tol, chord_tol)
 }
 
-#[allow(clippy::too_many_arguments)]
-fn densify_plane(
+/// Carries a curve/surface hit onto the true surface and the true curve: Newton on
+/// `S(u, v) − C(t) = 0` (three equations, three unknowns), with a parameter on a domain edge
+/// held there. Returns `(t, point, residual)`.
+pub(crate) fn newton_curve_hit(
     s: &Patch,
-    n0: (DVec2, DVec3),
-    n1: (DVec2, DVec3),
-    p0: DVec3,
-    n: DVec3,
+    c: &dyn crate::geom::ParamCurve,
+    t0: f64,
+    p: DVec3,
+) -> (f64, DVec3, f64) {
+    let mut uv = s.project(p, None);
+    let mut t = t0.clamp(0.0, 1.0);
+    let mut best = (t, p, f64::INFINITY);
+    let mut fixed = [false; 3];
+    for _ in 0..40 {
+        let (ps, pc) = (s.eval(uv), c.eval(t));
+        let r = ps - pc;
+        if r.length() < best.2 {
+            best = (t, 0.5 * (ps + pc), r.length());
+        }
+        if r.length() <= 1e-15 * (1.0 + ps.length()) {
+            break;
+        }
+        let (su, sv) = s.derivs(uv);
+        const H: f64 = 1e-7;
+        let (ta, tb) = ((t - H).max(0.0), (t + H).min(1.0));
+        let dc = (c.eval(tb) - c.eval(ta)) / (tb - ta);
+        let mut cols = [su, sv, -dc];
+        for (k, col) in cols.iter_mut().enumerate() {
+            if fixed[k] {
+                *col = DVec3::ZERO;
+            }
+        }
+        let Some(y) = min_norm(&cols, r) else {
+            break;
+        };
+        uv.x -= cols[0].dot(y);
+        uv.y -= cols[1].dot(y);
+        t -= cols[2].dot(y);
+        let e = s.normalise(&mut uv);
+        let te = !(0.0..=1.0).contains(&t);
+        t = t.clamp(0.0, 1.0);
+        fixed = [e[0], e[1], te];
+    }
+    best
+}
+
+/// The hits of a curve on a parametric surface: the mesh hits plus every place the curve passes
+/// within `chord_tol` of the mesh boundary (a hit on a boundary edge of the true surface can miss
+/// the mesh by roundoff), each carried onto both true objects; kept when they meet within
+/// `tol`, one per point.
+pub(crate) fn curve_hits_refined(
+    s: &Patch,
+    mesh: &crate::geom::mesh::Mesh,
+    c: &dyn crate::geom::ParamCurve,
+    samples: (&[f64], &[DVec3]),
     tol: f64,
     chord_tol: f64,
-    depth: u32,
-    out: &mut Vec<DVec3>,
-) {
-    if depth >= 16 || n0.1.distance(n1.1) <= 2.0 * tol {
-        return;
+) -> Vec<(f64, DVec3)> {
+    let (ts, pts) = samples;
+    let mut cands: Vec<(f64, DVec3)> = super::hits::polyline_mesh_hits(pts, mesh)
+        .into_iter()
+        .map(|h| {
+            let i = (h.t.floor() as usize).min(ts.len() - 2);
+            (ts[i] + (ts[i + 1] - ts[i]) * (h.t - i as f64), h.point)
+        })
+        .collect();
+    for l in mesh.boundary() {
+        let n = l.points.len();
+        for k in 0..n {
+            let (q0, q1) = (l.points[k], l.points[(k + 1) % n]);
+            for i in 0..pts.len().saturating_sub(1) {
+                let (f, p, d) = segment_gap(pts[i], pts[i + 1], q0, q1);
+                if d <= 2.0 * chord_tol {
+                    cands.push((ts[i] + (ts[i + 1] - ts[i]) * f, p));
+                }
+            }
+        }
     }
-    let (uv, r) = newton_plane(s, mid(s, n0.0, n1.0), p0, n, tol);
-    if r > tol {
-        return;
+    let mut out: Vec<(f64, DVec3)> = Vec::new();
+    for (t, p) in cands {
+        let (t, q, r) = newton_curve_hit(s, c, t, p);
+        if r <= tol && !out.iter().any(|o| o.1.distance(q) <= tol) {
+            out.push((t, q));
+        }
     }
-    let m = (uv, s.eval(uv));
-    let chord = n1.1 - n0.1;
-    let off = (m.1 - n0.1).cross(chord).length() / chord.length();
-    let along = (m.1 - n0.1).dot(chord) / chord.length_squared();
-    if off > chord_tol && (0.0..=1.0).contains(&along) {
-        densify_plane(s, n0, m, p0, n, tol, chord_tol, depth + 1, out);
-        out.push(m.1);
-        densify_plane(s, m, n1, p0, n, tol, chord_tol, depth + 1, out);
+    out.sort_by(|a, b| a.0.total_cmp(&b.0));
+    out
+}
+
+/// Closest approach of segments `p0p1` and `q0q1`: (fraction along p, point on p, distance).
+fn segment_gap(p0: DVec3, p1: DVec3, q0: DVec3, q1: DVec3) -> (f64, DVec3, f64) {
+    let (d1, d2, r) = (p1 - p0, q1 - q0, p0 - q0);
+    let (a, e, f) = (d1.dot(d1), d2.dot(d2), d2.dot(r));
+    let (mut s, mut t);
+    if a <= 1e-300 && e <= 1e-300 {
+        return (0.0, p0, p0.distance(q0));
     }
+    if a <= 1e-300 {
+        s = 0.0;
+        t = (f / e).clamp(0.0, 1.0);
+    } else {
+        let c = d1.dot(r);
+        if e <= 1e-300 {
+            t = 0.0;
+            s = (-c / a).clamp(0.0, 1.0);
+        } else {
+            let b = d1.dot(d2);
+            let den = a * e - b * b;
+            s = if den > 0.0 {
+                ((b * f - c * e) / den).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            t = (b * s + f) / e;
+            if t < 0.0 {
+                t = 0.0;
+                s = (-c / a).clamp(0.0, 1.0);
+            } else if t > 1.0 {
+                t = 1.0;
+                s = ((b - c) / a).clamp(0.0, 1.0);
+            }
+        }
+    }
+    let (cp, cq) = (p0 + d1 * s, q0 + d2 * t);
+    (s, cp, cp.distance(cq))
 }
