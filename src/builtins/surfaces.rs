@@ -328,7 +328,11 @@ fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
     let path = it
         .resolve_path(&name)
         .ok_or_else(|| err(format!("mesh-read: cannot find \"{name}\"")))?;
-    Ok(mesh_value(mesh::read_mesh(&path).map_err(mesh_err)?))
+    let c = it
+        .ext::<crate::builtins::io::FsPolicy>()
+        .confine(&path, crate::builtins::io::Access::Read)
+        .map_err(err)?;
+    Ok(mesh_value(mesh::read_mesh(&c.path).map_err(mesh_err)?))
 }
 
 fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {
@@ -338,12 +342,13 @@ fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {
         Some(b) if std::path::Path::new(&name).is_relative() => b.join(&name),
         _ => std::path::PathBuf::from(&name),
     };
-    if !it.ext::<crate::builtins::io::FsPolicy>().may_write(&path) {
-        return Err(err(format!(
-            "file access refused: {name} is outside the script and output directories (use --allow-fs)"
-        )));
-    }
-    mesh::write_mesh(&m, &path).map_err(mesh_err)?;
+    // Written through the confined directory; the file is created 0644 like every output.
+    let c = it
+        .ext::<crate::builtins::io::FsPolicy>()
+        .confine(&path, crate::builtins::io::Access::Write)
+        .map_err(err)?;
+    mesh::write_mesh(&m, &c.path).map_err(mesh_err)?;
+    crate::builtins::io::make_public(&c.path);
     Ok(a[1].clone())
 }
 

@@ -447,6 +447,11 @@ fn doc_ref(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn getenv(it: &mut Interp, a: &[Value]) -> LResult {
+    // A sandboxed script learns nothing of the environment (tokens, home, paths).
+    if it.ext::<crate::builtins::io::FsPolicy>().sandbox {
+        it.string(&a[0])?;
+        return Ok(Value::Nil);
+    }
     let name = it.string(&a[0])?;
     Ok(std::env::var(name).map_or(Value::Nil, |v| Value::str(&v)))
 }

@@ -49,6 +49,14 @@ pub struct Common {
     /// Allow file writes anywhere (default: below the script's and the outputs' directories).
     #[arg(long, global = true)]
     pub allow_fs: bool,
+    // ---- confinement and limits (issue 14) ----
+    /// Confine reads too (script and output directories, files named on the command line,
+    /// --allow-read DIRs); getenv answers nil. For untrusted scripts.
+    #[arg(long, global = true)]
+    pub sandbox: bool,
+    /// Under --sandbox, also allow reading below DIR (repeatable).
+    #[arg(long, global = true, value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
 }
 
 #[derive(Subcommand, Debug)]

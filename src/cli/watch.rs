@@ -25,7 +25,8 @@ pub struct WatchArgs {
 /// One run; returns the files the script read (itself and what it loaded).
 fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
     let mut watched = vec![args.file.clone()];
-    let mut it = match super::run::configured_interp(common) {
+    let policy = super::run::fs_policy(common, Some(&args.file), &args.outputs, &[]);
+    let mut it = match super::run::configured_interp(common, policy) {
         Ok(it) => it,
         Err(m) => {
             eprintln!("error: {m}");
