@@ -235,7 +235,11 @@ fn a_directory_flipped_to_a_symlink_never_lets_a_write_escape() {
     let mut flips = 0u64;
     while child.try_wait().unwrap().is_none() && flips < 200_000 {
         // Atomically replace d: a link to the outside, then back to the real directory.
-        let target = if flips.is_multiple_of(2) { &t.outside } else { &real };
+        let target = if flips.is_multiple_of(2) {
+            &t.outside
+        } else {
+            &real
+        };
         let _ = std::fs::remove_file(&tmp);
         symlink(target, &tmp);
         std::fs::rename(&tmp, &d).unwrap();

@@ -265,13 +265,23 @@ fn list(_: &mut Interp, a: &[Value]) -> LResult {
 }
 
 /// The elements of a proper list, or AutoLISP's error for anything else.
+/// What one cons cell costs the allocator (the cell behind its reference count).
+pub const CONS_BYTES: usize = std::mem::size_of::<crate::lang::value::Cons>() + 16;
+
 pub fn elements(it: &Interp, v: &Value) -> Result<Vec<Value>, Exn> {
     let mut out = Vec::new();
     let mut cur = v;
     loop {
         match cur {
-            Value::Nil => return Ok(out),
+            // Callers build a new list of about this length: reserve its cells up front.
+            Value::Nil => {
+                crate::lang::memory::reserve(out.len().saturating_mul(CONS_BYTES))?;
+                return Ok(out);
+            }
             Value::Cons(c) => {
+                if out.len() % (1 << 16) == (1 << 16) - 1 {
+                    crate::lang::memory::check()?;
+                }
                 out.push(c.car.clone());
                 cur = &c.cdr;
             }

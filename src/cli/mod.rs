@@ -57,6 +57,10 @@ pub struct Common {
     /// Under --sandbox, also allow reading below DIR (repeatable).
     #[arg(long, global = true, value_name = "DIR")]
     pub allow_read: Vec<PathBuf>,
+    /// Memory budget, e.g. 512M or 2G (default: half the physical memory); exceeding it is
+    /// an "out of memory" error. In a batch, every row has the whole budget.
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::lang::memory::parse_size)]
+    pub max_memory: Option<usize>,
 }
 
 #[derive(Subcommand, Debug)]

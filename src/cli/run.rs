@@ -47,6 +47,12 @@ pub fn fs_policy(
 /// An interpreter configured from the common options and a file-system policy; a usage error
 /// message when the answers file cannot be read.
 pub fn configured_interp(common: &Common, policy: FsPolicy) -> Result<Interp, String> {
+    // The budget belongs to the thread that will run the script (each batch row's worker).
+    crate::lang::memory::set_budget(Some(
+        common
+            .max_memory
+            .unwrap_or_else(crate::lang::memory::default_budget),
+    ));
     let mut it = Interp::new();
     it.set_max_steps(common.max_steps);
     *it.ext::<FsPolicy>() = policy;

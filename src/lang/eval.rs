@@ -180,6 +180,9 @@ impl Interp {
         if self.interrupt.swap(false, Ordering::Relaxed) {
             return Err(abort("interrupted"));
         }
+        // Gradual growth (a list consed cell by cell) is caught here; big single requests
+        // at the growth points themselves (`memory::reserve`).
+        super::memory::check()?;
         self.next_check = self.max_steps.min(self.steps + CHECK_EVERY);
         Ok(())
     }

@@ -11,6 +11,7 @@ pub mod error;
 pub mod eval;
 pub mod fastpath;
 pub mod lint;
+pub mod memory;
 pub mod print;
 pub mod reader;
 pub mod symbols;
