@@ -248,7 +248,10 @@ fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
         return Err(err(format!("file {} is not open for reading", f.name)));
     };
     let mut line = String::new();
-    match r.read_line(&mut line) {
+    let read = r.read_line(&mut line);
+    drop(h);
+    it.charge(line.len() as u64)?;
+    match read {
         Ok(0) => Ok(Value::Nil),
         Ok(_) => {
             let trimmed = line.trim_end_matches(['\n', '\r']);
@@ -364,16 +367,35 @@ fn file_directory_p(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(Value::bool(c.path.is_dir()))
 }
 
-/// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive.
-fn glob(pat: &[char], name: &[char]) -> bool {
-    match pat.split_first() {
-        None => name.is_empty(),
-        Some(('*', rest)) => (0..=name.len()).any(|k| glob(rest, &name[k..])),
-        Some((p, rest)) => match name.split_first() {
-            Some((c, tail)) => (*p == '?' || p.eq_ignore_ascii_case(c)) && glob(rest, tail),
-            None => false,
-        },
+/// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive. Two pointers
+/// remembering only the last star (a later star subsumes every choice made for an earlier
+/// one): O(|name| · |pattern|) at worst, so `*a*a*a*a*b` cannot blow up. Returns whether it
+/// matched and the character comparisons made (charged to the step budget).
+fn glob(pat: &[char], name: &[char]) -> (bool, u64) {
+    let (mut p, mut n, mut work) = (0, 0, 0u64);
+    let mut star: Option<(usize, usize)> = None;
+    while n < name.len() {
+        work += 1;
+        match pat.get(p) {
+            Some('*') => {
+                star = Some((p, n));
+                p += 1;
+            }
+            Some(c) if *c == '?' || c.eq_ignore_ascii_case(&name[n]) => {
+                p += 1;
+                n += 1;
+            }
+            _ => match star {
+                Some((sp, sn)) => {
+                    p = sp + 1;
+                    n = sn + 1;
+                    star = Some((sp, sn + 1));
+                }
+                None => return (false, work),
+            },
+        }
     }
+    (pat[p..].iter().all(|c| *c == '*'), work)
 }
 
 fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
@@ -396,21 +418,23 @@ fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
     let Ok(entries) = std::fs::read_dir(&c.path) else {
         return Ok(Value::Nil);
     };
-    let mut names: Vec<String> = entries
-        .filter_map(Result::ok)
-        .filter(|e| {
-            let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
-            match what {
-                -1 => is_dir,
-                1 => !is_dir,
-                _ => true,
-            }
-        })
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| glob(&pattern, &n.chars().collect::<Vec<_>>()))
-        .collect();
+    let mut names: Vec<String> = Vec::new();
+    for e in entries.filter_map(Result::ok) {
+        let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
+        let wanted = match what {
+            -1 => is_dir,
+            1 => !is_dir,
+            _ => true,
+        };
+        let name = e.file_name().to_string_lossy().into_owned();
+        let (hit, work) = glob(&pattern, &name.chars().collect::<Vec<_>>());
+        it.charge(work + 16)?;
+        if wanted && hit {
+            names.push(name);
+        }
+    }
     // Directory listings include "." and ".." in AutoCAD when directories are asked for.
-    if what != 1 && glob(&pattern, &['.']) {
+    if what != 1 && glob(&pattern, &['.']).0 {
         names.push(".".into());
         names.push("..".into());
     }
@@ -459,4 +483,39 @@ fn file_copy(it: &mut Interp, a: &[Value]) -> LResult {
 fn mkdir(it: &mut Interp, a: &[Value]) -> LResult {
     let (_, c) = confined(it, &a[0], Access::Write)?;
     Ok(Value::bool(std::fs::create_dir(&c.path).is_ok()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::glob;
+
+    fn g(p: &str, n: &str) -> bool {
+        glob(
+            &p.chars().collect::<Vec<_>>(),
+            &n.chars().collect::<Vec<_>>(),
+        )
+        .0
+    }
+
+    #[test]
+    fn dos_wildcards() {
+        assert!(g("*", ""));
+        assert!(g("*.LSP", "temple.lsp"));
+        assert!(g("t?mple.*", "TEMPLE.dxf"));
+        assert!(!g("t?mple.*", "tmple.dxf"));
+        assert!(g("*a*b", "xxaxxb"));
+        assert!(!g("*a*b", "xxaxxbx"));
+        assert!(g("a**", "a"));
+        assert!(!g("", "a"));
+        assert!(g("*.*", "."));
+    }
+
+    #[test]
+    fn many_stars_cost_at_most_name_times_pattern() {
+        let pat: Vec<char> = "*a".repeat(20).chars().chain("*b".chars()).collect();
+        let name: Vec<char> = "a".repeat(200).chars().collect();
+        let (hit, work) = glob(&pat, &name);
+        assert!(!hit);
+        assert!(work <= (pat.len() * name.len()) as u64, "{work}");
+    }
 }

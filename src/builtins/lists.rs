@@ -493,7 +493,14 @@ fn vl_list_length(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 /// A stable merge sort by a Lisp predicate; errors from the predicate stop the sort.
+/// n·log2(n) comparisons, charged to the step budget before sorting.
+fn charge_sort(it: &mut Interp, n: usize) -> Result<(), Exn> {
+    let n = n as u64;
+    it.charge(n.saturating_mul(64 - n.leading_zeros() as u64))
+}
+
 fn sort_indices(it: &mut Interp, items: &[Value], less: &Value) -> Result<Vec<usize>, Exn> {
+    charge_sort(it, items.len())?;
     let mut idx: Vec<usize> = (0..items.len()).collect();
     let mut buf = idx.clone();
     let mut width = 1;
@@ -561,6 +568,7 @@ fn vl_sort_i(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn acad_strlsort(it: &mut Interp, a: &[Value]) -> LResult {
     let items = elements(it, &a[0])?;
+    charge_sort(it, items.len())?;
     let mut strs = Vec::with_capacity(items.len());
     for x in &items {
         strs.push(it.string(x)?.to_string());

@@ -316,11 +316,26 @@ fn mesh_surface(it: &mut Interp, a: &[Value]) -> LResult {
                 None | Some(Value::Nil) => chord_tol(it),
                 Some(t) => it.num(t)?,
             };
-            Ok(mesh_value(
-                surface::mesh_surface(&s, tol).map_err(mesh_err)?,
-            ))
+            let m = surface::mesh_surface(&s, tol).map_err(mesh_err)?;
+            charge_mesh(it, &m, tol)?;
+            Ok(mesh_value(m))
         }
     }
+}
+
+/// A mesh's cost: its triangles are charged to the step budget and its memory to the memory
+/// budget, with the tolerance to raise named when either runs out. (The geometry core bounds
+/// the triangles a tolerance can ask for; this keeps a script's many meshes within budget.)
+fn charge_mesh(it: &mut Interp, m: &Mesh, tol: f64) -> Result<(), Exn> {
+    let tris = m.len() as u64;
+    let hint = |e: Exn| {
+        err(format!(
+            "mesh-surface: {tris} triangles at chord tolerance {tol} ({}): raise CHORDTOL or the chord-tol argument",
+            e.message
+        ))
+    };
+    it.charge(tris.saturating_mul(16)).map_err(hint)?;
+    crate::lang::memory::check().map_err(hint)
 }
 
 fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
@@ -332,6 +347,9 @@ fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
         .ext::<crate::builtins::io::FsPolicy>()
         .confine(&path, crate::builtins::io::Access::Read)
         .map_err(err)?;
+    let bytes = std::fs::metadata(&c.path).map_or(0, |m| m.len());
+    it.charge(bytes)?;
+    crate::lang::memory::reserve(usize::try_from(bytes).unwrap_or(usize::MAX))?;
     Ok(mesh_value(mesh::read_mesh(&c.path).map_err(mesh_err)?))
 }
 

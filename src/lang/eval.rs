@@ -169,6 +169,18 @@ impl Interp {
         }
     }
 
+    /// Charges `work` units done inside one builtin (comparisons, characters matched, bytes
+    /// read, triangles made) against the budget: one step per `WORK_PER_STEP` units, so
+    /// `--max-steps` bounds an expensive builtin as it bounds a loop.
+    pub fn charge(&mut self, work: u64) -> Result<(), Exn> {
+        self.steps = self.steps.saturating_add(work / WORK_PER_STEP);
+        if self.steps >= self.next_check {
+            self.slow_tick()
+        } else {
+            Ok(())
+        }
+    }
+
     #[cold]
     fn slow_tick(&mut self) -> Result<(), Exn> {
         if self.steps >= self.max_steps {
@@ -372,6 +384,8 @@ impl Interp {
 }
 
 const CHECK_EVERY: u64 = 4096;
+/// Work units of a builtin per evaluation step (see `Interp::charge`).
+pub const WORK_PER_STEP: u64 = 16;
 
 #[cold]
 fn stack_overflow() -> Exn {
