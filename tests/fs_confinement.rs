@@ -270,6 +270,10 @@ fn the_sandbox_confines_reads_and_hides_the_environment() {
     );
     let o = run(&t, &src, &["--sandbox"], &[]);
     assert_eq!(stdout(&o), "refused refused nil");
+    // A symlink inside pointing at the victim is not followed either.
+    symlink(&t.outside.join("victim"), &t.inside.join("peek"));
+    let o = run(&t, "(princ (open \"peek\" \"r\"))", &["--sandbox"], &[]);
+    assert_eq!(stdout(&o), "nil");
     let o = run(
         &t,
         &src,

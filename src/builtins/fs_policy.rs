@@ -191,8 +191,16 @@ impl FsPolicy {
 
     /// Opens `path` for reading (confined under --sandbox).
     pub fn open_read(&self, path: &Path) -> Result<File, String> {
+        use std::os::unix::fs::OpenOptionsExt;
         let c = self.confine(path, Access::Read)?;
-        File::open(&c.path).map_err(|e| format!("cannot open {}: {e}", path.display()))
+        let mut o = std::fs::OpenOptions::new();
+        o.read(true);
+        if self.sandbox && !self.allow_all && c._dir.is_some() {
+            // A symlink named below a root could lead anywhere: sandboxed reads do not follow.
+            o.custom_flags(libc::O_NOFOLLOW);
+        }
+        o.open(&c.path)
+            .map_err(|e| format!("cannot open {}: {e}", path.display()))
     }
 }
 
