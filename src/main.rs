@@ -1,8 +1,12 @@
 // The interpreter allocates a cons cell per `cons` and runs on its own thread, where glibc's
 // per-thread arena grows in small mprotect steps; mimalloc halves the system time of
 // list-heavy scripts (bench/run-lang.sh, list).
+//
+// Wrapped in a counter of each thread's net allocation: the memory budget (--max-memory)
+// is checked against it (lang/memory.rs).
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: lispcad::lang::memory::Counting<mimalloc::MiMalloc> =
+    lispcad::lang::memory::Counting(mimalloc::MiMalloc);
 
 #[cfg(target_os = "linux")]
 extern "C" {

@@ -140,6 +140,12 @@ fn catch_all_error_message(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn load(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
+    if let Some(p) = it.resolve_path(&name) {
+        let policy = it.ext::<crate::builtins::io::FsPolicy>();
+        policy
+            .confine(&p, crate::builtins::io::Access::Read)
+            .map_err(crate::lang::error::err)?;
+    }
     match it.load_file(&name) {
         Ok(v) => Ok(v),
         Err(e)

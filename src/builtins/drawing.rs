@@ -222,9 +222,19 @@ pub fn output_options(
     Ok(o)
 }
 
+/// Saves through the write policy: the file is replaced atomically in the confined directory.
 fn save_to(it: &mut Interp, path: &Path, opts: &OutputOptions) -> Result<(), Exn> {
+    let c = it
+        .ext::<FsPolicy>()
+        .confine(path, crate::builtins::io::Access::Write)
+        .map_err(err)?;
     let d = drawing(it);
-    crate::output::save(d, path, opts).map_err(|e| err(format!("save {}: {e}", path.display())))
+    crate::output::save(d, &c.path, opts).map_err(|e| {
+        let msg = e
+            .to_string()
+            .replace(&c.path.display().to_string(), &path.display().to_string());
+        err(format!("save {}: {msg}", path.display()))
+    })
 }
 
 fn save(it: &mut Interp, a: &[Value]) -> LResult {
@@ -233,12 +243,6 @@ fn save(it: &mut Interp, a: &[Value]) -> LResult {
         Some(b) if Path::new(&name).is_relative() => b.join(&name),
         _ => PathBuf::from(&name),
     };
-    if !it.ext::<FsPolicy>().may_write(&path) {
-        return Err(err(format!(
-            "file access refused: {} is outside the script and output directories (use --allow-fs)",
-            path.display()
-        )));
-    }
     let opts = output_options(it, None)?;
     save_to(it, &path, &opts)?;
     Ok(a[0].clone())

@@ -127,9 +127,12 @@ fn xstrcase(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn wcmatch(it: &mut Interp, a: &[Value]) -> LResult {
-    let s = it.string(&a[0])?;
-    let p = it.string(&a[1])?;
-    Ok(Value::bool(text::wcmatch(s, p)))
+    let (s, p) = two_strings(it, a)?;
+    // Linear-time matching (see text::wcmatch); charged by the size of the job.
+    let work = (s.len() as u64).saturating_mul(p.matches('*').count() as u64 + 1) + p.len() as u64;
+    let hit = text::wcmatch(s, p);
+    it.charge(work)?;
+    Ok(Value::bool(hit))
 }
 
 fn two_strings<'a>(it: &Interp, a: &'a [Value]) -> Result<(&'a str, &'a str), Exn> {

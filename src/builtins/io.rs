@@ -40,35 +40,31 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("vl-mkdir", "(vl-mkdir dir)", "Creates a directory (where writing is allowed); T, or nil on failure.", 1, 1, mkdir),
 ];
 
-/// Which directories a script may write below.
-#[derive(Default)]
-pub struct FsPolicy {
-    pub allow_all: bool,
-    pub roots: Vec<PathBuf>,
+pub use super::fs_policy::{Access, FsPolicy};
+
+/// An output file is an ordinary file: 0644 before the umask (writers built on `tempfile`
+/// create 0600).
+pub fn make_public(path: &Path) {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mask = current_umask();
+        let _ = std::fs::set_permissions(path, std::fs::Permissions::from_mode(0o644 & !mask));
+    }
 }
 
-impl FsPolicy {
-    /// Whether writing `path` is permitted.
-    pub fn may_write(&self, path: &Path) -> bool {
-        if self.allow_all {
-            return true;
+/// The process umask (read by setting and restoring it: there is no getter before Linux 4.7's
+/// /proc/self/status field, which is read first).
+#[cfg(unix)]
+fn current_umask() -> u32 {
+    if let Ok(s) = std::fs::read_to_string("/proc/self/status") {
+        if let Some(l) = s.lines().find(|l| l.starts_with("Umask:")) {
+            if let Ok(m) = u32::from_str_radix(l[6..].trim(), 8) {
+                return m;
+            }
         }
-        let dir = path.parent().filter(|p| !p.as_os_str().is_empty());
-        let dir = match dir {
-            Some(d) => d.canonicalize(),
-            None => std::env::current_dir(),
-        };
-        let Ok(dir) = dir else { return false };
-        let roots: Vec<PathBuf> = if self.roots.is_empty() {
-            std::env::current_dir().into_iter().collect()
-        } else {
-            self.roots.clone()
-        };
-        roots
-            .iter()
-            .filter_map(|r| r.canonicalize().ok())
-            .any(|r| dir.starts_with(r))
     }
+    0o022
 }
 
 enum Handle {
@@ -176,25 +172,21 @@ fn open(it: &mut Interp, a: &[Value]) -> LResult {
         _ => PathBuf::from(&name),
     };
     let handle = match mode.as_str() {
-        "r" => match File::open(&path) {
-            Ok(f) => Handle::Read(BufReader::new(f)),
-            Err(_) => return Ok(Value::Nil),
-        },
-        "w" | "a" => {
-            if !it.ext::<FsPolicy>().may_write(&path) {
-                return Err(err(format!(
-                    "file access refused: {} is outside the script and output directories (use --allow-fs)",
-                    path.display()
-                )));
+        "r" => {
+            let policy = it.ext::<FsPolicy>();
+            policy.confine(&path, Access::Read).map_err(err)?;
+            match policy.open_read(&path) {
+                Ok(f) => Handle::Read(BufReader::new(f)),
+                Err(_) => return Ok(Value::Nil),
             }
-            let f = std::fs::OpenOptions::new()
-                .write(true)
-                .create(true)
-                .append(mode == "a")
-                .truncate(mode == "w")
-                .open(&path);
-            match f {
+        }
+        "w" | "a" => {
+            let policy = it.ext::<FsPolicy>();
+            // A refusal is an error; a file that cannot be opened is AutoLISP's nil.
+            policy.confine(&path, Access::Write).map_err(err)?;
+            match policy.open_write(&path, mode == "a", false) {
                 Ok(f) => Handle::Write(BufWriter::new(f)),
+                Err(m) if m.starts_with("file access refused") => return Err(err(m)),
                 Err(_) => return Ok(Value::Nil),
             }
         }
@@ -257,10 +249,12 @@ fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
     };
     // Bytes, not a String: a line in the code page (not UTF-8) is decoded, not refused.
     let mut line = Vec::new();
-    match r.read_until(b'\n', &mut line) {
+    let read = r.read_until(b'\n', &mut line);
+    drop(h);
+    it.charge(line.len() as u64)?;
+    match read {
         Ok(0) => Ok(Value::Nil),
         Ok(_) => {
-            drop(h);
             let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
             let text = crate::lang::encoding::decode(&line, code_page);
             Ok(Value::str(text.trim_end_matches(['\n', '\r'])))
@@ -304,7 +298,8 @@ fn write_char(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn findfile(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
-    Ok(match it.resolve_path(&name) {
+    let found = it.resolve_path(&name);
+    Ok(match found.filter(|p| it.ext::<FsPolicy>().may_read(p)) {
         Some(p) => {
             let p = p.canonicalize().unwrap_or(p);
             Value::str(&p.display().to_string())
@@ -322,18 +317,17 @@ fn path_arg(it: &Interp, v: &Value) -> Result<PathBuf, crate::lang::Exn> {
     })
 }
 
-/// The path if the write policy allows it, else AutoLISP-style failure (nil) is not enough:
-/// a refused write is an error naming --allow-fs, as `open` reports it.
-fn writable(it: &mut Interp, v: &Value) -> Result<PathBuf, crate::lang::Exn> {
+/// A path argument the policy lets the script reach for `access`: the confined path to use
+/// (keep it alive during the operation). A refusal is an error naming the option, not
+/// AutoLISP's quiet nil.
+fn confined(
+    it: &mut Interp,
+    v: &Value,
+    access: Access,
+) -> Result<(PathBuf, super::fs_policy::Confined), crate::lang::Exn> {
     let path = path_arg(it, v)?;
-    if it.ext::<FsPolicy>().may_write(&path) {
-        Ok(path)
-    } else {
-        Err(err(format!(
-            "file access refused: {} is outside the script and output directories (use --allow-fs)",
-            path.display()
-        )))
-    }
+    let c = it.ext::<FsPolicy>().confine(&path, access).map_err(err)?;
+    Ok((path, c))
 }
 
 /// Splits "dir/base.ext" the way Visual LISP does: both separators, the last dot of the name.
@@ -362,8 +356,8 @@ fn filename_extension(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn file_size(it: &mut Interp, a: &[Value]) -> LResult {
-    let p = path_arg(it, &a[0])?;
-    Ok(match std::fs::metadata(p) {
+    let (_, c) = confined(it, &a[0], Access::Read)?;
+    Ok(match std::fs::metadata(&c.path) {
         Ok(m) if m.is_dir() => Value::Int(0),
         Ok(m) => Value::Int(i32::try_from(m.len()).unwrap_or(i32::MAX)),
         Err(_) => Value::Nil,
@@ -371,19 +365,39 @@ fn file_size(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn file_directory_p(it: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::bool(path_arg(it, &a[0])?.is_dir()))
+    let (_, c) = confined(it, &a[0], Access::Read)?;
+    Ok(Value::bool(c.path.is_dir()))
 }
 
-/// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive.
-fn glob(pat: &[char], name: &[char]) -> bool {
-    match pat.split_first() {
-        None => name.is_empty(),
-        Some(('*', rest)) => (0..=name.len()).any(|k| glob(rest, &name[k..])),
-        Some((p, rest)) => match name.split_first() {
-            Some((c, tail)) => (*p == '?' || p.eq_ignore_ascii_case(c)) && glob(rest, tail),
-            None => false,
-        },
+/// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive. Two pointers
+/// remembering only the last star (a later star subsumes every choice made for an earlier
+/// one): O(|name| · |pattern|) at worst, so `*a*a*a*a*b` cannot blow up. Returns whether it
+/// matched and the character comparisons made (charged to the step budget).
+fn glob(pat: &[char], name: &[char]) -> (bool, u64) {
+    let (mut p, mut n, mut work) = (0, 0, 0u64);
+    let mut star: Option<(usize, usize)> = None;
+    while n < name.len() {
+        work += 1;
+        match pat.get(p) {
+            Some('*') => {
+                star = Some((p, n));
+                p += 1;
+            }
+            Some(c) if *c == '?' || c.eq_ignore_ascii_case(&name[n]) => {
+                p += 1;
+                n += 1;
+            }
+            _ => match star {
+                Some((sp, sn)) => {
+                    p = sp + 1;
+                    n = sn + 1;
+                    star = Some((sp, sn + 1));
+                }
+                None => return (false, work),
+            },
+        }
     }
+    (pat[p..].iter().all(|c| *c == '*'), work)
 }
 
 fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
@@ -399,24 +413,30 @@ fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
         Some(v) if v.truthy() => it.int(v)?,
         _ => 0,
     };
-    let Ok(entries) = std::fs::read_dir(&dir) else {
+    let c = it
+        .ext::<FsPolicy>()
+        .confine(&dir, Access::Read)
+        .map_err(err)?;
+    let Ok(entries) = std::fs::read_dir(&c.path) else {
         return Ok(Value::Nil);
     };
-    let mut names: Vec<String> = entries
-        .filter_map(Result::ok)
-        .filter(|e| {
-            let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
-            match what {
-                -1 => is_dir,
-                1 => !is_dir,
-                _ => true,
-            }
-        })
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| glob(&pattern, &n.chars().collect::<Vec<_>>()))
-        .collect();
+    let mut names: Vec<String> = Vec::new();
+    for e in entries.filter_map(Result::ok) {
+        let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
+        let wanted = match what {
+            -1 => is_dir,
+            1 => !is_dir,
+            _ => true,
+        };
+        let name = e.file_name().to_string_lossy().into_owned();
+        let (hit, work) = glob(&pattern, &name.chars().collect::<Vec<_>>());
+        it.charge(work + 16)?;
+        if wanted && hit {
+            names.push(name);
+        }
+    }
     // Directory listings include "." and ".." in AutoCAD when directories are asked for.
-    if what != 1 && glob(&pattern, &['.']) {
+    if what != 1 && glob(&pattern, &['.']).0 {
         names.push(".".into());
         names.push("..".into());
     }
@@ -429,44 +449,79 @@ fn file_delete(it: &mut Interp, a: &[Value]) -> LResult {
     if !path_arg(it, &a[0])?.is_file() {
         return Ok(Value::Nil);
     }
-    let p = writable(it, &a[0])?;
-    Ok(Value::bool(p.is_file() && std::fs::remove_file(p).is_ok()))
+    let (_, c) = confined(it, &a[0], Access::Write)?;
+    let is_file = std::fs::symlink_metadata(&c.path).is_ok_and(|m| !m.is_dir());
+    Ok(Value::bool(
+        is_file && std::fs::remove_file(&c.path).is_ok(),
+    ))
 }
 
 fn file_rename(it: &mut Interp, a: &[Value]) -> LResult {
-    let from = writable(it, &a[0])?;
-    let to = writable(it, &a[1])?;
+    let (_, from) = confined(it, &a[0], Access::Write)?;
+    let (_, to) = confined(it, &a[1], Access::Write)?;
+    let exists = |p: &Path| std::fs::symlink_metadata(p).is_ok();
     Ok(Value::bool(
-        from.exists() && !to.exists() && std::fs::rename(from, to).is_ok(),
+        exists(&from.path) && !exists(&to.path) && std::fs::rename(&from.path, &to.path).is_ok(),
     ))
 }
 
 fn file_copy(it: &mut Interp, a: &[Value]) -> LResult {
-    let from = path_arg(it, &a[0])?;
-    let to = writable(it, &a[1])?;
+    let (_, src) = confined(it, &a[0], Access::Read)?;
+    let to = path_arg(it, &a[1])?;
     let append = a.get(2).is_some_and(Value::truthy);
-    let Ok(data) = std::fs::read(&from) else {
+    let policy = it.ext::<FsPolicy>().clone();
+    policy.confine(&to, Access::Write).map_err(err)?;
+    let Ok(data) = std::fs::read(&src.path) else {
         return Ok(Value::Nil);
     };
     // AutoCAD refuses to overwrite: copying onto an existing file fails unless appending.
-    let opened = if append {
-        std::fs::OpenOptions::new()
-            .append(true)
-            .create(true)
-            .open(&to)
-    } else {
-        std::fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&to)
+    let opened = match policy.open_write(&to, append, !append) {
+        Ok(f) => f,
+        Err(m) if m.starts_with("file access refused") => return Err(err(m)),
+        Err(_) => return Ok(Value::Nil),
     };
-    Ok(match opened.and_then(|mut f| f.write_all(&data)) {
+    Ok(match (&opened).write_all(&data) {
         Ok(()) => Value::Int(i32::try_from(data.len()).unwrap_or(i32::MAX)),
         Err(_) => Value::Nil,
     })
 }
 
 fn mkdir(it: &mut Interp, a: &[Value]) -> LResult {
-    let p = writable(it, &a[0])?;
-    Ok(Value::bool(std::fs::create_dir(p).is_ok()))
+    let (_, c) = confined(it, &a[0], Access::Write)?;
+    Ok(Value::bool(std::fs::create_dir(&c.path).is_ok()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::glob;
+
+    fn g(p: &str, n: &str) -> bool {
+        glob(
+            &p.chars().collect::<Vec<_>>(),
+            &n.chars().collect::<Vec<_>>(),
+        )
+        .0
+    }
+
+    #[test]
+    fn dos_wildcards() {
+        assert!(g("*", ""));
+        assert!(g("*.LSP", "temple.lsp"));
+        assert!(g("t?mple.*", "TEMPLE.dxf"));
+        assert!(!g("t?mple.*", "tmple.dxf"));
+        assert!(g("*a*b", "xxaxxb"));
+        assert!(!g("*a*b", "xxaxxbx"));
+        assert!(g("a**", "a"));
+        assert!(!g("", "a"));
+        assert!(g("*.*", "."));
+    }
+
+    #[test]
+    fn many_stars_cost_at_most_name_times_pattern() {
+        let pat: Vec<char> = "*a".repeat(20).chars().chain("*b".chars()).collect();
+        let name: Vec<char> = "a".repeat(200).chars().collect();
+        let (hit, work) = glob(&pat, &name);
+        assert!(!hit);
+        assert!(work <= (pat.len() * name.len()) as u64, "{work}");
+    }
 }

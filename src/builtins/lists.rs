@@ -266,13 +266,23 @@ fn list(_: &mut Interp, a: &[Value]) -> LResult {
 }
 
 /// The elements of a proper list, or AutoLISP's error for anything else.
+/// What one cons cell costs the allocator (the cell behind its reference count).
+pub const CONS_BYTES: usize = std::mem::size_of::<crate::lang::value::Cons>() + 16;
+
 pub fn elements(it: &Interp, v: &Value) -> Result<Vec<Value>, Exn> {
     let mut out = Vec::new();
     let mut cur = v;
     loop {
         match cur {
-            Value::Nil => return Ok(out),
+            // Callers build a new list of about this length: reserve its cells up front.
+            Value::Nil => {
+                crate::lang::memory::reserve(out.len().saturating_mul(CONS_BYTES))?;
+                return Ok(out);
+            }
             Value::Cons(c) => {
+                if out.len() % (1 << 16) == (1 << 16) - 1 {
+                    crate::lang::memory::check()?;
+                }
                 out.push(c.car.clone());
                 cur = &c.cdr;
             }
@@ -495,7 +505,14 @@ fn vl_list_length(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 /// A stable merge sort by a Lisp predicate; errors from the predicate stop the sort.
+/// n·log2(n) comparisons, charged to the step budget before sorting.
+fn charge_sort(it: &mut Interp, n: usize) -> Result<(), Exn> {
+    let n = n as u64;
+    it.charge(n.saturating_mul(64 - n.leading_zeros() as u64))
+}
+
 fn sort_indices(it: &mut Interp, items: &[Value], less: &Value) -> Result<Vec<usize>, Exn> {
+    charge_sort(it, items.len())?;
     let mut idx: Vec<usize> = (0..items.len()).collect();
     let mut buf = idx.clone();
     let mut width = 1;
@@ -563,6 +580,7 @@ fn vl_sort_i(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn acad_strlsort(it: &mut Interp, a: &[Value]) -> LResult {
     let items = elements(it, &a[0])?;
+    charge_sort(it, items.len())?;
     let mut strs = Vec::with_capacity(items.len());
     for x in &items {
         strs.push(it.string(x)?.to_string());

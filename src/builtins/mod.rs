@@ -9,6 +9,7 @@ pub mod control;
 pub mod drawing;
 pub mod entities;
 pub mod format;
+pub mod fs_policy;
 pub mod geom2d;
 pub mod geometry;
 pub mod input;

@@ -82,8 +82,22 @@ pub static BUILTINS: &[Builtin] = &[
     ),
 ];
 
+/// AutoLISP's string length limit: `strlen` answers a 32-bit integer.
+const MAX_STRING: usize = i32::MAX as usize;
+
 fn strcat(it: &mut Interp, a: &[Value]) -> LResult {
-    let mut s = String::new();
+    let mut len = 0usize;
+    for x in a {
+        len = len.saturating_add(it.string(x)?.len());
+    }
+    if len > MAX_STRING {
+        return Err(err(format!(
+            "string too long: {len} bytes (strings hold at most {MAX_STRING})"
+        )));
+    }
+    // Twice: the text is built, then copied into the value.
+    crate::lang::memory::reserve(len.saturating_mul(2))?;
+    let mut s = String::with_capacity(len);
     for x in a {
         s.push_str(it.string(x)?);
     }
@@ -91,11 +105,15 @@ fn strcat(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn strlen(it: &mut Interp, a: &[Value]) -> LResult {
-    let mut n = 0;
+    let mut n = 0usize;
     for x in a {
         n += it.string(x)?.chars().count();
     }
-    Ok(Value::Int(n as i32))
+    i32::try_from(n).map(Value::Int).map_err(|_| {
+        err(format!(
+            "string too long: {n} characters (strlen counts to {MAX_STRING})"
+        ))
+    })
 }
 
 fn ascii(it: &mut Interp, a: &[Value]) -> LResult {
@@ -155,6 +173,7 @@ fn prin1_to_string(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn string_to_list(it: &mut Interp, a: &[Value]) -> LResult {
     let s = it.string(&a[0])?;
+    crate::lang::memory::reserve(s.len().saturating_mul(super::lists::CONS_BYTES))?;
     Ok(Value::list(
         s.chars().map(|c| Value::Int(c as i32)).collect::<Vec<_>>(),
     ))

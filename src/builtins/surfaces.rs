@@ -387,11 +387,26 @@ fn mesh_surface(it: &mut Interp, a: &[Value]) -> LResult {
                 None | Some(Value::Nil) => chord_tol(it),
                 Some(t) => it.num(t)?,
             };
-            Ok(mesh_value(
-                surface::mesh_surface(&s, tol).map_err(mesh_err)?,
-            ))
+            let m = surface::mesh_surface(&s, tol).map_err(mesh_err)?;
+            charge_mesh(it, &m, tol)?;
+            Ok(mesh_value(m))
         }
     }
+}
+
+/// A mesh's cost: its triangles are charged to the step budget and its memory to the memory
+/// budget, with the tolerance to raise named when either runs out. (The geometry core bounds
+/// the triangles a tolerance can ask for; this keeps a script's many meshes within budget.)
+fn charge_mesh(it: &mut Interp, m: &Mesh, tol: f64) -> Result<(), Exn> {
+    let tris = m.len() as u64;
+    let hint = |e: Exn| {
+        err(format!(
+            "mesh-surface: {tris} triangles at chord tolerance {tol} ({}): raise CHORDTOL or the chord-tol argument",
+            e.message
+        ))
+    };
+    it.charge(tris.saturating_mul(16)).map_err(hint)?;
+    crate::lang::memory::check().map_err(hint)
 }
 
 fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
@@ -399,7 +414,14 @@ fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
     let path = it
         .resolve_path(&name)
         .ok_or_else(|| err(format!("mesh-read: cannot find \"{name}\"")))?;
-    Ok(mesh_value(mesh::read_mesh(&path).map_err(mesh_err)?))
+    let c = it
+        .ext::<crate::builtins::io::FsPolicy>()
+        .confine(&path, crate::builtins::io::Access::Read)
+        .map_err(err)?;
+    let bytes = std::fs::metadata(&c.path).map_or(0, |m| m.len());
+    it.charge(bytes)?;
+    crate::lang::memory::reserve(usize::try_from(bytes).unwrap_or(usize::MAX))?;
+    Ok(mesh_value(mesh::read_mesh(&c.path).map_err(mesh_err)?))
 }
 
 fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {
@@ -409,12 +431,13 @@ fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {
         Some(b) if std::path::Path::new(&name).is_relative() => b.join(&name),
         _ => std::path::PathBuf::from(&name),
     };
-    if !it.ext::<crate::builtins::io::FsPolicy>().may_write(&path) {
-        return Err(err(format!(
-            "file access refused: {name} is outside the script and output directories (use --allow-fs)"
-        )));
-    }
-    mesh::write_mesh(&m, &path).map_err(mesh_err)?;
+    // Written through the confined directory; the file is created 0644 like every output.
+    let c = it
+        .ext::<crate::builtins::io::FsPolicy>()
+        .confine(&path, crate::builtins::io::Access::Write)
+        .map_err(err)?;
+    mesh::write_mesh(&m, &c.path).map_err(mesh_err)?;
+    crate::builtins::io::make_public(&c.path);
     Ok(a[1].clone())
 }
 

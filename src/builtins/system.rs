@@ -476,6 +476,11 @@ fn doc_ref(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn getenv(it: &mut Interp, a: &[Value]) -> LResult {
+    // A sandboxed script learns nothing of the environment (tokens, home, paths).
+    if it.ext::<crate::builtins::io::FsPolicy>().sandbox {
+        it.string(&a[0])?;
+        return Ok(Value::Nil);
+    }
     let name = it.string(&a[0])?;
     if let Some(v) = super::settings::read(&format!("env\t{name}")) {
         return Ok(Value::str(&v));

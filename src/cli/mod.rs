@@ -66,6 +66,18 @@ pub struct Common {
     /// Read damaged DXF files leniently (skip bad groups), saying when it was needed.
     #[arg(long, global = true)]
     pub recover: bool,
+    // ---- confinement and limits (issue 14) ----
+    /// Confine reads too (script and output directories, files named on the command line,
+    /// --allow-read DIRs); getenv answers nil. For untrusted scripts.
+    #[arg(long, global = true)]
+    pub sandbox: bool,
+    /// Under --sandbox, also allow reading below DIR (repeatable).
+    #[arg(long, global = true, value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
+    /// Memory budget, e.g. 512M or 2G (default: half the physical memory); exceeding it is
+    /// an "out of memory" error. In a batch, every row has the whole budget.
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::lang::memory::parse_size)]
+    pub max_memory: Option<usize>,
 }
 
 impl From<&Common> for crate::builtins::drawing::OutputOverrides {

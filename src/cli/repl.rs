@@ -105,7 +105,10 @@ fn completion_names(it: &Interp) -> Vec<String> {
 }
 
 pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
-    let mut it = match super::run::configured_interp(common) {
+    // The first file is the script: its directory is the write root (without one, the
+    // current directory); every file given is readable under --sandbox.
+    let policy = super::run::fs_policy(common, files.first().map(PathBuf::as_path), &[], files);
+    let mut it = match super::run::configured_interp(common, policy) {
         Ok(it) => it,
         Err(msg) => {
             eprintln!("error: {msg}");

@@ -22,12 +22,40 @@ pub struct RunArgs {
     pub set: Vec<String>,
 }
 
-/// An interpreter configured from the common options; a usage error message when the answers
-/// file cannot be read.
-pub fn configured_interp(common: &Common) -> Result<Interp, String> {
+/// The file-system policy of a run, built once from the script's and the outputs' directories
+/// (the write roots) and the options; `named` are the other files named on the command line
+/// (readable under --sandbox).
+pub fn fs_policy(
+    common: &Common,
+    script: Option<&Path>,
+    outputs: &[PathBuf],
+    named: &[PathBuf],
+) -> FsPolicy {
+    let mut p = FsPolicy::for_script(script, outputs);
+    p.allow_all = common.allow_fs;
+    p.sandbox = common.sandbox;
+    p.read_roots = common.allow_read.clone();
+    p.read_files = script
+        .map(Path::to_path_buf)
+        .into_iter()
+        .chain(named.iter().cloned())
+        .chain(common.answers.iter().cloned())
+        .collect();
+    p
+}
+
+/// An interpreter configured from the common options and a file-system policy; a usage error
+/// message when the answers file cannot be read.
+pub fn configured_interp(common: &Common, policy: FsPolicy) -> Result<Interp, String> {
+    // The budget belongs to the thread that will run the script (each batch row's worker).
+    crate::lang::memory::set_budget(Some(
+        common
+            .max_memory
+            .unwrap_or_else(crate::lang::memory::default_budget),
+    ));
     let mut it = crate::builtins::new_interp();
     it.set_max_steps(common.max_steps);
-    it.ext::<FsPolicy>().allow_all = common.allow_fs;
+    *it.ext::<FsPolicy>() = policy;
     if let Some(path) = &common.answers {
         let text = std::fs::read_to_string(path)
             .map_err(|e| format!("cannot read the answers file {}: {e}", path.display()))?;
@@ -74,7 +102,9 @@ pub fn run(args: &RunArgs, common: &Common) -> i32 {
         eprintln!("error: {msg}");
         return EXIT_USAGE;
     }
-    let mut it = match configured_interp(common) {
+    let named: Vec<PathBuf> = common.open.iter().cloned().collect();
+    let policy = fs_policy(common, Some(&args.file), &args.outputs, &named);
+    let mut it = match configured_interp(common, policy) {
         Ok(it) => it,
         Err(msg) => {
             eprintln!("error: {msg}");
@@ -85,8 +115,6 @@ pub fn run(args: &RunArgs, common: &Common) -> i32 {
         eprintln!("error: {msg}");
         return EXIT_SCRIPT_ERROR;
     }
-    let roots = script_roots(&args.file, &args.outputs);
-    it.ext::<FsPolicy>().roots = roots;
     if let Err(msg) =
         check_sets(&args.file, &args.set).and_then(|()| apply_sets(&mut it, &args.set))
     {
@@ -135,13 +163,6 @@ pub fn check_sets(file: &Path, sets: &[String]) -> Result<(), String> {
     super::params::script_names(file)?.check_sets(sets)
 }
 
-/// The directories a script may write below: its own and each output's.
-pub fn script_roots(file: &Path, outputs: &[PathBuf]) -> Vec<PathBuf> {
-    std::iter::once(parent_dir(file))
-        .chain(outputs.iter().map(|o| parent_dir(o)))
-        .collect()
-}
-
 /// The directory a file is in ("." for a bare file name).
 pub fn parent_dir(p: &Path) -> PathBuf {
     match p.parent() {
@@ -151,7 +172,7 @@ pub fn parent_dir(p: &Path) -> PathBuf {
 }
 
 pub fn eval_expr(expr: &str, sets: &[String], common: &Common) -> i32 {
-    let mut it = match configured_interp(common) {
+    let mut it = match configured_interp(common, fs_policy(common, None, &[], &[])) {
         Ok(it) => it,
         Err(msg) => {
             eprintln!("error: {msg}");

@@ -27,7 +27,8 @@ fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
     let mut watched = vec![args.file.clone()];
     // The drawing the script starts from is an input too: a change to it re-runs.
     watched.extend(common.open.iter().cloned());
-    let mut it = match super::run::configured_interp(common) {
+    let policy = super::run::fs_policy(common, Some(&args.file), &args.outputs, &watched[1..]);
+    let mut it = match super::run::configured_interp(common, policy) {
         Ok(it) => it,
         Err(m) => {
             eprintln!("error: {m}");

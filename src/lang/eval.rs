@@ -197,6 +197,18 @@ impl Interp {
         }
     }
 
+    /// Charges `work` units done inside one builtin (comparisons, characters matched, bytes
+    /// read, triangles made) against the budget: one step per `WORK_PER_STEP` units, so
+    /// `--max-steps` bounds an expensive builtin as it bounds a loop.
+    pub fn charge(&mut self, work: u64) -> Result<(), Exn> {
+        self.steps = self.steps.saturating_add(work / WORK_PER_STEP);
+        if self.steps >= self.next_check {
+            self.slow_tick()
+        } else {
+            Ok(())
+        }
+    }
+
     #[cold]
     fn slow_tick(&mut self) -> Result<(), Exn> {
         if self.steps >= self.max_steps {
@@ -208,6 +220,9 @@ impl Interp {
         if self.interrupt.swap(false, Ordering::Relaxed) {
             return Err(abort("interrupted"));
         }
+        // Gradual growth (a list consed cell by cell) is caught here; big single requests
+        // at the growth points themselves (`memory::reserve`).
+        super::memory::check()?;
         self.next_check = self.max_steps.min(self.steps + CHECK_EVERY);
         Ok(())
     }
@@ -397,6 +412,8 @@ impl Interp {
 }
 
 const CHECK_EVERY: u64 = 4096;
+/// Work units of a builtin per evaluation step (see `Interp::charge`).
+pub const WORK_PER_STEP: u64 = 16;
 
 #[cold]
 fn stack_overflow() -> Exn {

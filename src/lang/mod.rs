@@ -16,6 +16,7 @@ pub mod escape;
 pub mod eval;
 pub mod fastpath;
 pub mod lint;
+pub mod memory;
 pub mod print;
 pub mod program;
 pub mod reader;

@@ -11,7 +11,6 @@ use std::sync::{Arc, Mutex};
 
 use super::sink::Sink;
 use super::source::{Cell, Row};
-use crate::builtins::io::FsPolicy;
 use crate::cli::{diag, Common};
 use crate::lang::compile::Compiler;
 use crate::lang::reader::{parse_number, read_one, read_source, Parsed};
@@ -91,7 +90,8 @@ impl Runner<'_> {
 
     /// A fresh interpreter for `row`: options, write roots, `--set` and the row's bindings.
     fn interp(&self, syms: &SymbolTable, row: &Row, paths: &[PathBuf]) -> Result<Interp, String> {
-        let mut it = crate::cli::run::configured_interp(self.common)?;
+        let policy = crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &[]);
+        let mut it = crate::cli::run::configured_interp(self.common, policy)?;
         // Rows run in parallel: none of them may wait on the terminal.
         it.ext::<crate::builtins::input::InputState>().no_terminal = true;
         it.syms = syms.clone();
@@ -99,7 +99,6 @@ impl Runner<'_> {
         it.add_source(self.name, self.text);
         it.base_dir = Some(self.script_dir.clone());
         it.out = Box::new(std::io::sink());
-        it.ext::<FsPolicy>().roots = crate::cli::run::script_roots(self.script_path, paths);
         crate::cli::run::apply_sets(&mut it, self.sets)?;
         for (k, c) in &row.values {
             let v = cell_value(&mut it, c);
