@@ -72,6 +72,29 @@ pub fn transform_entity(k: &EntityKind, m: &DMat4) -> Result<EntityKind, String>
                 closed: *closed,
             }
         }
+        EntityKind::Ellipse {
+            center,
+            major,
+            normal,
+            ratio,
+            start,
+            end,
+        } => {
+            // The normal maps by the cofactor (det · M⁻ᵀ): then minor = normal × major maps
+            // onto itself and the parameters stay, mirror included.
+            let n = (lin.inverse().transpose() * *normal) * lin.determinant();
+            EntityKind::Ellipse {
+                center: pt(center),
+                major: lin * *major,
+                normal: n.normalize(),
+                ratio: *ratio,
+                start: *start,
+                end: *end,
+            }
+        }
+        EntityKind::Unmodelled { dxf_type } => {
+            return Err(format!("cannot transform a {dxf_type} entity yet"))
+        }
         EntityKind::Circle { .. } | EntityKind::Arc { .. } | EntityKind::LwPolyline { .. } => {
             let c = entity_curve(k)
                 .ok_or("not a curve")?

@@ -139,7 +139,9 @@ pub fn snapshot(it: &mut Interp) -> Result<(Drawing, OutputOptions), Failure> {
 /// One run of the script in a fresh interpreter; the files it read (itself and its loads).
 fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> {
     let mut read = vec![args.file.clone()];
-    let mut it = match super::run::configured_interp(common) {
+    let named: Vec<PathBuf> = common.open.iter().cloned().collect();
+    let policy = super::run::fs_policy(common, Some(&args.file), &[], &named);
+    let mut it = match super::run::configured_interp(common, policy) {
         Ok(it) => it,
         Err(m) => {
             shared.publish(Err(Failure {
@@ -149,7 +151,6 @@ fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> 
             return read;
         }
     };
-    it.ext::<crate::builtins::io::FsPolicy>().roots = super::run::script_roots(&args.file, &[]);
     if let Err(m) = super::run::apply_sets(&mut it, &args.set) {
         shared.publish(Err(Failure {
             message: m,
