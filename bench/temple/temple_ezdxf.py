@@ -40,10 +40,12 @@ DEFAULTS = {
     "HINGEW": 5.0,  # width at the hinge end
     "MINW": 3.5,  # slimmest width (at 0.7 L1)
     "TIPW": 7.0,  # width of the tip
+    "TIPR": 2.0,  # radius of the rounded ear tip
     "BASEX": 0.0,
     "BASEY": 0.0,
 }
 TOL = 1e-6  # GEOMTOL x 1000
+SMOOTH_TOL = 0.05  # the smooth refit scripts/temple.lsp uses
 SAMPLES = 8  # per interval while refining
 VERIFY = 32  # per interval when verifying the result
 MAX_ROUNDS = 48
@@ -105,6 +107,25 @@ def outline_points(p):
     pts = [
         (0.0, -h0), (0.04 * l1, -h0), (0.35 * l1, -hq), (0.7 * l1, -hm), (0.9 * l1, -ht),
         (l1, 0.0),
+        (0.9 * l1, ht), (0.7 * l1, hm), (0.35 * l1, hq), (0.04 * l1, h0), (0.0, h0),
+    ]
+    return [(bx + x, by + y) for x, y in pts]
+
+
+def script_points(p):
+    """The 15 type-value points of scripts/temple.lsp: straight hinge butt, tip rounded on TIPR."""
+    l1, r = p["L1"], p["TIPR"]
+    h0, hm, ht = p["HINGEW"] / 2, p["MINW"] / 2, p["TIPW"] / 2
+    hq = hm + 0.3 * (h0 - hm)
+    bx, by = p["BASEX"], p["BASEY"]
+
+    def tip(deg):
+        a = math.pi * (deg / 180.0)
+        return (l1 - r + r * math.cos(a), r * math.sin(a))
+
+    pts = [
+        (0.0, -h0), (0.04 * l1, -h0), (0.35 * l1, -hq), (0.7 * l1, -hm), (0.9 * l1, -ht),
+        tip(-80.0), tip(-40.0), tip(0.0), tip(40.0), tip(80.0),
         (0.9 * l1, ht), (0.7 * l1, hm), (0.35 * l1, hq), (0.04 * l1, h0), (0.0, h0),
     ]
     return [(bx + x, by + y) for x, y in pts]
@@ -676,10 +697,10 @@ def write_svg(path, segs, center, notes, base):
 
 
 def run_variant(params, stem):
-    pts = outline_points(params)
+    pts = script_points(params)
     segs = interpolate_closed(pts)
     bend = Bend(params)
-    bent, dev, added = bend_outline(segs, len(pts), bend)
+    bent, dev, added = bend_outline(segs, len(pts), bend, SMOOTH_TOL)
     # The same three TEXT lines as scripts/temple.lsp (rtos modes 2 and 1).
     notes = [
         f"L1 {params['L1']:.1f}  L2 {params['L2']:.1f}  R {params['R']:.1f}  "
