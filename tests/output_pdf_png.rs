@@ -117,7 +117,10 @@ fn check_true_scale(dir: &Path, script: &str, unit_mm: f64, insunits: i64) {
     let value: f64 = width.strip_suffix(unit).expect(width).parse().unwrap();
     let expect_mm = w_mm - STROKE_MM + 2.0 * 5.0; // CUT is the widest layer here
     let got_mm = value * if insunits == 1 { 25.4 } else { 1.0 };
-    assert!(got_mm >= expect_mm - 0.3, "SVG width {width}, CUT alone needs {expect_mm} mm");
+    assert!(
+        got_mm >= expect_mm - 0.3,
+        "SVG width {width}, CUT alone needs {expect_mm} mm"
+    );
 }
 
 #[test]

@@ -229,6 +229,12 @@ fn clear_drawing(it: &mut Interp, _: &[Value]) -> LResult {
     Ok(Value::Nil)
 }
 
+/// The drawing as SVG with the run's writer options (a row of a contact sheet).
+pub fn drawing_svg(it: &mut Interp, common: &crate::cli::Common) -> Result<String, String> {
+    let opts = output_options(it, Some(common)).map_err(|e| e.message.clone())?;
+    Ok(crate::output::svg::write_svg(drawing(it), &opts))
+}
+
 /// Writes the drawing to each output path after a run (`-o`); nothing is written for a run
 /// that failed, and each file appears whole or not at all.
 pub fn write_outputs(

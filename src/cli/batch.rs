@@ -47,6 +47,9 @@ pub struct BatchArgs {
     /// Bind a global for every row: NAME=VALUE.
     #[arg(long = "set", value_name = "NAME=VALUE")]
     pub set: Vec<String>,
+    /// Also write one contact sheet of every row's drawing, labelled (.pdf or .svg).
+    #[arg(long, value_name = "FILE")]
+    pub sheet: Option<PathBuf>,
 }
 
 /// One row: (variable name, value text as written) pairs.
@@ -330,9 +333,9 @@ thread_local! {
     static PARSED: RefCell<Option<(SymbolTable, Parsed)>> = const { RefCell::new(None) };
 }
 
-/// What one row did.
+/// What one row did (with its drawing as SVG when a contact sheet is wanted).
 enum Outcome {
-    Ok,
+    Ok(Option<String>),
     Failed(String),
 }
 
@@ -345,6 +348,7 @@ struct Job<'a> {
     sets: &'a [String],
     stop: &'a AtomicBool,
     interrupts: &'a Mutex<Vec<Arc<AtomicBool>>>,
+    sheet: bool,
 }
 
 impl Job<'_> {
@@ -403,9 +407,15 @@ impl Job<'_> {
                     }
                 }
             }
-            match crate::builtins::write_outputs(&mut it, outputs, self.common) {
-                Ok(()) => Outcome::Ok,
-                Err(m) => Outcome::Failed(m),
+            if let Err(m) = crate::builtins::write_outputs(&mut it, outputs, self.common) {
+                return Outcome::Failed(m);
+            }
+            match self.sheet {
+                true => match crate::builtins::drawing_svg(&mut it, self.common) {
+                    Ok(svg) => Outcome::Ok(Some(svg)),
+                    Err(m) => Outcome::Failed(m),
+                },
+                false => Outcome::Ok(None),
             }
         })
     }
@@ -455,7 +465,7 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
                 }
             }
         }
-        if let Err(m) = super::check_output_formats(&outs) {
+        if let Err(m) = super::check_output_formats(&outs).and(check_sheet(&args.sheet)) {
             eprintln!("error: {m}");
             return EXIT_USAGE;
         }
@@ -512,6 +522,7 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
         sets: &args.set,
         stop: &stop,
         interrupts: &interrupts,
+        sheet: args.sheet.is_some(),
     };
     let total = rows.len();
     let tty = std::io::stderr().is_terminal();
@@ -529,6 +540,7 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
     };
     let done = AtomicUsize::new(0);
     let failed = Mutex::new(Vec::<usize>::new());
+    let sheet_rows = Mutex::new(Vec::new());
     let start = Instant::now();
     pool.install(|| {
         rows.par_iter()
@@ -541,8 +553,22 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
                 let n = i + 1;
                 let outcome = job.run_row(row, outs);
                 let k = done.fetch_add(1, Ordering::Relaxed) + 1;
+                if let Outcome::Ok(Some(svg)) = &outcome {
+                    let name = row
+                        .values
+                        .iter()
+                        .find(|(k, _)| k.eq_ignore_ascii_case("name"));
+                    let label = match name {
+                        Some((_, c)) => format!("{n}: {}", c.text),
+                        None => format!("{n}: {}", describe(row)),
+                    };
+                    sheet_rows
+                        .lock()
+                        .expect("lock")
+                        .push((n, label, svg.clone()));
+                }
                 let line = match &outcome {
-                    Outcome::Ok => format!(
+                    Outcome::Ok(_) => format!(
                         "row {n}/{total} ok: {}",
                         outs.iter()
                             .map(|o| o.display().to_string())
@@ -567,6 +593,12 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
     });
     if let Some(b) = &bar {
         b.finish_and_clear();
+    }
+    if let Some(path) = &args.sheet {
+        if let Err(m) = write_sheet(path, sheet_rows.into_inner().unwrap_or_default()) {
+            eprintln!("error: {m}");
+            return EXIT_SCRIPT_ERROR;
+        }
     }
     let mut failed = failed.into_inner().unwrap_or_default();
     failed.sort_unstable();
@@ -596,6 +628,28 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
     } else {
         EXIT_SCRIPT_ERROR
     }
+}
+
+/// A usage error unless the sheet (if any) is .svg or .pdf.
+fn check_sheet(sheet: &Option<PathBuf>) -> Result<(), String> {
+    use crate::output::Format;
+    match sheet.as_deref().map(Format::from_path) {
+        None | Some(Ok(Format::Svg | Format::Pdf)) => Ok(()),
+        Some(_) => Err("--sheet: the contact sheet must be a .svg or .pdf file".into()),
+    }
+}
+
+/// The contact sheet of the rows that ran, in row order.
+fn write_sheet(path: &Path, mut rows: Vec<(usize, String, String)>) -> Result<(), String> {
+    rows.sort_by_key(|r| r.0);
+    let rows: Vec<_> = rows
+        .into_iter()
+        .map(|(_, label, svg)| crate::output::sheet::SheetRow { label, svg })
+        .collect();
+    let format = crate::output::Format::from_path(path).map_err(|e| e.to_string())?;
+    let bytes = crate::output::sheet::compose(&rows, format).map_err(|e| e.to_string())?;
+    crate::output::atomic::write_atomic(path, &bytes)
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 
 fn describe(row: &Row) -> String {

@@ -11,6 +11,7 @@ pub mod dxf_writer;
 pub mod entity;
 pub mod pdf;
 pub mod png;
+pub mod sheet;
 pub mod svg;
 
 use std::path::Path;
