@@ -5,6 +5,7 @@ pub mod aci;
 pub mod atomic;
 pub mod biarc;
 pub mod cam;
+pub mod cam_tidy;
 pub mod drawing;
 pub mod dxf;
 pub mod dxf_writer;
