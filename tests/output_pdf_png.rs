@@ -180,10 +180,16 @@ fn unknown_output_extension_is_a_usage_error_before_the_run() {
     assert!(String::from_utf8_lossy(&o.stderr).contains("x.jpg"));
     assert!(!dir.path().join("ran.txt").exists(), "the script ran");
     let o = cli::lispcad_in(dir.path(), &["run", "w.lsp", "--dpi", "0", "-o", "x.png"]);
+    assert_eq!(o.status.code(), Some(2), "a bad --dpi is a usage error");
+    assert!(!dir.path().join("ran.txt").exists(), "the script ran");
+    let o = cli::lispcad_in(
+        dir.path(),
+        &["run", "w.lsp", "--cam-min-seg", "-1", "-o", "x.dxf"],
+    );
     assert_eq!(
         o.status.code(),
-        Some(1),
-        "a bad --dpi is reported when writing"
+        Some(2),
+        "a bad --cam-min-seg is a usage error"
     );
 }
 

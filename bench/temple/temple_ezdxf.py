@@ -652,6 +652,31 @@ def write_dxf(path, segs, center, notes, base):
     tmp = path + ".tmp"
     doc.saveas(tmp)
     os.replace(tmp, path)
+    return doc
+
+
+def write_pdf(path, doc):
+    """The drawing through ezdxf's drawing add-on and matplotlib's PDF backend (the peer of
+    `lispcad -o x.pdf`); the figure is sized to the extents so the page is at 1:1."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from ezdxf import bbox
+    from ezdxf.addons.drawing import Frontend, RenderContext
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+
+    ext = bbox.extents(doc.modelspace())
+    margin = 5.0
+    w, h = ext.size.x + 2 * margin, ext.size.y + 2 * margin
+    fig = plt.figure(figsize=(w / 25.4, h / 25.4))
+    ax = fig.add_axes([0, 0, 1, 1])
+    ax.set_xlim(ext.extmin.x - margin, ext.extmax.x + margin)
+    ax.set_ylim(ext.extmin.y - margin, ext.extmax.y + margin)
+    Frontend(RenderContext(doc), MatplotlibBackend(ax)).draw_layout(doc.modelspace(), finalize=False)
+    tmp = path + ".tmp.pdf"
+    fig.savefig(tmp, format="pdf")
+    plt.close(fig)
+    os.replace(tmp, path)
 
 
 def write_svg(path, segs, center, notes, base):
@@ -696,7 +721,7 @@ def write_svg(path, segs, center, notes, base):
     os.replace(tmp, path)
 
 
-def run_variant(params, stem):
+def run_variant(params, stem, pdf=False):
     pts = script_points(params)
     segs = interpolate_closed(pts)
     bend = Bend(params)
@@ -710,8 +735,11 @@ def run_variant(params, stem):
     ]
     center = bend.centerline()
     base = (params["BASEX"], params["BASEY"])
-    write_dxf(stem + ".dxf", bent, center, notes, base)
-    write_svg(stem + ".svg", bent, center, notes, base)
+    doc = write_dxf(stem + ".dxf", bent, center, notes, base)
+    if pdf:
+        write_pdf(stem + ".pdf", doc)
+    else:
+        write_svg(stem + ".svg", bent, center, notes, base)
     return dev, added
 
 
@@ -736,6 +764,7 @@ def main():
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE override")
     ap.add_argument("-o", "--out", default="out-py", help="output directory")
     ap.add_argument("--write-csv", help="write the built-in sweep as a CSV table and exit")
+    ap.add_argument("--pdf", action="store_true", help="DXF + PDF (matplotlib) instead of DXF + SVG")
     args = ap.parse_args()
     if args.write_csv:
         rows = sweep(args.n)
@@ -763,7 +792,7 @@ def main():
         params.update(overrides)
         stem = os.path.join(args.out, f"temple-{i:04d}")
         try:
-            dev, _ = run_variant(params, stem)
+            dev, _ = run_variant(params, stem, args.pdf)
             worst = max(worst, dev)
         except ValueError as e:
             failed += 1

@@ -465,7 +465,10 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
                 }
             }
         }
-        if let Err(m) = super::check_output_formats(&outs).and(check_sheet(&args.sheet)) {
+        if let Err(m) = super::check_output_formats(&outs)
+            .and(check_sheet(&args.sheet))
+            .and(super::check_writer_options(common))
+        {
             eprintln!("error: {m}");
             return EXIT_USAGE;
         }

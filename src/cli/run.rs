@@ -58,7 +58,9 @@ pub fn apply_sets(it: &mut Interp, sets: &[String]) -> Result<(), String> {
 }
 
 pub fn run(args: &RunArgs, common: &Common) -> i32 {
-    if let Err(msg) = super::check_output_formats(&args.outputs) {
+    if let Err(msg) =
+        super::check_output_formats(&args.outputs).and(super::check_writer_options(common))
+    {
         eprintln!("error: {msg}");
         return EXIT_USAGE;
     }
