@@ -44,7 +44,7 @@ fn check_cam(v: Value) -> Value {
     for e in v["entities"].as_array().unwrap() {
         let t = e["type"].as_str().unwrap();
         assert!(
-            ["LINE", "ARC", "CIRCLE", "POLYLINE"].contains(&t),
+            ["LINE", "ARC", "CIRCLE", "POLYLINE", "TEXT"].contains(&t),
             "CAM wrote {t}"
         );
     }
@@ -272,10 +272,14 @@ fn mixed_drawing_is_clean_r12_with_single_closed_outlines() {
         (s - 90.0).abs() < 1e-9 && (t - 180.0).abs() < 1e-9,
         "{s} {t}"
     );
-    // Layers are R12 names; nothing else than cutting geometry.
+    // Layers are R12 names; text only on a layer of its own (0_TEXT: layer 0 also cuts).
     for e in ents {
         let l = e["layer"].as_str().unwrap();
-        assert!(["0", "OUTLINE", "CONSTRUCTION"].contains(&l), "{l}");
+        if e["type"] == "TEXT" {
+            assert_eq!(l, "0_TEXT");
+        } else {
+            assert!(["0", "OUTLINE", "CONSTRUCTION"].contains(&l), "{l}");
+        }
     }
     assert_eq!(r12_layer_name("Outline"), "OUTLINE");
 }
@@ -355,7 +359,12 @@ fn duplicates_and_overlaps_are_removed() {
         .collect();
     assert_eq!(lines[0], (DVec2::new(0.0, 0.0), DVec2::new(10.0, 0.0)));
     assert_eq!(lines[1], (DVec2::new(10.0, 0.0), DVec2::new(20.0, 0.0)));
-    assert_eq!(ents.last().unwrap()["color"], 1, "colour kept");
+    // Open paths are cut before closed outlines: the coloured line is the last open one.
+    let coloured = ents
+        .iter()
+        .find(|e| e["type"] == "LINE" && xy(&e["start"]) == DVec2::new(200.0, 0.0))
+        .unwrap();
+    assert_eq!(coloured["color"], 1, "colour kept");
     let arcs: Vec<(f64, f64)> = ents
         .iter()
         .filter(|e| e["type"] == "ARC")

@@ -40,10 +40,12 @@ DEFAULTS = {
     "HINGEW": 5.0,  # width at the hinge end
     "MINW": 3.5,  # slimmest width (at 0.7 L1)
     "TIPW": 7.0,  # width of the tip
+    "TIPR": 2.0,  # radius of the rounded ear tip
     "BASEX": 0.0,
     "BASEY": 0.0,
 }
 TOL = 1e-6  # GEOMTOL x 1000
+SMOOTH_TOL = 0.05  # the smooth refit scripts/temple.lsp uses
 SAMPLES = 8  # per interval while refining
 VERIFY = 32  # per interval when verifying the result
 MAX_ROUNDS = 48
@@ -105,6 +107,25 @@ def outline_points(p):
     pts = [
         (0.0, -h0), (0.04 * l1, -h0), (0.35 * l1, -hq), (0.7 * l1, -hm), (0.9 * l1, -ht),
         (l1, 0.0),
+        (0.9 * l1, ht), (0.7 * l1, hm), (0.35 * l1, hq), (0.04 * l1, h0), (0.0, h0),
+    ]
+    return [(bx + x, by + y) for x, y in pts]
+
+
+def script_points(p):
+    """The 15 type-value points of scripts/temple.lsp: straight hinge butt, tip rounded on TIPR."""
+    l1, r = p["L1"], p["TIPR"]
+    h0, hm, ht = p["HINGEW"] / 2, p["MINW"] / 2, p["TIPW"] / 2
+    hq = hm + 0.3 * (h0 - hm)
+    bx, by = p["BASEX"], p["BASEY"]
+
+    def tip(deg):
+        a = math.pi * (deg / 180.0)
+        return (l1 - r + r * math.cos(a), r * math.sin(a))
+
+    pts = [
+        (0.0, -h0), (0.04 * l1, -h0), (0.35 * l1, -hq), (0.7 * l1, -hm), (0.9 * l1, -ht),
+        tip(-80.0), tip(-40.0), tip(0.0), tip(40.0), tip(80.0),
         (0.9 * l1, ht), (0.7 * l1, hm), (0.35 * l1, hq), (0.04 * l1, h0), (0.0, h0),
     ]
     return [(bx + x, by + y) for x, y in pts]
@@ -631,6 +652,31 @@ def write_dxf(path, segs, center, notes, base):
     tmp = path + ".tmp"
     doc.saveas(tmp)
     os.replace(tmp, path)
+    return doc
+
+
+def write_pdf(path, doc):
+    """The drawing through ezdxf's drawing add-on and matplotlib's PDF backend (the peer of
+    `lispcad -o x.pdf`); the figure is sized to the extents so the page is at 1:1."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from ezdxf import bbox
+    from ezdxf.addons.drawing import Frontend, RenderContext
+    from ezdxf.addons.drawing.matplotlib import MatplotlibBackend
+
+    ext = bbox.extents(doc.modelspace())
+    margin = 5.0
+    w, h = ext.size.x + 2 * margin, ext.size.y + 2 * margin
+    fig = plt.figure(figsize=(w / 25.4, h / 25.4))
+    ax = fig.add_axes([0, 0, 1, 1])
+    ax.set_xlim(ext.extmin.x - margin, ext.extmax.x + margin)
+    ax.set_ylim(ext.extmin.y - margin, ext.extmax.y + margin)
+    Frontend(RenderContext(doc), MatplotlibBackend(ax)).draw_layout(doc.modelspace(), finalize=False)
+    tmp = path + ".tmp.pdf"
+    fig.savefig(tmp, format="pdf")
+    plt.close(fig)
+    os.replace(tmp, path)
 
 
 def write_svg(path, segs, center, notes, base):
@@ -675,11 +721,11 @@ def write_svg(path, segs, center, notes, base):
     os.replace(tmp, path)
 
 
-def run_variant(params, stem):
-    pts = outline_points(params)
+def run_variant(params, stem, pdf=False):
+    pts = script_points(params)
     segs = interpolate_closed(pts)
     bend = Bend(params)
-    bent, dev, added = bend_outline(segs, len(pts), bend)
+    bent, dev, added = bend_outline(segs, len(pts), bend, SMOOTH_TOL)
     # The same three TEXT lines as scripts/temple.lsp (rtos modes 2 and 1).
     notes = [
         f"L1 {params['L1']:.1f}  L2 {params['L2']:.1f}  R {params['R']:.1f}  "
@@ -689,8 +735,11 @@ def run_variant(params, stem):
     ]
     center = bend.centerline()
     base = (params["BASEX"], params["BASEY"])
-    write_dxf(stem + ".dxf", bent, center, notes, base)
-    write_svg(stem + ".svg", bent, center, notes, base)
+    doc = write_dxf(stem + ".dxf", bent, center, notes, base)
+    if pdf:
+        write_pdf(stem + ".pdf", doc)
+    else:
+        write_svg(stem + ".svg", bent, center, notes, base)
     return dev, added
 
 
@@ -715,6 +764,7 @@ def main():
     ap.add_argument("--set", action="append", default=[], help="NAME=VALUE override")
     ap.add_argument("-o", "--out", default="out-py", help="output directory")
     ap.add_argument("--write-csv", help="write the built-in sweep as a CSV table and exit")
+    ap.add_argument("--pdf", action="store_true", help="DXF + PDF (matplotlib) instead of DXF + SVG")
     args = ap.parse_args()
     if args.write_csv:
         rows = sweep(args.n)
@@ -742,7 +792,7 @@ def main():
         params.update(overrides)
         stem = os.path.join(args.out, f"temple-{i:04d}")
         try:
-            dev, _ = run_variant(params, stem)
+            dev, _ = run_variant(params, stem, args.pdf)
             worst = max(worst, dev)
         except ValueError as e:
             failed += 1

@@ -372,6 +372,16 @@ fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(crate::builtins::entities::pickset_value(it, added))
 }
 
+/// The drawing as SVG with the run's writer options (a row of a contact sheet).
+pub fn drawing_svg(
+    it: &mut Interp,
+    overrides: impl Into<OutputOverrides>,
+) -> Result<String, String> {
+    let overrides = overrides.into();
+    let opts = output_options(it, Some(&overrides)).map_err(|e| e.message.clone())?;
+    Ok(crate::output::svg::write_svg(drawing(it), &opts))
+}
+
 /// Writes the drawing to each output path after a run (`-o`); nothing is written for a run
 /// that failed, and each file appears whole or not at all.
 pub fn write_outputs(

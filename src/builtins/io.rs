@@ -373,7 +373,7 @@ fn file_directory_p(it: &mut Interp, a: &[Value]) -> LResult {
 /// remembering only the last star (a later star subsumes every choice made for an earlier
 /// one): O(|name| · |pattern|) at worst, so `*a*a*a*a*b` cannot blow up. Returns whether it
 /// matched and the character comparisons made (charged to the step budget).
-fn glob(pat: &[char], name: &[char]) -> (bool, u64) {
+pub fn glob(pat: &[char], name: &[char]) -> (bool, u64) {
     let (mut p, mut n, mut work) = (0, 0, 0u64);
     let mut star: Option<(usize, usize)> = None;
     while n < name.len() {

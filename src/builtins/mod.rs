@@ -90,4 +90,4 @@ pub fn find(name: &str) -> Option<&'static Builtin> {
         .find(|b| b.name.eq_ignore_ascii_case(name))
 }
 
-pub use drawing::write_outputs;
+pub use drawing::{drawing_svg, write_outputs};

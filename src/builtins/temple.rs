@@ -15,7 +15,7 @@ use crate::lang::{Interp, Value};
 pub static BUILTINS: &[Builtin] = &[
     builtin!("temple-centerline", "(temple-centerline L1 L2 R theta [base])", "The bent centerline: line P1-P2, arc of radius R turning through theta (positive toward -Y), line P3-P4; total length L1.", 4, 5, temple_centerline),
     builtin!("bend-point", "(bend-point p L1 L2 R theta [base])", "One point bent with the temple (its distance from the centerline kept).", 5, 6, bend_point),
-    builtin!("bend-temple", "(bend-temple profile L1 L2 R theta [base])", "A temple outline bent: a list of type-value points, or a spline refitted within GEOMTOL*1000 of the exact bend (deviation in BENDDEV).", 5, 6, bend_temple),
+    builtin!("bend-temple", "(bend-temple profile L1 L2 R theta [base] [smooth-tol])", "A temple outline bent: a list of type-value points, or a spline refitted within GEOMTOL*1000 of the exact bend (deviation in BENDDEV); with smooth-tol, refitted only within that tolerance, which rounds off the exact bend's slight corners where the outline enters and leaves the arc.", 5, 7, bend_temple),
 ];
 
 /// The bend parameters from `L1 L2 R theta [base]` starting at `a[0]`.
@@ -73,7 +73,13 @@ fn bend_temple(it: &mut Interp, a: &[Value]) -> LResult {
         let Curve::Spline(s) = curve(it, &a[0])? else {
             return Err(bad_arg(it, "splinep", &a[0]));
         };
-        let tol = geomtol(it) * 1000.0;
+        // The exact bend has a slight corner wherever the outline crosses the start or end of
+        // the arc off the centerline; refitting within a coarser tolerance spreads it over
+        // about 8·tol/corner-angle of outline instead of reproducing it.
+        let tol = match a.get(6) {
+            None | Some(Value::Nil) => geomtol(it) * 1000.0,
+            Some(v) => it.num(v)?,
+        };
         let bent = temple::bend_spline(s, &p, tol).map_err(temple_err)?;
         it.ext::<SysVars>()
             .put("BENDDEV", Value::Real(bent.deviation));

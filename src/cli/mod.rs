@@ -142,6 +142,19 @@ pub fn check_output_formats<P: AsRef<std::path::Path>>(outputs: &[P]) -> Result<
     Ok(())
 }
 
+/// A usage error when a writer option given on the command line (`--dpi`, `--cam-min-seg`,
+/// `--cam-tol`) is out of range, reported before anything runs.
+pub fn check_writer_options(common: &Common) -> Result<(), String> {
+    let d = crate::output::OutputOptions::default();
+    let o = crate::output::OutputOptions {
+        dpi: common.dpi.unwrap_or(d.dpi),
+        cam_min_seg: common.cam_min_seg.unwrap_or(d.cam_min_seg),
+        cam_tol: common.cam_tol.unwrap_or(d.cam_tol),
+        ..d
+    };
+    o.validate().map_err(|e| e.to_string())
+}
+
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
     let cli = match Cli::try_parse() {

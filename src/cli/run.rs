@@ -98,7 +98,9 @@ pub fn open_start_drawing(it: &mut Interp, common: &Common) -> Result<(), String
 }
 
 pub fn run(args: &RunArgs, common: &Common) -> i32 {
-    if let Err(msg) = super::check_output_formats(&args.outputs) {
+    if let Err(msg) =
+        super::check_output_formats(&args.outputs).and(super::check_writer_options(common))
+    {
         eprintln!("error: {msg}");
         return EXIT_USAGE;
     }

@@ -67,7 +67,9 @@ fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
 }
 
 pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
-    if let Err(msg) = super::check_output_formats(&args.outputs) {
+    if let Err(msg) =
+        super::check_output_formats(&args.outputs).and(super::check_writer_options(common))
+    {
         eprintln!("error: {msg}");
         return EXIT_USAGE;
     }

@@ -6,12 +6,13 @@
 //! becomes one closed POLYLINE, so the machine cuts it as one contour. Duplicate and
 //! overlapping edges are removed (a cutter would otherwise burn the same edge twice): later
 //! open edges lose the parts another edge already covers; closed outlines and circles are kept
-//! whole and identical copies of them dropped. Points, text, faces and meshes are not cutting
-//! geometry and are left out.
+//! whole and identical copies of them dropped. Points, faces and meshes are not cutting
+//! geometry and are left out with a warning; text is kept, as R12 TEXT on a layer of its own.
 
 use glam::{DVec2, DVec3};
 
 use super::biarc::{fit_bspline, fit_span, BulgeChain, Projected};
+use super::cam_tidy;
 use super::drawing::{bulge_arc, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
 use super::dxf::{degrees, DxfWriter};
 use crate::geom::frame::Ocs;
@@ -508,12 +509,41 @@ pub fn write_cam(d: &Drawing, tol: f64) -> String {
     write_cam_with(d, &opts).dxf
 }
 
-/// The CAM profile with the writer options (`cam_tol`, `cam_min_seg`, `insunits`).
+/// The CAM profile with the writer options (`cam_tol`, `cam_min_seg`, `insunits`): fitted
+/// within half the tolerance, short segments merged within the other half (see `cam_tidy`);
+/// open paths first, then closed contours from the innermost out, outer ones
+/// counter-clockwise and holes clockwise, each started on its smoothest stretch; text on its
+/// own layer; a warning for whatever was left out.
 pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
     let tol = opts.cam_tol;
+    let min_seg = opts.cam_min_seg;
+    let fit_tol = if min_seg > 0.0 { 0.5 * tol } else { tol };
+    let mut warnings = Vec::new();
+    let mut left_out: std::collections::BTreeMap<&str, usize> = Default::default();
+    let mut texts: Vec<&Entity> = Vec::new();
     let mut items: Vec<Item> = Vec::new();
     for e in d.entities() {
-        for prim in to_prims(e, tol) {
+        match &e.kind {
+            EntityKind::Text { .. } => texts.push(e),
+            EntityKind::Point { .. } | EntityKind::Face3d { .. } | EntityKind::Mesh { .. } => {
+                *left_out.entry(e.kind.type_name()).or_default() += 1;
+            }
+            _ => {}
+        }
+        for mut prim in to_prims(e, fit_tol) {
+            let short = match &mut prim {
+                Prim::Closed(ch) => cam_tidy::merge_short(ch, true, min_seg, tol - fit_tol),
+                Prim::Open(ch) => cam_tidy::merge_short(ch, false, min_seg, tol - fit_tol),
+                Prim::Circle(..) => 0,
+            };
+            if short > 0 {
+                warnings.push(format!(
+                    "{short} segment(s) of a {} on layer {} are shorter than {min_seg}: the \
+                     geometry itself is that small",
+                    e.kind.type_name(),
+                    e.layer
+                ));
+            }
             items.push(Item {
                 entity: e,
                 prim,
@@ -575,12 +605,36 @@ pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
         it.edges = start..edges.len();
     }
     remove_overlaps(&mut edges);
+    let dups = items.iter().filter(|it| it.dropped).count();
+    if dups > 0 {
+        warnings.push(format!(
+            "{dups} duplicate closed outline(s) or circle(s) dropped (cut once)"
+        ));
+    }
+    for (kind, n) in &left_out {
+        warnings.push(format!("{n} {kind} left out: not cutting geometry"));
+    }
+    let order = cut_order(&mut items);
+    let cut_layers: Vec<String> = items
+        .iter()
+        .filter(|it| !it.dropped)
+        .map(|it| r12_layer_name(&it.entity.layer))
+        .collect();
+    let text_layer = |e: &Entity| {
+        let l = r12_layer_name(&e.layer);
+        if cut_layers.contains(&l) {
+            r12_layer_name(&format!("{l}_TEXT"))
+        } else {
+            l
+        }
+    };
+    let extra: Vec<String> = texts.iter().map(|e| text_layer(e)).collect();
 
     let mut w = DxfWriter::new();
-    write_r12_head(&mut w, d);
+    write_r12_head(&mut w, d, &extra, opts.insunits);
     w.str(0, "SECTION");
     w.str(2, "ENTITIES");
-    for it in items.iter().filter(|it| !it.dropped) {
+    for it in order.iter().map(|&i| &items[i]) {
         let layer = r12_layer_name(&it.entity.layer);
         let color = it.entity.color;
         match &it.prim {
@@ -616,12 +670,71 @@ pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
             }
         }
     }
+    for (e, layer) in texts.iter().zip(&extra) {
+        if let EntityKind::Text {
+            insert,
+            height,
+            value,
+            rotation,
+            ..
+        } = &e.kind
+        {
+            head(&mut w, "TEXT", layer, e.color);
+            w.point(10, insert.truncate().extend(0.0));
+            w.float(40, *height);
+            w.str(1, value);
+            if *rotation != 0.0 {
+                w.float(50, degrees(*rotation));
+            }
+        }
+    }
     w.str(0, "ENDSEC");
     w.str(0, "EOF");
     CamOutput {
         dxf: w.out,
-        warnings: Vec::new(),
+        warnings,
     }
+}
+
+/// The order to cut in: open paths first (drawing order), then closed contours and circles
+/// innermost first, so no part falls out before its holes are cut. Orients each closed chain
+/// (outer counter-clockwise, holes clockwise, by nesting depth) and picks its start.
+fn cut_order(items: &mut [Item]) -> Vec<usize> {
+    let live: Vec<usize> = (0..items.len()).filter(|&i| !items[i].dropped).collect();
+    let probe = |p: &Prim| match p {
+        Prim::Circle(c, r) => Some(*c + DVec2::new(*r, 0.0)),
+        Prim::Closed(ch) => ch.points.first().copied(),
+        Prim::Open(_) => None,
+    };
+    let inside = |outer: &Prim, p: DVec2| match outer {
+        Prim::Circle(c, r) => c.distance(p) < *r - EPS,
+        Prim::Closed(ch) => cam_tidy::contains(ch, p),
+        Prim::Open(_) => false,
+    };
+    let mut depth = vec![0usize; items.len()];
+    for &i in &live {
+        if let Some(p) = probe(&items[i].prim) {
+            depth[i] = live
+                .iter()
+                .filter(|&&j| j != i && inside(&items[j].prim, p))
+                .count();
+        }
+    }
+    for &i in &live {
+        if let Prim::Closed(ch) = &mut items[i].prim {
+            let ccw = cam_tidy::signed_area(ch) > 0.0;
+            if ccw != depth[i].is_multiple_of(2) {
+                cam_tidy::reverse_closed(ch);
+            }
+            cam_tidy::choose_start(ch);
+        }
+    }
+    let (mut open, mut closed): (Vec<usize>, Vec<usize>) = live
+        .into_iter()
+        .partition(|&i| matches!(items[i].prim, Prim::Open(_)));
+    closed.sort_by(|&a, &b| depth[b].cmp(&depth[a]));
+    open.extend(closed);
+    open
 }
 
 fn head(w: &mut DxfWriter, kind: &str, layer: &str, color: Option<i16>) {
@@ -682,7 +795,7 @@ fn write_polyline(
     w.str(8, layer);
 }
 
-fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
+fn write_r12_head(w: &mut DxfWriter, d: &Drawing, extra_layers: &[String], insunits: i32) {
     w.str(0, "SECTION");
     w.str(2, "HEADER");
     w.str(9, "$ACADVER");
@@ -704,6 +817,12 @@ fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
     w.point(10, hi);
     w.str(9, "$LUNITS");
     w.int(70, 2);
+    // R12 has no $INSUNITS; $MEASUREMENT (R14) is read by R12 readers too and keeps an inch
+    // drawing from being taken for millimetres.
+    if super::measurement(insunits) == 0 {
+        w.str(9, "$MEASUREMENT");
+        w.int(70, 0);
+    }
     w.str(0, "ENDSEC");
 
     w.str(0, "SECTION");
@@ -720,6 +839,11 @@ fn write_r12_head(w: &mut DxfWriter, d: &Drawing) {
         let n = r12_layer_name(&l.name);
         if !names.iter().any(|(m, _)| *m == n) {
             names.push((n, l.color));
+        }
+    }
+    for n in extra_layers {
+        if !names.iter().any(|(m, _)| m == n) {
+            names.push((n.clone(), 7));
         }
     }
     w.str(0, "TABLE");

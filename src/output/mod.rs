@@ -5,6 +5,7 @@ pub mod aci;
 pub mod atomic;
 pub mod biarc;
 pub mod cam;
+pub mod cam_tidy;
 pub mod document;
 pub mod drawing;
 pub mod dxf;
@@ -15,6 +16,7 @@ pub mod entity;
 pub mod pdf;
 pub mod png;
 pub mod record;
+pub mod sheet;
 pub mod svg;
 
 use std::path::Path;

@@ -528,6 +528,23 @@ pub fn usvg_tree(svg: &str) -> Result<usvg::Tree, super::OutputError> {
             .get_or_init(|| {
                 let mut db = usvg::fontdb::Database::new();
                 db.load_system_fonts();
+                // fontdb's generic sans-serif is Arial; use the first sans family installed.
+                let have = |f: &str| {
+                    db.faces()
+                        .any(|face| face.families.iter().any(|x| x.0 == f))
+                };
+                let sans = [
+                    "DejaVu Sans",
+                    "Liberation Sans",
+                    "Noto Sans",
+                    "Arial",
+                    "Helvetica",
+                ]
+                .into_iter()
+                .find(|f| have(f));
+                if let Some(f) = sans {
+                    db.set_sans_serif_family(f);
+                }
                 std::sync::Arc::new(db)
             })
             .clone();

@@ -33,12 +33,7 @@ pub struct BatchArgs {
     /// The script to run for every row.
     pub file: PathBuf,
     /// A CSV table: a header of variable names, one run per row.
-    #[arg(
-        long,
-        value_name = "TABLE.csv",
-        conflicts_with = "grid",
-        required_unless_present = "grid"
-    )]
+    #[arg(long, value_name = "TABLE.csv", conflicts_with = "grid")]
     pub vary: Option<PathBuf>,
     /// A cartesian grid, e.g. "L1=135:150:5,R=10,15,20" (start:stop:step ranges or value lists).
     #[arg(long, value_name = "SPEC")]
@@ -52,16 +47,27 @@ pub struct BatchArgs {
     /// Bind a global for every row: NAME=VALUE.
     #[arg(long = "set", value_name = "NAME=VALUE")]
     pub set: Vec<String>,
+    /// Also write one contact sheet of every row's drawing, labelled (.pdf or .svg).
+    #[arg(long, value_name = "FILE")]
+    pub sheet: Option<PathBuf>,
 }
 
-/// The rows of the batch: `--vary TABLE` or `--grid SPEC`.
-fn open_source(args: &BatchArgs) -> Result<Source, String> {
+/// The rows of the batch: `--vary TABLE`, `--grid SPEC`, or `--open 'GLOB'` (a row per
+/// drawing; with a table or grid, `--open` names the one drawing every row starts from).
+fn open_source(args: &BatchArgs, common: &Common) -> Result<Source, String> {
+    match (&args.vary, &args.grid, &common.open) {
+        (None, None, Some(glob)) => return source::drawings_source(glob),
+        (_, _, Some(p)) if p.to_string_lossy().contains(['*', '?']) => {
+            return Err("--open GLOB makes one row per drawing: it cannot be combined with --vary or --grid".into())
+        }
+        _ => {}
+    }
     match (&args.vary, &args.grid) {
         (Some(t), _) => std::fs::read_to_string(t)
             .map_err(|e| format!("cannot read {}: {e}", t.display()))
             .and_then(|s| source::table_source(&s).map_err(|m| format!("{}: {m}", t.display()))),
         (None, Some(g)) => source::grid_source(g),
-        (None, None) => Err("batch needs --vary TABLE or --grid SPEC".into()),
+        (None, None) => Err("batch needs --vary TABLE, --grid SPEC or --open 'GLOB'".into()),
     }
 }
 
@@ -187,8 +193,15 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
         Err(code) => return code,
     };
     let files = OutputFiles::new(args.outputs.clone());
-    let src = match open_source(args)
+    let sheet = args.sheet.clone().map(sink::ContactSheet::new);
+    let src = match open_source(args, common)
         .and_then(|s| check_plan(&s, &files).map(|()| s))
+        .and_then(|s| {
+            sheet
+                .as_ref()
+                .map_or(Ok(()), |c| sink::ContactSheet::check(&c.path))?;
+            super::check_writer_options(common).map(|()| s)
+        })
         .and_then(|s| check_names(&text, args, &s).map(|()| s))
     {
         Ok(s) => s,
@@ -216,7 +229,10 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
     let stop = Arc::new(AtomicBool::new(false));
     let interrupts: Arc<Mutex<Vec<Arc<AtomicBool>>>> = Arc::new(Mutex::new(Vec::new()));
     on_interrupt(&stop, &interrupts);
-    let sinks: [&dyn Sink; 1] = [&files];
+    let mut sinks: Vec<&dyn Sink> = vec![&files];
+    if let Some(c) = &sheet {
+        sinks.push(c);
+    }
     let runner = Runner {
         name: &name,
         text: &text,

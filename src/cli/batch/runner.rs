@@ -90,8 +90,16 @@ impl Runner<'_> {
 
     /// A fresh interpreter for `row`: options, write roots, `--set` and the row's bindings.
     fn interp(&self, syms: &SymbolTable, row: &Row, paths: &[PathBuf]) -> Result<Interp, String> {
-        let policy = crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &[]);
+        // A drawings source names each row's drawing; otherwise `--open` is every row's.
+        let open = row.open.as_ref().or(self.common.open.as_ref());
+        let named: Vec<PathBuf> = open.into_iter().cloned().collect();
+        let policy = crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &named);
         let mut it = crate::cli::run::configured_interp(self.common, policy)?;
+        if let Some(p) = open {
+            if let Some(note) = crate::builtins::drawing::open_into(&mut it, p, self.common.recover)? {
+                eprintln!("{}: {note}", p.display());
+            }
+        }
         // Rows run in parallel: none of them may wait on the terminal.
         it.ext::<crate::builtins::input::InputState>().no_terminal = true;
         it.syms = syms.clone();

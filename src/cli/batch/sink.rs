@@ -179,3 +179,66 @@ mod tests {
         assert_eq!(pattern_fields("o/{a}-{row}-{B}.svg"), ["a", "B"]);
     }
 }
+
+/// `--sheet FILE.pdf|FILE.svg`: every successful row's drawing, labelled, on one contact
+/// sheet at a common scale, written once all rows have run.
+pub struct ContactSheet {
+    pub path: PathBuf,
+    rows: Mutex<Vec<(u64, String, String)>>,
+}
+
+impl ContactSheet {
+    pub fn new(path: PathBuf) -> Self {
+        ContactSheet {
+            path,
+            rows: Mutex::new(Vec::new()),
+        }
+    }
+
+    /// A usage error unless the sheet is .svg or .pdf.
+    pub fn check(path: &std::path::Path) -> Result<(), String> {
+        use crate::output::Format;
+        match Format::from_path(path) {
+            Ok(Format::Svg | Format::Pdf) => Ok(()),
+            _ => Err("--sheet: the contact sheet must be a .svg or .pdf file".into()),
+        }
+    }
+}
+
+impl Sink for ContactSheet {
+    fn paths(&self, _row: &Row) -> Result<Vec<PathBuf>, String> {
+        Ok(Vec::new())
+    }
+
+    fn row_done(
+        &self,
+        it: &mut Interp,
+        row: &Row,
+        _paths: &[PathBuf],
+        common: &Common,
+    ) -> Result<(), String> {
+        let svg = crate::builtins::drawing_svg(it, common)?;
+        let label = match row.field("name").or_else(|| row.field("stem")) {
+            Some(n) => format!("{}: {n}", row.number),
+            None => format!("{}: {}", row.number, row.describe()),
+        };
+        self.rows
+            .lock()
+            .map_err(|_| "lock poisoned".to_string())?
+            .push((row.number, label, svg));
+        Ok(())
+    }
+
+    fn finish(&self) -> Result<(), String> {
+        let mut rows = std::mem::take(&mut *self.rows.lock().map_err(|_| "lock poisoned")?);
+        rows.sort_by_key(|r| r.0);
+        let rows: Vec<_> = rows
+            .into_iter()
+            .map(|(_, label, svg)| crate::output::sheet::SheetRow { label, svg })
+            .collect();
+        let format = crate::output::Format::from_path(&self.path).map_err(|e| e.to_string())?;
+        let bytes = crate::output::sheet::compose(&rows, format).map_err(|e| e.to_string())?;
+        crate::output::atomic::write_atomic(&self.path, &bytes)
+            .map_err(|e| format!("cannot write {}: {e}", self.path.display()))
+    }
+}

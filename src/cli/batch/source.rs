@@ -54,6 +54,11 @@ impl Row {
     }
 
     pub fn describe(&self) -> String {
+        if self.values.is_empty() {
+            if let Some(p) = &self.open {
+                return p.display().to_string();
+            }
+        }
         self.values
             .iter()
             .map(|(k, v)| format!("{k}={}", v.text))
@@ -135,6 +140,59 @@ impl Grid {
             ..Row::default()
         }
     }
+}
+
+/// `--open 'GLOB'`: one row per matching drawing, in name order, with the pattern fields
+/// `{stem}` and `{file}`; the row binds nothing and starts from its drawing. Only the file
+/// name may hold wildcards (`*`, `?`), as a shell would expand them in one directory.
+pub fn drawings_source(glob: &std::path::Path) -> Result<Source, String> {
+    let name = glob
+        .file_name()
+        .and_then(|n| n.to_str())
+        .ok_or_else(|| format!("--open {}: not a file pattern", glob.display()))?;
+    let dir = match glob.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    if dir.to_string_lossy().contains(['*', '?']) {
+        return Err(format!(
+            "--open {}: only the file name may contain wildcards",
+            glob.display()
+        ));
+    }
+    let pat: Vec<char> = name.chars().collect();
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .map_err(|e| format!("--open {}: cannot list {}: {e}", glob.display(), dir.display()))?
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_type().is_ok_and(|t| !t.is_dir()))
+        .filter(|e| {
+            let n: Vec<char> = e.file_name().to_string_lossy().chars().collect();
+            crate::builtins::io::glob(&pat, &n).0
+        })
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    if files.is_empty() {
+        return Err(format!("--open {}: no drawing matches", glob.display()));
+    }
+    let rows = files
+        .into_iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let stem = p.file_stem().map_or(String::new(), |s| s.to_string_lossy().into());
+            let file = p.file_name().map_or(String::new(), |s| s.to_string_lossy().into());
+            Row {
+                number: i as u64 + 1,
+                values: Vec::new(),
+                fields: vec![("stem".into(), stem), ("file".into(), file)],
+                open: Some(p),
+            }
+        })
+        .collect();
+    Ok(Source::Table {
+        columns: Vec::new(),
+        rows,
+    })
 }
 
 /// Reads a CSV table: a header of variable names, one row per record.
