@@ -252,7 +252,10 @@ fn usage_errors() {
         &["serve", "s.lsp", "--port", "0", "--open", "in.dxf"],
     );
     assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("not yet"));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("cannot read drawing in.dxf"),
+        "{o:?}"
+    );
     // A port already taken.
     let srv = serve(dir.path(), "s.lsp");
     let o = cli_support::lispcad_in(

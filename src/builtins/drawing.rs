@@ -289,45 +289,7 @@ fn dxf_open(it: &mut Interp, a: &[Value]) -> LResult {
 
 /// The curve of an entity's geometry (the inverse of `curve_entity`), if it is a curve.
 pub fn entity_to_curve(kind: &EntityKind) -> Option<Curve> {
-    use crate::geom::{arc::Arc, circle::Circle, line::Line, polyline::Polyline};
-    Some(match kind {
-        EntityKind::Line { p0, p1 } => Curve::Line(Line::new(*p0, *p1).ok()?),
-        EntityKind::Circle {
-            center,
-            radius,
-            normal,
-        } => Curve::Circle(Circle::new(*center, *radius, *normal).ok()?),
-        EntityKind::Arc {
-            center,
-            radius,
-            start,
-            end,
-            normal,
-        } => Curve::Arc(Arc::new(*center, *radius, *start, *end, *normal).ok()?),
-        EntityKind::LwPolyline {
-            points,
-            bulges,
-            closed,
-            elevation,
-            normal,
-        } => {
-            let ocs = crate::geom::frame::Ocs::new(*normal);
-            let pts = points.iter().map(|p| ocs.to_wcs(*p, *elevation)).collect();
-            let b = (!bulges.is_empty()).then(|| bulges.clone());
-            Curve::Polyline(Polyline::new(pts, b, *closed, Some(ocs.n)).ok()?)
-        }
-        EntityKind::Polyline {
-            points,
-            bulges,
-            closed,
-        } => {
-            let b = (!bulges.is_empty()).then(|| bulges.clone());
-            Curve::Polyline(Polyline::new(points.clone(), b, *closed, None).ok()?)
-        }
-        EntityKind::Spline { curve, .. } => Curve::BSpline(curve.clone()),
-        // TODO(merge): ELLIPSE → the geometry core's ellipse curve (another branch adds it).
-        _ => return None,
-    })
+    crate::builtins::vla::curve::entity_curve(kind)?.ok()
 }
 
 fn entity_curve(it: &mut Interp, a: &[Value]) -> LResult {

@@ -9,8 +9,8 @@
 
 pub mod builtin;
 pub mod compile;
-pub mod encoding;
 mod defparam;
+pub mod encoding;
 pub mod error;
 pub mod escape;
 pub mod eval;

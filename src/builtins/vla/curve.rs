@@ -152,7 +152,8 @@ pub fn entity_curve(k: &EntityKind) -> Option<Result<Curve, crate::geom::GeomErr
                 .iter()
                 .map(|p: &DVec2| ocs.to_wcs(*p, *elevation))
                 .collect();
-            crate::geom::polyline::Polyline::new(pts, Some(bulges.clone()), *closed, Some(*normal))
+            let b = (!bulges.is_empty()).then(|| bulges.clone());
+            crate::geom::polyline::Polyline::new(pts, b, *closed, Some(*normal))
                 .map(Curve::Polyline)
         }
         EntityKind::Polyline {
@@ -165,6 +166,15 @@ pub fn entity_curve(k: &EntityKind) -> Option<Result<Curve, crate::geom::GeomErr
             (!bulges.is_empty()).then(|| bulges.clone()),
         ),
         EntityKind::Spline { curve, .. } => Ok(Curve::BSpline(curve.clone())),
+        EntityKind::Ellipse {
+            center,
+            major,
+            normal,
+            ratio,
+            start,
+            end,
+        } => crate::geom::ellipse::Ellipse::new(*center, *major, *ratio, *start, *end, *normal)
+            .map(Curve::Ellipse),
         _ => return None,
     })
 }

@@ -57,9 +57,10 @@ pub struct BatchArgs {
 fn open_source(args: &BatchArgs, common: &Common) -> Result<Source, String> {
     match (&args.vary, &args.grid, &common.open) {
         (None, None, Some(glob)) => return source::drawings_source(glob),
-        (_, _, Some(p)) if p.to_string_lossy().contains(['*', '?']) => {
-            return Err("--open GLOB makes one row per drawing: it cannot be combined with --vary or --grid".into())
-        }
+        (_, _, Some(p)) if p.to_string_lossy().contains(['*', '?']) => return Err(
+            "--open GLOB makes one row per drawing: it cannot be combined with --vary or --grid"
+                .into(),
+        ),
         _ => {}
     }
     match (&args.vary, &args.grid) {

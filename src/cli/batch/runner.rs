@@ -96,7 +96,9 @@ impl Runner<'_> {
         let policy = crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &named);
         let mut it = crate::cli::run::configured_interp(self.common, policy)?;
         if let Some(p) = open {
-            if let Some(note) = crate::builtins::drawing::open_into(&mut it, p, self.common.recover)? {
+            if let Some(note) =
+                crate::builtins::drawing::open_into(&mut it, p, self.common.recover)?
+            {
                 eprintln!("{}: {note}", p.display());
             }
         }

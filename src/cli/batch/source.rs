@@ -162,7 +162,13 @@ pub fn drawings_source(glob: &std::path::Path) -> Result<Source, String> {
     }
     let pat: Vec<char> = name.chars().collect();
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map_err(|e| format!("--open {}: cannot list {}: {e}", glob.display(), dir.display()))?
+        .map_err(|e| {
+            format!(
+                "--open {}: cannot list {}: {e}",
+                glob.display(),
+                dir.display()
+            )
+        })?
         .filter_map(|e| e.ok())
         .filter(|e| e.file_type().is_ok_and(|t| !t.is_dir()))
         .filter(|e| {
@@ -179,8 +185,12 @@ pub fn drawings_source(glob: &std::path::Path) -> Result<Source, String> {
         .into_iter()
         .enumerate()
         .map(|(i, p)| {
-            let stem = p.file_stem().map_or(String::new(), |s| s.to_string_lossy().into());
-            let file = p.file_name().map_or(String::new(), |s| s.to_string_lossy().into());
+            let stem = p
+                .file_stem()
+                .map_or(String::new(), |s| s.to_string_lossy().into());
+            let file = p
+                .file_name()
+                .map_or(String::new(), |s| s.to_string_lossy().into());
             Row {
                 number: i as u64 + 1,
                 values: Vec::new(),

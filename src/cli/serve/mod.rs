@@ -26,9 +26,6 @@ pub struct ServeArgs {
     /// Port on 127.0.0.1 (0 picks a free one; the address is printed).
     #[arg(long, default_value_t = 7878)]
     pub port: u16,
-    /// Start from a drawing read from a DXF file.
-    #[arg(long = "open", value_name = "IN.dxf")]
-    pub open: Option<PathBuf>,
     #[arg(long = "set", value_name = "NAME=VALUE")]
     pub set: Vec<String>,
 }
@@ -139,6 +136,8 @@ pub fn snapshot(it: &mut Interp) -> Result<(Drawing, OutputOptions), Failure> {
 /// One run of the script in a fresh interpreter; the files it read (itself and its loads).
 fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> {
     let mut read = vec![args.file.clone()];
+    // `--open IN.dxf` (a common option): every run starts from it, and saving it re-runs.
+    read.extend(common.open.iter().cloned());
     let named: Vec<PathBuf> = common.open.iter().cloned().collect();
     let policy = super::run::fs_policy(common, Some(&args.file), &[], &named);
     let mut it = match super::run::configured_interp(common, policy) {
@@ -151,7 +150,9 @@ fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> 
             return read;
         }
     };
-    if let Err(m) = super::run::apply_sets(&mut it, &args.set) {
+    if let Err(m) = super::run::open_start_drawing(&mut it, common)
+        .and_then(|()| super::run::apply_sets(&mut it, &args.set))
+    {
         shared.publish(Err(Failure {
             message: m,
             ..Default::default()
@@ -172,14 +173,12 @@ fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> 
 }
 
 pub fn serve(args: &ServeArgs, common: &Common) -> i32 {
-    if args.open.is_some() {
-        // TODO(merge): connect the DXF reader of issue 11: read IN.dxf into the interpreter's
-        // drawing before each run (as `run --open` does), then drop this refusal.
-        eprintln!("error: serve --open is not yet available (the DXF reader is not merged)");
-        return EXIT_USAGE;
-    }
     if !args.file.is_file() {
         eprintln!("error: cannot read script {}", args.file.display());
+        return EXIT_USAGE;
+    }
+    if let Some(p) = common.open.as_ref().filter(|p| !p.is_file()) {
+        eprintln!("error: cannot read drawing {}", p.display());
         return EXIT_USAGE;
     }
     let shared = Arc::new(Shared::default());
