@@ -22,12 +22,13 @@
   (entmake (append '((0 . "SPLINE") (100 . "AcDbEntity") (100 . "AcDbSpline") (70 . 8) (71 . 3) (72 . 34) (73 . 30))
                    knots (reverse ctrl)))
   (entlast))
+(setq-default 'n 25000)
 (setq pl (make-pline) sp (make-spline) sum 0.0)
 (foreach e (list pl sp)
   (setq end (vlax-curve-getEndParam e)
         len (vlax-curve-getDistAtParam e end)
         i 0)
-  (repeat 25000
+  (repeat n
     (setq u (* end (/ (rem (* i 7919) 25000) 25000.0))
           sum (+ sum (vlax-curve-getDistAtParam e u))
           p (vlax-curve-getPointAtDist e (* len (/ (rem (* i 7927) 25000) 25000.0)))

@@ -4,6 +4,7 @@ distance, each computed from the entity on every call as vlax-curve does (LWPOLY
 lengths from the bulges with ezdxf.math; SPLINE: arc length by 16-point Gauss-Legendre per
 knot span on ezdxf's B-spline derivatives, inverted by Newton)."""
 import math
+import sys
 
 import ezdxf
 import numpy as np
@@ -87,13 +88,14 @@ def spline_point_at_dist(e, d):
 
 
 def main():
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 25000
     pl, sp = make_doc()
     total = 0.0
     for e, dist_at, point_at, end in (
             (pl, pline_dist_at_param, pline_point_at_dist, 39.0),
             (sp, spline_dist_at_param, spline_point_at_dist, 27.0)):
         length = dist_at(e, end)
-        for i in range(25000):
+        for i in range(n):
             u = end * ((i * 7919) % 25000) / 25000.0
             total += dist_at(e, u)
             p = point_at(e, length * ((i * 7927) % 25000) / 25000.0)
