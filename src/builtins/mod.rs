@@ -22,6 +22,7 @@ pub mod surfaces;
 pub mod system;
 pub mod temple;
 pub mod text;
+pub mod trace;
 
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
