@@ -357,20 +357,32 @@ pub fn user_help(it: &mut Interp, name: &str) -> Option<String> {
         )
     };
     let want = name.to_ascii_lowercase();
-    let texts: Vec<std::sync::Arc<str>> = it.sources.iter().rev().map(|s| s.text.clone()).collect();
+    let texts: Vec<std::sync::Arc<str>> = it.sources.iter().map(|s| s.text.clone()).collect();
     let mut doc = None;
-    for text in texts {
+    for (i, text) in texts.iter().enumerate().rev() {
         if !text.to_ascii_lowercase().contains(&want) {
             continue;
         }
-        let Ok(parsed) = super::reader::read_source(&text, 0, &mut it.syms) else {
+        let Ok(parsed) = super::reader::read_source(text, 0, &mut it.syms) else {
             continue;
         };
         let found = parsed.forms.iter().rev().find(|(f, _)| {
             matches!(f.car().as_sym(), Some(S_DEFUN)) && f.cdr().car().as_sym() == Some(sym)
         });
         if let Some((_, span)) = found {
-            doc = Some(comment_above(&text, span.start as usize));
+            let start = span.start as usize;
+            let mut d = comment_above(text, start);
+            // At a REPL, the comment is typically its own entry just before the defun's.
+            if d.is_empty() && text[..start].trim().is_empty() && i > 0 {
+                let prev = format!("{}\n", texts[i - 1].trim_end());
+                if prev
+                    .lines()
+                    .all(|l| l.trim().is_empty() || l.trim_start().starts_with(';'))
+                {
+                    d = comment_above(&prev, prev.len());
+                }
+            }
+            doc = Some(d);
             break;
         }
     }
