@@ -1,6 +1,8 @@
 //! `lispcad serve` at the HTTP level: the page, /drawing.svg (also from another view
 //! direction), /status, /events delivering one event per re-run after a save, a broken script
 //! reported with line:col while the last good drawing stays, and a listener on loopback only.
+//! Then in a real browser: Debian's chromium, headless, driven by playwright-core
+//! (tests/browser/preview.mjs; `bash .ci/setup` installs both).
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
@@ -267,4 +269,46 @@ fn usage_errors() {
         String::from_utf8_lossy(&o.stderr).contains("cannot listen on 127.0.0.1"),
         "{o:?}"
     );
+}
+
+/// The page draws the drawing, updates without a reload after a save, hides a layer, shows the
+/// cursor's coordinates, keeps the drawing and shows the error when the script breaks, and
+/// orbits a 3D drawing. The screenshot of the error state is left in target/serve-preview.png.
+#[test]
+fn page_follows_the_script_in_chromium() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let browser = root.join("tests/browser");
+    assert!(
+        browser.join("node_modules/playwright-core").is_dir()
+            && Path::new("/usr/bin/chromium").exists(),
+        "run `bash .ci/setup`: it installs chromium and tests/browser's playwright-core"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("s.lsp");
+    std::fs::write(&script, GOOD).unwrap();
+    let srv = serve(dir.path(), "s.lsp");
+    let shot = root.join("target/serve-preview.png");
+    let out = Command::new("node")
+        .arg(browser.join("preview.mjs"))
+        .arg(format!("http://127.0.0.1:{}/", srv.port))
+        .arg(&script)
+        .arg(&shot)
+        .current_dir(&browser)
+        .output()
+        .expect("node runs");
+    drop(srv);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_str(stdout.trim()).unwrap();
+    assert_eq!(v["ok"], true);
+    assert_eq!(
+        v["coords"], "x 0.000  y 0.000",
+        "the view's centre is the circle's"
+    );
+    let png = std::fs::read(&shot).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
 }

@@ -25,6 +25,7 @@ pub mod system;
 pub mod sysvars;
 pub mod temple;
 pub mod text;
+pub mod trace;
 pub mod vla;
 
 /// Every registration table, in the order `lispcad doc` lists them.

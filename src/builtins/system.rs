@@ -178,18 +178,18 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!(
         "trace",
         "(trace function...)",
-        "Accepted for compatibility (no tracing headless); returns the last function name.",
+        "Prints each call of the user functions and its result (\"Entering (F 1)\" / \"Result:  2\").",
         0,
         MANY,
-        last_arg
+        crate::builtins::trace::trace
     ),
     builtin!(
         "untrace",
         "(untrace function...)",
-        "Accepted for compatibility; returns the last function name.",
+        "Stops tracing the functions; returns the last function name.",
         0,
         MANY,
-        last_arg
+        crate::builtins::trace::untrace
     ),
     builtin!(
         "vl-doc-set",
@@ -424,24 +424,9 @@ fn help(it: &mut Interp, a: &[Value]) -> LResult {
         Some(Value::Subr(b)) => b.name.to_string(),
         Some(other) => return Err(crate::lang::builtin::bad_arg(it, "symbolp", other)),
     };
-    let text = help_text(&name).unwrap_or_else(|| {
-        let user = it
-            .syms
-            .lookup(&name)
-            .map(|s| it.values[s.idx()].clone())
-            .filter(|v| matches!(v, Value::Func(_)));
-        match user {
-            Some(Value::Func(l)) => {
-                let args = it.prin1_string(&l.source.car());
-                format!(
-                    "({} {})\n  a user function",
-                    name.to_uppercase(),
-                    args.trim_matches(['(', ')'])
-                )
-            }
-            _ => format!("no help for {name}: not a builtin"),
-        }
-    });
+    let text = help_text(&name)
+        .or_else(|| crate::lang::lint::user_help(it, &name))
+        .unwrap_or_else(|| format!("no help for {name}: not a builtin"));
     it.write_out(&format!("{text}\n"));
     Ok(Value::Sym(it.intern("")))
 }
@@ -456,10 +441,6 @@ fn ver(_: &mut Interp, _: &[Value]) -> LResult {
 
 fn noop(_: &mut Interp, _: &[Value]) -> LResult {
     Ok(Value::Nil)
-}
-
-fn last_arg(_: &mut Interp, a: &[Value]) -> LResult {
-    Ok(a.last().cloned().unwrap_or(Value::Nil))
 }
 
 fn doc_set(it: &mut Interp, a: &[Value]) -> LResult {

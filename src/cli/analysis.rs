@@ -150,23 +150,7 @@ fn name_range(text: &str, form: (usize, usize), name: &str) -> (usize, usize) {
     (form.0, form.0)
 }
 
-/// The run of `;` comment lines ending on the line above `offset`, semicolons and one space
-/// stripped (`;;; Draws a hole` reads "Draws a hole").
-pub fn comment_above(text: &str, offset: usize) -> String {
-    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
-    let mut lines: Vec<&str> = Vec::new();
-    for l in text[..line_start].lines().rev() {
-        let t = l.trim();
-        match t.strip_prefix(';') {
-            Some(rest) if !rest.starts_with('|') => {
-                lines.push(rest.trim_start_matches(';').trim());
-            }
-            _ => break,
-        }
-    }
-    lines.reverse();
-    lines.join("\n").trim().to_string()
-}
+pub use crate::lang::lint::comment_above;
 
 /// Characters a symbol token is made of (everything but the reader's delimiters).
 pub fn is_symbol_char(c: char) -> bool {

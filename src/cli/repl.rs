@@ -18,6 +18,7 @@ use rustyline::validate::{ValidationContext, ValidationResult, Validator};
 use rustyline::{Context, Helper};
 
 use super::{diag, Common, EXIT_OK};
+use crate::lang::lint::{function_names, nearest};
 use crate::lang::reader::{scan, Scan};
 use crate::lang::{ErrorKind, Interp, Value};
 
@@ -76,13 +77,10 @@ fn entry_complete(input: &str) -> bool {
     input.trim_start().starts_with(':') || !matches!(scan(input), Scan::Incomplete(_))
 }
 
+/// Entries are assembled by `read_entry`, line by line, so each line is accepted as typed.
 impl Validator for ReplHelper {
-    fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
-        Ok(if entry_complete(ctx.input()) {
-            ValidationResult::Valid(None)
-        } else {
-            ValidationResult::Incomplete
-        })
+    fn validate(&self, _ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
+        Ok(ValidationResult::Valid(None))
     }
 }
 
@@ -138,7 +136,11 @@ pub fn repl(files: &[PathBuf], common: &Common) -> i32 {
 
 fn interactive(it: &mut Interp) -> i32 {
     let names = Rc::new(RefCell::new(completion_names(it)));
-    let config = rustyline::Config::builder().auto_add_history(false).build();
+    // A double Tab lists every candidate, as bash does, instead of cycling through them.
+    let config = rustyline::Config::builder()
+        .auto_add_history(false)
+        .completion_type(rustyline::CompletionType::List)
+        .build();
     let mut ed = match rustyline::Editor::with_config(config) {
         Ok(e) => e,
         Err(e) => {
@@ -158,26 +160,97 @@ fn interactive(it: &mut Interp) -> i32 {
         "lispcad {} — AutoLISP REPL. :help NAME, :load FILE, :save FILE, :quit; Ctrl-D exits.",
         env!("CARGO_PKG_VERSION")
     );
-    loop {
-        match ed.readline(PROMPT) {
-            Ok(line) => {
-                if line.trim().is_empty() {
-                    continue;
-                }
-                let _ = ed.add_history_entry(line.as_str());
-                if let Some(h) = &hist {
-                    let _ = ed.save_history(h);
-                }
-                if !entry(it, &line) {
-                    break;
-                }
-                *names.borrow_mut() = completion_names(it);
-            }
-            Err(rustyline::error::ReadlineError::Interrupted) => continue,
-            Err(_) => break,
+    while let Some(text) = read_entry(&mut ed) {
+        if text.trim().is_empty() {
+            continue;
         }
+        let _ = ed.add_history_entry(text.as_str());
+        if let Some(h) = &hist {
+            let _ = ed.save_history(h);
+        }
+        if !entry(it, &text) {
+            break;
+        }
+        *names.borrow_mut() = completion_names(it);
     }
     EXIT_OK
+}
+
+/// One entry: lines are read until the form is complete, each further line after AutoCAD's
+/// continuation prompt (`(_> ` per open list, `"_> ` in a string). None at end of input;
+/// Ctrl-C abandons the entry (an empty one).
+fn read_entry(
+    ed: &mut rustyline::Editor<ReplHelper, rustyline::history::DefaultHistory>,
+) -> Option<String> {
+    use rustyline::error::ReadlineError;
+    let mut text = String::new();
+    let mut prompt = PROMPT.to_string();
+    loop {
+        match ed.readline(&prompt) {
+            Ok(line) => {
+                if !text.is_empty() {
+                    text.push('\n');
+                }
+                text.push_str(&line);
+                if entry_complete(&text) {
+                    return Some(text);
+                }
+                prompt = continuation_prompt(&text);
+            }
+            Err(ReadlineError::Interrupted) => return Some(String::new()),
+            Err(_) => return None,
+        }
+    }
+}
+
+/// `((_> ` for an entry with two lists open, `"_> ` inside a string.
+fn continuation_prompt(text: &str) -> String {
+    match scan(text) {
+        Scan::Incomplete(e) if e.message.contains("string") => "\"_> ".into(),
+        Scan::Incomplete(e) if e.message.contains("comment") => ";|_> ".into(),
+        _ => format!("{}_> ", "(".repeat(open_lists(text).max(1))),
+    }
+}
+
+/// How many lists are open at the end of `text`, outside strings and comments.
+fn open_lists(text: &str) -> usize {
+    let mut depth: usize = 0;
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth = depth.saturating_sub(1),
+            '"' => {
+                while let Some(c) = chars.next() {
+                    match c {
+                        '\\' => {
+                            chars.next();
+                        }
+                        '"' => break,
+                        _ => {}
+                    }
+                }
+            }
+            ';' if chars.peek() == Some(&'|') => {
+                let mut prev = ' ';
+                for c in chars.by_ref() {
+                    if prev == '|' && c == ';' {
+                        break;
+                    }
+                    prev = c;
+                }
+            }
+            ';' => {
+                for c in chars.by_ref() {
+                    if c == '\n' {
+                        break;
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    depth
 }
 
 fn piped(it: &mut Interp) -> i32 {
@@ -245,10 +318,17 @@ fn entry(it: &mut Interp, text: &str) -> bool {
             if !shown.is_empty() {
                 println!("{shown}");
             }
+            if v.is_nil() {
+                if let Some(h) = unbound_hint(it, text) {
+                    eprintln!("{h}");
+                }
+            }
+            publish(it, None);
         }
         Err(e) if e.kind == ErrorKind::Exit => return false,
         Err(e) => {
             eprintln!("{}", diag::render_error(it, &e));
+            publish(it, Some(&e));
         }
     }
     refresh_preview(it);
@@ -263,20 +343,25 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
         "q" | "quit" | "exit" => return false,
         "help" | "h" => {
             if arg.is_empty() {
-                println!(":help NAME   signature and description of a builtin");
-                println!(":load FILE   load and evaluate a .lsp file");
-                println!(":save FILE   write the drawing (.svg or .dxf)");
+                println!(":help NAME     signature and description of a builtin or your defun");
+                println!(":apropos TEXT  the builtins and functions whose names contain TEXT");
+                println!(":inspect EXPR  the properties of a value (curve, surface, mesh, entity)");
+                println!(":load FILE     load and evaluate a .lsp file");
+                println!(":save FILE     write the drawing (.svg or .dxf)");
                 println!(
                     ":preview FILE  rewrite FILE (.svg) after every evaluation; :preview off stops"
                 );
-                println!(":quit        leave (or Ctrl-D)");
+                println!(
+                    ":serve [PORT]  show the drawing in a browser, updated after every evaluation"
+                );
+                println!(":quit          leave (or Ctrl-D)");
             } else {
-                match crate::builtins::system::help_text(arg) {
-                    Some(t) => println!("{t}"),
-                    None => println!("no help for {arg}: not a builtin"),
-                }
+                println!("{}", help_or_suggestion(it, arg));
             }
         }
+        "apropos" | "a" => apropos(it, arg),
+        "inspect" | "i" => inspect(it, arg),
+        "serve" => serve(it, arg),
         "load" => match it.load_file(arg) {
             Ok(v) => println!("{}", it.prin1_string(&v)),
             Err(e) => eprintln!("{}", diag::render_error(it, &e)),
@@ -301,6 +386,155 @@ fn command(it: &mut Interp, cmd: &str) -> bool {
         other => eprintln!("unknown command :{other} (try :help)"),
     }
     true
+}
+
+/// A builtin's help, a user defun's, or "no help" with the nearest name.
+fn help_or_suggestion(it: &mut Interp, name: &str) -> String {
+    if let Some(t) = crate::builtins::system::help_text(name) {
+        return t;
+    }
+    if let Some(t) = crate::lang::lint::user_help(it, name) {
+        return t;
+    }
+    match nearest(name, function_names(it)) {
+        Some(n) => format!(
+            "no help for {name}: not a builtin or a defun; did you mean {}?",
+            n.to_lowercase()
+        ),
+        None => format!("no help for {name}: not a builtin or a defun"),
+    }
+}
+
+/// `:apropos TEXT`: every builtin and user function whose name contains TEXT, with its help's
+/// first line.
+fn apropos(it: &mut Interp, text: &str) {
+    let want = text.to_lowercase();
+    let mut names: Vec<String> = function_names(it)
+        .map(str::to_lowercase)
+        .filter(|n| n.contains(&want))
+        .collect();
+    names.sort();
+    names.dedup();
+    if names.is_empty() {
+        println!("nothing matches {text}");
+    }
+    for n in names {
+        let help = help_or_suggestion(it, &n);
+        let mut lines = help.lines();
+        let sig = lines.next().unwrap_or("");
+        let doc = lines.next().unwrap_or("").trim();
+        println!("{sig:<40} {doc}");
+    }
+}
+
+/// `:inspect EXPR`: the value, its type, and every property query that applies to it.
+fn inspect(it: &mut Interp, expr: &str) {
+    let v = match it.eval_source("<inspect>", expr) {
+        Ok(v) => v,
+        Err(e) => {
+            eprintln!("{}", diag::render_error(it, &e));
+            return;
+        }
+    };
+    it.flush_out();
+    println!("{}", it.prin1_string(&v));
+    let slot = "LISPCAD-INSPECTED";
+    it.set_global(slot, v);
+    const PROPERTIES: [(&str, &str); 11] = [
+        ("type", "(type ~)"),
+        ("length", "(curve-length ~)"),
+        ("closed", "(curve-closed-p ~)"),
+        ("start", "(point-at ~ 0.0)"),
+        ("end", "(point-at ~ 1.0)"),
+        ("area", "(area ~)"),
+        ("surface area", "(surface-area ~)"),
+        ("bounding box", "(bbox ~)"),
+        ("boundary loops", "(length (surface-boundary ~))"),
+        ("entity", "(entget ~)"),
+        ("length (list)", "(if (listp ~) (length ~) (exit))"),
+    ];
+    for (label, q) in PROPERTIES {
+        let q = q.replace('~', slot);
+        // Queries that do not apply fail; they are skipped quietly.
+        let budget = it.ext::<ReplOptions>().0.max_steps;
+        it.set_max_steps(budget.or(Some(10_000_000)));
+        if let Ok(r) = it.eval_source("<inspect>", &q) {
+            println!("  {label:<15} {}", it.prin1_string(&r));
+        }
+    }
+    it.set_global(slot, Value::Nil);
+    let budget = options(it).max_steps;
+    it.set_max_steps(budget);
+}
+
+/// The preview server started by `:serve`; every evaluation publishes into it.
+#[derive(Default)]
+struct Serving(Option<std::sync::Arc<super::serve::Shared>>);
+
+fn serve(it: &mut Interp, arg: &str) {
+    if let Some(_s) = &it.ext::<Serving>().0 {
+        println!("already serving (one preview per session)");
+        return;
+    }
+    let port = if arg.is_empty() {
+        7878
+    } else {
+        match arg.parse::<u16>() {
+            Ok(p) => p,
+            Err(_) => {
+                eprintln!("error: :serve PORT: `{arg}` is not a port number");
+                return;
+            }
+        }
+    };
+    let shared = std::sync::Arc::new(super::serve::Shared::default());
+    match super::serve::start(port, shared.clone()) {
+        Ok(addr) => {
+            shared.publish(super::serve::snapshot(it));
+            it.ext::<Serving>().0 = Some(shared);
+            println!("serving http://{addr}/ (updated after every evaluation)");
+        }
+        Err(e) => eprintln!("error: cannot listen on 127.0.0.1:{port}: {e}"),
+    }
+}
+
+/// After an evaluation: the drawing, or the error over the last good drawing, to the page.
+fn publish(it: &mut Interp, error: Option<&crate::lang::LispError>) {
+    let Some(shared) = it.ext::<Serving>().0.clone() else {
+        return;
+    };
+    match error {
+        Some(e) => shared.publish(Err(super::serve::Failure::from_error(it, e))),
+        None => shared.publish(super::serve::snapshot(it)),
+    }
+}
+
+/// For an entry that is a bare symbol with no value: its nearest bound name, if any.
+fn unbound_hint(it: &Interp, text: &str) -> Option<String> {
+    let name = text.trim();
+    if name.is_empty() || !name.chars().all(crate::cli::analysis::is_symbol_char) {
+        return None;
+    }
+    if crate::lang::reader::parse_number(name).is_some() {
+        return None;
+    }
+    if let Some(s) = it.syms.lookup(name) {
+        if it.values.get(s.idx()).is_some_and(Value::truthy) {
+            return None;
+        }
+    }
+    let bound = it
+        .syms
+        .all()
+        .filter(|(s, n)| !n.is_empty() && it.values.get(s.idx()).is_some_and(Value::truthy))
+        .map(|(_, n)| n);
+    nearest(name, bound).map(|n| {
+        format!(
+            "; {} has no value; did you mean {}?",
+            name.to_uppercase(),
+            n.to_uppercase()
+        )
+    })
 }
 
 #[cfg(test)]

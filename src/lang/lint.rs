@@ -322,6 +322,77 @@ impl Ctx<'_> {
     }
 }
 
+/// The run of `;` comment lines ending on the line above `offset`, semicolons and one space
+/// stripped (`;;; Draws a hole` reads "Draws a hole"): a defun's documentation by convention.
+pub fn comment_above(text: &str, offset: usize) -> String {
+    let offset = offset.min(text.len());
+    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let mut lines: Vec<&str> = Vec::new();
+    for l in text[..line_start].lines().rev() {
+        match l.trim().strip_prefix(';') {
+            Some(rest) if !rest.starts_with('|') => lines.push(rest.trim_start_matches(';').trim()),
+            _ => break,
+        }
+    }
+    lines.reverse();
+    lines.join("\n").trim().to_string()
+}
+
+/// Help for a user function: `(NAME params / locals)` and the comment above its latest `defun`
+/// among the sources read (files, REPL entries), else "a user function". None when `name` is
+/// not bound to a user function.
+pub fn user_help(it: &mut Interp, name: &str) -> Option<String> {
+    let sym = it.syms.lookup(name)?;
+    let Some(Value::Func(l)) = it.values.get(sym.idx()) else {
+        return None;
+    };
+    let args = it.prin1_string(&l.source.car());
+    let shown = it.syms.name(sym).to_string();
+    let sig = if args == "nil" {
+        format!("({shown})")
+    } else {
+        format!(
+            "({shown} {})",
+            args.trim_start_matches('(').trim_end_matches(')')
+        )
+    };
+    let want = name.to_ascii_lowercase();
+    let texts: Vec<std::sync::Arc<str>> = it.sources.iter().map(|s| s.text.clone()).collect();
+    let mut doc = None;
+    for (i, text) in texts.iter().enumerate().rev() {
+        if !text.to_ascii_lowercase().contains(&want) {
+            continue;
+        }
+        let Ok(parsed) = super::reader::read_source(text, 0, &mut it.syms) else {
+            continue;
+        };
+        let found = parsed.forms.iter().rev().find(|(f, _)| {
+            matches!(f.car().as_sym(), Some(S_DEFUN)) && f.cdr().car().as_sym() == Some(sym)
+        });
+        if let Some((_, span)) = found {
+            let start = span.start as usize;
+            let mut d = comment_above(text, start);
+            // At a REPL, the comment is typically its own entry just before the defun's.
+            if d.is_empty() && text[..start].trim().is_empty() && i > 0 {
+                let prev = format!("{}\n", texts[i - 1].trim_end());
+                if prev
+                    .lines()
+                    .all(|l| l.trim().is_empty() || l.trim_start().starts_with(';'))
+                {
+                    d = comment_above(&prev, prev.len());
+                }
+            }
+            doc = Some(d);
+            break;
+        }
+    }
+    it.sync_cells();
+    let doc = doc
+        .filter(|d| !d.is_empty())
+        .unwrap_or_else(|| "a user function".into());
+    Some(format!("{sig}\n  {}", doc.replace('\n', "\n  ")))
+}
+
 /// The names bound to functions in an interpreter: builtins and loaded defuns.
 pub fn function_names(it: &Interp) -> impl Iterator<Item = &str> {
     it.syms.all().filter_map(|(s, n)| {

@@ -94,6 +94,18 @@ try {
     // Fixed again: the error goes away.
     fs.writeFileSync(script, original);
     await page.locator("#error").waitFor({ state: "hidden", timeout: 20000 });
+    // A 3D drawing offers the orbit: Shift-drag re-renders it from another direction.
+    fs.writeFileSync(script, "(draw (line '(0 0 0) '(10 0 0)))\n(draw (line '(0 0 0) '(0 0 10)))\n");
+    await page.locator("#orbit").waitFor({ state: "visible", timeout: 20000 });
+    await page.waitForFunction(() => document.body.dataset.drawn === document.body.dataset.runs);
+    const plan = await page.evaluate(() => document.querySelector("#view svg").outerHTML);
+    await page.keyboard.down("Shift");
+    await page.mouse.move(box.x + 300, box.y + 300);
+    await page.mouse.down();
+    await page.mouse.move(box.x + 360, box.y + 260, { steps: 6 });
+    await page.mouse.up();
+    await page.keyboard.up("Shift");
+    await page.waitForFunction((p) => document.querySelector("#view svg").outerHTML !== p, plan, { timeout: 20000 });
     if (errors.length) await fail("page errors: " + errors.join("; "));
     console.log(JSON.stringify({ ok: true, latency_ms: latency, paths, layers, coords, error: msg }));
   }

@@ -83,6 +83,9 @@ fn main_loop(conn: &Connection) -> Result<(), Error> {
         it: Interp::new(),
         docs: HashMap::new(),
     };
+    // Documents changed since their diagnostics were last published. They are published once
+    // the queue is empty: a burst of keystrokes is analysed once, for its last text.
+    let mut dirty: Vec<Uri> = Vec::new();
     for msg in &conn.receiver {
         match msg {
             Message::Request(req) => {
@@ -94,10 +97,17 @@ fn main_loop(conn: &Connection) -> Result<(), Error> {
             }
             Message::Notification(n) => {
                 if let Some(uri) = handle_notification(&mut st, n)? {
-                    publish(conn, &mut st, uri)?;
+                    if !dirty.iter().any(|u| u.as_str() == uri.as_str()) {
+                        dirty.push(uri);
+                    }
                 }
             }
             Message::Response(_) => {}
+        }
+        if conn.receiver.is_empty() {
+            for uri in dirty.drain(..) {
+                publish(conn, &mut st, uri)?;
+            }
         }
     }
     Ok(())
