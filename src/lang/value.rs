@@ -403,6 +403,9 @@ impl Value {
     /// `equal` when at most one side is a cons (then they differ).
     fn atom_equal(&self, other: &Value, fuzz: f64) -> bool {
         match (self, other) {
+            // The common keys of association lists, without the conversion to reals.
+            (Value::Int(x), Value::Int(y)) if fuzz == 0.0 => x == y,
+            (Value::Sym(x), Value::Sym(y)) => x == y,
             (Value::Str(x), Value::Str(y)) => x == y,
             (Value::Obj(x), Value::Obj(y)) => Rc::ptr_eq(x, y) || x.equal(y.as_ref().as_ref()),
             _ => {
