@@ -423,9 +423,12 @@ fn handles_are_unique_and_below_handseed() {
 fn save_errors_are_clear_and_leave_nothing() {
     let d = mixed_drawing();
     let dir = tempfile::tempdir().unwrap();
-    let bad = save(&d, &dir.path().join("a.pdf"), &OutputOptions::default());
+    let bad = save(&d, &dir.path().join("a.jpg"), &OutputOptions::default());
     assert!(matches!(bad, Err(OutputError::UnknownFormat(_))));
-    assert!(bad.unwrap_err().to_string().contains(".svg or .dxf"));
+    assert!(bad
+        .unwrap_err()
+        .to_string()
+        .contains(".svg, .dxf, .pdf or .png"));
     let missing = save(
         &d,
         &dir.path().join("no/such/a.dxf"),

@@ -238,7 +238,7 @@ def limited_slope(a, b, ha, hb):
     if a * b <= 0.0:
         return 0.0
     bessel = (hb * a + ha * b) / (ha + hb)
-    cap = 2.0 * min(abs(a), abs(b))
+    cap = 2.0 * (1.0 - 1e-6) * min(abs(a), abs(b))
     return max(-cap, min(cap, bessel))
 
 

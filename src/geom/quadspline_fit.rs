@@ -179,7 +179,9 @@ fn limited_slope(a: f64, b: f64, ha: f64, hb: f64) -> f64 {
         return 0.0;
     }
     let bessel = (hb * a + ha * b) / (ha + hb);
-    let cap = 2.0 * a.abs().min(b.abs());
+    // Just under the bound: at exactly 2·min on both ends of an interval the two inner
+    // controls would meet and the joint between them would have no tangent.
+    let cap = 2.0 * (1.0 - 1e-6) * a.abs().min(b.abs());
     bessel.clamp(-cap, cap)
 }
 
@@ -226,6 +228,27 @@ pub(crate) fn hermite_segments(
 ) -> Vec<[DVec3; 3]> {
     let n = pts.len();
     let intervals = if closed { n } else { n - 1 };
+    // A tangent so small that a leg is lost in rounding on one side would leave a leg without
+    // a reliable direction: it is a corner, both legs zero.
+    let leg_vanishes = |j: usize, h: f64| {
+        let leg = (tangents[j] * (0.25 * h)).length();
+        h > 0.0 && leg <= 1e-9 * h.max(pts[j].abs().max_element())
+    };
+    let tangents: Vec<DVec3> = (0..n)
+        .map(|j| {
+            let before = if j > 0 || closed {
+                h[(j + n - 1) % n]
+            } else {
+                0.0
+            };
+            let after = if j < intervals { h[j] } else { 0.0 };
+            if leg_vanishes(j, before) || leg_vanishes(j, after) {
+                DVec3::ZERO
+            } else {
+                tangents[j]
+            }
+        })
+        .collect();
     let mut segs = Vec::with_capacity(2 * intervals);
     for j in 0..intervals {
         let k = (j + 1) % n;
