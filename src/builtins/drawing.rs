@@ -268,6 +268,8 @@ pub fn open_into(it: &mut Interp, path: &Path, recover: bool) -> Result<Option<S
     let note = crate::output::dxfin::recover_note(path, &d);
     *drawing(it) = d;
     forget_pending(it);
+    // DWGNAME/DWGPREFIX name the opened drawing, as in AutoCAD.
+    it.ext::<SysVars>().set_drawing_path(path);
     Ok(note)
 }
 
