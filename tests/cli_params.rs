@@ -31,7 +31,8 @@ fn params_lists_the_temple_parameters() {
         lines[4].split_whitespace().take(3).collect::<Vec<_>>(),
         ["BENDANG", "40.0", "0..90"]
     );
-    assert_eq!(lines.len(), 10);
+    // Header plus L1 L2 R BENDANG HINGEW MINW TIPW TIPR BASEX BASEY.
+    assert_eq!(lines.len(), 11);
 }
 
 #[test]

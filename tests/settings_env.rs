@@ -18,7 +18,7 @@ fn settings_persist_in_the_per_user_file() {
     // The only test in this binary: setting the variable cannot race another test.
     std::env::set_var("LISPCAD_SETTINGS", &file);
     std::env::set_var("LISPCAD_TEST_FROM_ENV", "from-env");
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     assert_eq!(eval(&mut it, "(getenv \"MyRoutineDir\")"), "nil");
     assert_eq!(
         eval(&mut it, "(setenv \"MyRoutineDir\" \"C:\\\\tools\\tx\")"),
@@ -42,7 +42,7 @@ fn settings_persist_in_the_per_user_file() {
         ),
         "\"12\""
     );
-    let mut fresh = Interp::new();
+    let mut fresh = lispcad::builtins::new_interp();
     assert_eq!(
         eval(&mut fresh, "(getenv \"MyRoutineDir\")"),
         "\"C:\\\\tools\\tx\""

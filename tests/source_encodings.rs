@@ -16,7 +16,7 @@ fn load_and_probe(bytes: &[u8], setup: &str, probe: &str) -> String {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("src.lsp");
     std::fs::write(&path, bytes).unwrap();
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     it.base_dir = Some(dir.path().to_path_buf());
     let set = eval(&mut it, setup);
     assert!(!set.starts_with("error"), "{set}");
@@ -88,7 +88,7 @@ fn utf8_with_bom_and_utf16() {
 fn read_line_decodes_the_code_page_and_files_round_trip() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("in.txt"), b"Stra\xDFe\r\nzwei\n").unwrap();
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     it.ext::<lispcad::builtins::io::FsPolicy>().allow_all = true;
     it.base_dir = Some(dir.path().to_path_buf());
     let code = "(setq f (open \"in.txt\" \"r\") a (read-line f) b (read-line f) c (read-line f))
@@ -101,7 +101,7 @@ fn read_line_decodes_the_code_page_and_files_round_trip() {
 
 #[test]
 fn unknown_code_page_is_rejected() {
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     assert_eq!(
         eval(&mut it, "(setvar \"DWGCODEPAGE\" \"ANSI_12\")"),
         "error: AutoCAD variable setting rejected: \"DWGCODEPAGE\" \"ANSI_12\""

@@ -10,7 +10,7 @@ use lispcad::geom::quadspline::QuadSpline;
 use lispcad::geom::temple::{bend_spline, centerline, TempleParams};
 use lispcad::geom::ParamCurve;
 use lispcad::lang::eval::with_eval_stack;
-use lispcad::lang::{Interp, Value};
+use lispcad::lang::Value;
 
 const SCRIPT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/temple.lsp");
 const VARIANTS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/variants.csv");
@@ -43,7 +43,7 @@ fn get(vars: &[(String, f64)], k: &str, default: f64) -> f64 {
 
 fn run(vars: Vec<(String, f64)>) -> Temple {
     with_eval_stack(move || {
-        let mut it = Interp::new();
+        let mut it = lispcad::builtins::new_interp();
         it.out = Box::new(std::io::sink());
         for (k, v) in &vars {
             it.set_global(k, Value::Real(*v));

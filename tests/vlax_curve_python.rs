@@ -7,7 +7,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
-use lispcad::lang::{Interp, Value};
+use lispcad::lang::Value;
 use serde_json::{json, Value as Json};
 
 const FRACTIONS: [f64; 7] = [0.0, 0.1, 0.25, 0.5, 0.61, 0.9, 1.0];
@@ -162,7 +162,7 @@ fn vlax_curve_agrees_with_ezdxf_and_numpy() {
     );
     let refs: Vec<Json> = serde_json::from_slice(&out.stdout).unwrap();
 
-    let mut it = Interp::new();
+    let mut it = lispcad::builtins::new_interp();
     let mut eval = |code: &str| -> Value {
         it.eval_source("<test>", code)
             .unwrap_or_else(|e| panic!("{code}: {}", e.message))

@@ -74,15 +74,6 @@ pub fn new_interp() -> Interp {
     it
 }
 
-impl Interp {
-    /// `new_interp()` under its old name, for callers not yet switched (src/cli/batch.rs is being
-    /// restructured on another branch; the switch happens at that merge).
-    #[allow(clippy::new_without_default)]
-    pub fn new() -> Self {
-        new_interp()
-    }
-}
-
 /// Finds a builtin's descriptor by name (case-insensitive).
 pub fn find(name: &str) -> Option<&'static Builtin> {
     tables()

@@ -30,7 +30,7 @@ pub struct ScriptNames {
 /// Reads the script's forms (without running them) and collects its names.
 pub fn scan(text: &str) -> Result<ScriptNames, String> {
     // An interpreter only for its symbol table and printer: nothing is evaluated.
-    let mut it = Interp::new();
+    let mut it = crate::builtins::new_interp();
     let parsed = read_source(text, 0, &mut it.syms).map_err(|e| e.message)?;
     it.sync_cells();
     let mut out = ScriptNames::default();

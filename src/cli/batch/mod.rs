@@ -17,7 +17,6 @@ use rayon::prelude::*;
 use super::{diag, Common, EXIT_OK, EXIT_SCRIPT_ERROR, EXIT_USAGE};
 use crate::lang::eval::{mark_eval_thread, read_error, EVAL_STACK_SIZE};
 use crate::lang::reader::read_source;
-use crate::lang::Interp;
 
 pub mod csv;
 pub mod runner;
@@ -153,7 +152,7 @@ fn load_script(args: &BatchArgs) -> Result<(String, String), i32> {
         }
     };
     let name = args.file.display().to_string();
-    let mut it = Interp::new();
+    let mut it = crate::builtins::new_interp();
     let id = it.add_source(&name, &text);
     if let Err(e) = read_source(&text, id, &mut it.syms) {
         diag::print_error(&it, &read_error(e, id));

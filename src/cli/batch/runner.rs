@@ -58,7 +58,7 @@ impl Runner<'_> {
         PARSED.with(|cell| {
             let mut slot = cell.borrow_mut();
             if slot.is_none() {
-                let mut tmpl = Interp::new();
+                let mut tmpl = crate::builtins::new_interp();
                 match read_source(self.text, 0, &mut tmpl.syms) {
                     Ok(p) => *slot = Some((tmpl.syms.clone(), p)),
                     Err(e) => return Outcome::Failed(e.message),

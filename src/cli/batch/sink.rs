@@ -154,32 +154,6 @@ fn sanitize(s: &str) -> String {
         .collect()
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::cli::batch::source::Cell;
-
-    #[test]
-    fn patterns() {
-        let row = Row {
-            number: 3,
-            values: vec![
-                ("name".into(), Cell::bare("big/../x")),
-                ("L1".into(), Cell::bare("140")),
-            ],
-            fields: vec![("stem".into(), "part".into())],
-            open: None,
-        };
-        assert_eq!(
-            expand_pattern("out/{name}-{l1}-{row}-{stem}.dxf", &row).unwrap(),
-            "out/big_.._x-140-3-part.dxf"
-        );
-        assert!(expand_pattern("{nope}.dxf", &row).is_err());
-        assert!(expand_pattern("{L1.dxf", &row).is_err());
-        assert_eq!(pattern_fields("o/{a}-{row}-{B}.svg"), ["a", "B"]);
-    }
-}
-
 /// `--sheet FILE.pdf|FILE.svg`: every successful row's drawing, labelled, on one contact
 /// sheet at a common scale, written once all rows have run.
 pub struct ContactSheet {
@@ -240,5 +214,31 @@ impl Sink for ContactSheet {
         let bytes = crate::output::sheet::compose(&rows, format).map_err(|e| e.to_string())?;
         crate::output::atomic::write_atomic(&self.path, &bytes)
             .map_err(|e| format!("cannot write {}: {e}", self.path.display()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cli::batch::source::Cell;
+
+    #[test]
+    fn patterns() {
+        let row = Row {
+            number: 3,
+            values: vec![
+                ("name".into(), Cell::bare("big/../x")),
+                ("L1".into(), Cell::bare("140")),
+            ],
+            fields: vec![("stem".into(), "part".into())],
+            open: None,
+        };
+        assert_eq!(
+            expand_pattern("out/{name}-{l1}-{row}-{stem}.dxf", &row).unwrap(),
+            "out/big_.._x-140-3-part.dxf"
+        );
+        assert!(expand_pattern("{nope}.dxf", &row).is_err());
+        assert!(expand_pattern("{L1.dxf", &row).is_err());
+        assert_eq!(pattern_fields("o/{a}-{row}-{B}.svg"), ["a", "B"]);
     }
 }

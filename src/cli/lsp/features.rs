@@ -439,7 +439,7 @@ mod tests {
 
     #[test]
     fn hover_shows_builtin_doc_and_user_defun_comment() {
-        let mut it = Interp::new();
+        let mut it = crate::builtins::new_interp();
         let s = snap(";; Degrees to radians.\n(defun dtr (a) (* pi (/ a 180.0)))\n(dtr 90)\n(polar '(0 0) 0 1)\n");
         let h = hover(&mut it, &s, Position::new(2, 2)).unwrap();
         let HoverContents::Markup(m) = h.contents else {
@@ -460,7 +460,7 @@ mod tests {
 
     #[test]
     fn completion_offers_builtins_defuns_and_variables() {
-        let mut it = Interp::new();
+        let mut it = crate::builtins::new_interp();
         let s = snap("(defun draw-hole (r) r)\n(setq hole-count 3)\n(dr)");
         let items = completion(&mut it, &s, Position::new(2, 3));
         let labels: Vec<&str> = items.iter().map(|i| i.label.as_str()).collect();
@@ -479,7 +479,7 @@ mod tests {
 
     #[test]
     fn symbols_and_folding() {
-        let mut it = Interp::new();
+        let mut it = crate::builtins::new_interp();
         let s = snap(";; a\n;; b\n(defun f (x)\n  (* x 2))\n(setq y 1 z 2)\n");
         let syms = document_symbols(&mut it, &s);
         let names: Vec<&str> = syms.iter().map(|d| d.name.as_str()).collect();

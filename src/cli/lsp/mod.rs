@@ -80,7 +80,7 @@ struct State {
 
 fn main_loop(conn: &Connection) -> Result<(), Error> {
     let mut st = State {
-        it: Interp::new(),
+        it: crate::builtins::new_interp(),
         docs: HashMap::new(),
     };
     // Documents changed since their diagnostics were last published. They are published once
