@@ -68,9 +68,11 @@ def run(cmd):
 
 print(f"load average before: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 res = {}  # (lang, prog) -> list of (wall, cpu, rss)
-for _ in range(reps):
+for rep in range(reps):
+    # Rotate the order each rep: the first run of a group pays a cold start.
+    order = langs[rep % len(langs):] + langs[:rep % len(langs)]
     for p in progs:
-        for name, cmd, ext in langs:
+        for name, cmd, ext in order:
             res.setdefault((name, p), []).append(run(cmd + [os.path.join(lang_dir, f"{p}.{ext}")]))
 print(f"load average after:  {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 os.remove(rss_file)
