@@ -24,28 +24,38 @@ use crate::builtins::drawing::drawing;
 pub mod dxf_list;
 #[path = "entities/make.rs"]
 pub mod make;
+pub mod objects;
 #[path = "entities/select.rs"]
 pub mod select;
+pub mod select_area;
 #[path = "entities/tables.rs"]
 pub mod tables;
 pub mod tag_list;
 
 pub static BUILTINS: &[Builtin] = &[
     builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER table record) from a DXF association list; returns the list, or nil when a required group is missing or the data is invalid.", 0, 1, make::entmake),
-    builtin!("entget", "(entget ename [applist])", "The DXF association list of an entity (nil if deleted).", 1, 2, entget),
+    builtin!("entget", "(entget ename [applist])", "The DXF association list of an entity, object or table record (nil if deleted); with applist, the extended data of the matching registered applications as a final (-3 (\"APP\" ...)) group.", 1, 2, entget),
     builtin!("entmod", "(entmod dxf-list)", "Modifies the entity named by the list's -1 group (groups absent from the list keep their values); returns the list or nil.", 1, 1, make::entmod),
     builtin!("entupd", "(entupd ename)", "Accepted for compatibility (the drawing is always up to date); returns ename.", 1, 1, entupd),
     builtin!("entdel", "(entdel ename)", "Deletes an entity, or restores it when it is deleted; returns ename.", 1, 1, entdel),
     builtin!("entlast", "(entlast)", "The name of the last live entity, or nil.", 0, 0, entlast),
     builtin!("entnext", "(entnext [ename])", "The first entity, or the one after ename (walking a POLYLINE's VERTEX and SEQEND sub-entities); nil at the end.", 0, 1, entnext),
     builtin!("handent", "(handent handle)", "The entity name for a handle string, or nil.", 1, 1, handent),
-    builtin!("ssget", "(ssget [mode] [pt1 [pt2]] [filter])", "A selection set: mode \"X\" (all, with an optional filter list), \"A\", \"L\" (last), \"P\" (previous); nil when nothing matches. Interactive modes are an error in a headless run.", 0, 4, select::ssget),
+    builtin!("ssget", "(ssget [mode] [pt1 [pt2]] [filter])", "A selection set: mode \"X\" (all, with an optional filter list), \"A\", \"L\" (last), \"P\" (previous), \"W\"/\"C\" pt1 pt2 (window: entirely inside; crossing: inside or crossing), \"WP\"/\"CP\"/\"F\" point-list (polygons, fence); nil when nothing matches. Interactive modes are an error in a headless run.", 0, 4, select::ssget),
     builtin!("sslength", "(sslength ss)", "The number of entities in a selection set.", 1, 1, select::sslength),
     builtin!("ssname", "(ssname ss index)", "The entity at index (from 0) in a selection set, or nil.", 2, 2, select::ssname),
     builtin!("ssadd", "(ssadd [ename [ss]])", "A new empty set, a new set with ename, or ss with ename added (returns ss).", 0, 2, select::ssadd),
     builtin!("ssdel", "(ssdel ename ss)", "Removes ename from ss; returns ss, or nil if it was not there.", 2, 2, select::ssdel),
     builtin!("ssmemb", "(ssmemb ename ss)", "ename if it is in ss, else nil.", 2, 2, select::ssmemb),
     builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a table entry (LAYER, LTYPE, STYLE; an opened drawing's every table and BLOCK) as a DXF list, or nil.", 2, 3, tables::tblsearch),
+    builtin!("tblobjname", "(tblobjname table name)", "The entity name of a symbol-table record (LAYER, LTYPE, STYLE, APPID, BLOCK...), or nil.", 2, 2, objects::tblobjname),
+    builtin!("regapp", "(regapp appname)", "Registers an application name for extended data (the APPID table); returns the name, or nil if it is already registered or invalid.", 1, 1, objects::regapp),
+    builtin!("namedobjdict", "(namedobjdict)", "The entity name of the drawing's named-object dictionary (the root of its dictionaries).", 0, 0, objects::namedobjdict),
+    builtin!("dictsearch", "(dictsearch ename key [setnext])", "The entget list of a dictionary's entry named key (case-insensitive), or nil; setnext makes dictnext continue after it.", 2, 3, objects::dictsearch),
+    builtin!("dictnext", "(dictnext ename [rewind])", "The entget list of a dictionary's next entry (the first with rewind), or nil after the last.", 1, 2, objects::dictnext),
+    builtin!("dictadd", "(dictadd ename key newobj)", "Adds an object (an XRECORD or DICTIONARY made by entmakex) to a dictionary under key, making the dictionary its owner; returns newobj, or nil if key is taken.", 3, 3, objects::dictadd),
+    builtin!("dictremove", "(dictremove ename key)", "Removes an entry from a dictionary (the object stays, without an owner, and is not saved); returns its name, or nil.", 2, 2, objects::dictremove),
+    builtin!("dictrename", "(dictrename ename oldkey newkey)", "Renames a dictionary entry; returns newkey, or nil if oldkey is missing or newkey taken.", 3, 3, objects::dictrename),
     builtin!("tblnext", "(tblnext table [rewind])", "The next record of a table (the first with rewind), or nil at the end.", 1, 2, tables::tblnext),
 ];
 
@@ -163,7 +173,28 @@ fn vertex_count(d: &Drawing, handle: u64) -> Option<u32> {
 
 fn entget(it: &mut Interp, a: &[Value]) -> LResult {
     let e = ename_arg(it, &a[0])?;
-    Ok(dxf_list::entity_list(it, e).unwrap_or(Value::Nil))
+    let Some(list) = dxf_list::entity_list(it, e) else {
+        return Ok(Value::Nil);
+    };
+    let apps: Vec<String> = match a.get(1).filter(|v| v.truthy()) {
+        Some(l) => it
+            .list_arg(l)?
+            .iter()
+            .map(|v| it.string(&v).map(str::to_string))
+            .collect::<Result<_, _>>()?,
+        None => return Ok(list),
+    };
+    if e.sub != 0 {
+        return Ok(list);
+    }
+    match objects::xdata_group(it, e.handle, &apps) {
+        Some(x) => {
+            let mut items: Vec<Value> = list.iter().cloned().collect();
+            items.push(x);
+            Ok(Value::list(items))
+        }
+        None => Ok(list),
+    }
 }
 
 fn entupd(it: &mut Interp, a: &[Value]) -> LResult {
@@ -220,7 +251,7 @@ fn handent(it: &mut Interp, a: &[Value]) -> LResult {
     };
     let d = drawing(it);
     // A deleted entity keeps its name for the session, as in AutoCAD.
-    if d.get(h).is_some() || d.is_deleted(h) {
+    if d.get(h).is_some() || d.is_deleted(h) || d.object(h).is_some() {
         Ok(ename_value(it, h))
     } else {
         Ok(Value::Nil)

@@ -466,6 +466,11 @@ impl<'a> Compiler<'a> {
                         if !params.contains(s) && !locals.contains(s) {
                             locals.push(*s)
                         }
+                    } else if params.contains(s) {
+                        // The first occurrence wins here too: a repeated parameter's
+                        // argument goes to NIL's value cell, which no code reads (the
+                        // reader makes `nil` the value nil, never this symbol).
+                        params.push(S_NIL)
                     } else {
                         params.push(*s)
                     }

@@ -99,6 +99,8 @@ pub struct Drawing {
     current_layer: String,
     /// The file the drawing was opened from, minus its entities.
     document: Option<Box<DxfDocument>>,
+    /// Extended data, registered applications and objects (`objects.rs`).
+    pub(super) extras: super::objects::Extras,
 }
 
 impl Default for Drawing {
@@ -121,12 +123,24 @@ impl Drawing {
             next_handle: FIRST_HANDLE,
             current_layer: "0".to_string(),
             document: None,
+            extras: Default::default(),
         }
     }
 
     /// The file this drawing was opened from (its tables, blocks, objects...), if any.
     pub fn document(&self) -> Option<&DxfDocument> {
         self.document.as_deref()
+    }
+
+    pub fn document_mut(&mut self) -> Option<&mut DxfDocument> {
+        self.document.as_deref_mut()
+    }
+
+    /// A fresh handle for a record that is not an entity (dictionary, XRECORD, APPID...).
+    pub fn alloc_handle(&mut self) -> u64 {
+        let h = self.next_handle;
+        self.next_handle += 1;
+        h
     }
 
     pub fn set_document(&mut self, doc: DxfDocument) {
@@ -136,6 +150,11 @@ impl Drawing {
     /// The groups a live or deleted entity was read from, if it was read from a file.
     pub fn source(&self, handle: u64) -> Option<&SourceRecord> {
         self.sources[self.index(handle)?].as_deref()
+    }
+
+    pub fn source_mut(&mut self, handle: u64) -> Option<&mut SourceRecord> {
+        let i = self.index(handle)?;
+        self.sources[i].as_deref_mut()
     }
 
     /// Start new handles at `h` (an opened file's `$HANDSEED`), for a drawing with no
@@ -228,6 +247,7 @@ impl Drawing {
         self.sources.clear();
         self.by_handle = None;
         self.document = None;
+        self.extras = Default::default();
         self.current_layer = "0".to_string();
     }
 

@@ -91,8 +91,18 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     // must exceed.
     let mut ents = DxfWriter::new();
     for e in d.entities() {
-        write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc);
+        match d.new_entity_xdata(e.handle) {
+            None => write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc),
+            Some(x) => {
+                let mut one = DxfWriter::new();
+                write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
+                ents.out
+                    .push_str(&super::objects::splice_xdata(&one.out, x, false));
+            }
+        }
     }
+    let appids = d.appids();
+    let appid_handles: Vec<u64> = appids.iter().skip(1).map(|_| alloc()).collect();
     let handseed = alloc();
 
     // ---- HEADER ----
@@ -271,16 +281,15 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     table(&mut w, "UCS", H_UCS_TABLE, 0);
     w.str(0, "ENDTAB");
 
-    table(&mut w, "APPID", H_APPID_TABLE, 1);
-    record(
-        &mut w,
-        "APPID",
-        H_APPID_ACAD,
-        H_APPID_TABLE,
-        "AcDbRegAppTableRecord",
-    );
-    w.str(2, "ACAD");
-    w.int(70, 0);
+    table(&mut w, "APPID", H_APPID_TABLE, appids.len());
+    for (name, h) in appids
+        .iter()
+        .zip(std::iter::once(H_APPID_ACAD).chain(appid_handles))
+    {
+        record(&mut w, "APPID", h, H_APPID_TABLE, "AcDbRegAppTableRecord");
+        w.str(2, name);
+        w.int(70, 0);
+    }
     w.str(0, "ENDTAB");
 
     table(&mut w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
@@ -388,18 +397,23 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             w.handle(350, *v);
         }
     };
-    dict(
-        &mut w,
-        H_ROOT_DICT,
-        0,
-        &[
-            ("ACAD_GROUP", H_GROUP_DICT),
-            ("ACAD_LAYOUT", H_LAYOUT_DICT),
-            ("ACAD_MLINESTYLE", H_MLINESTYLE_DICT),
-            ("ACAD_PLOTSTYLENAME", H_PLOTSTYLE_DICT),
-        ],
-    );
-    dict(&mut w, H_GROUP_DICT, H_ROOT_DICT, &[]);
+    // The root and group dictionaries are the ones scripts can add to (dictadd).
+    for h in [H_ROOT_DICT, H_GROUP_DICT] {
+        if let Some(t) = d.object(h) {
+            for (c, v) in t.iter() {
+                w.str(c as u16, v);
+            }
+        }
+    }
+    for t in d.owned_new_objects() {
+        if t.handle()
+            .is_some_and(|h| h != H_ROOT_DICT && h != H_GROUP_DICT)
+        {
+            for (c, v) in t.iter() {
+                w.str(c as u16, v);
+            }
+        }
+    }
     dict(
         &mut w,
         H_LAYOUT_DICT,

@@ -33,7 +33,14 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                     None => in_blocks.push((b, s)),
                 }
             }
-            None => write_one(&mut ents, e, src, doc, owner, &mut alloc),
+            None => match d.new_entity_xdata(e.handle).filter(|_| src.is_none()) {
+                None => write_one(&mut ents, e, src, doc, owner, &mut alloc),
+                Some(x) => {
+                    let mut s = String::new();
+                    write_one(&mut s, e, src, doc, owner, &mut alloc);
+                    ents.push_str(&super::objects::splice_xdata(&s, x, true));
+                }
+            },
         }
     }
     let layers = layer_records(d, doc, &mut alloc);

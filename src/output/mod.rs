@@ -13,6 +13,7 @@ pub mod dxf_opened;
 pub mod dxf_writer;
 pub mod dxfin;
 pub mod entity;
+pub mod objects;
 pub mod pdf;
 pub mod png;
 pub mod record;

@@ -59,8 +59,8 @@
 ;!! ssget: bad filter list: <OR is not closed by OR>
 (ssget)
 ;!! ssget: interactive selection needs a user; in a headless run use (ssget "X" [filter]), "A", "L" or "P"
-(ssget "W" '(0 0) '(10 10))
-;!! ssget: selection mode "W" needs a user; in a headless run use "X" [filter], "A", "L" or "P"
+(ssget ":S")
+;!! ssget: selection mode ":S" needs a user; in a headless run use "X" [filter], "A", "L", "P", "W"/"C" with two points, or "WP"/"CP"/"F" with a point list
 (names (ssget "L"))
 ;=> ("104")
 (names (ssget "X" '((8 . "Outline"))))

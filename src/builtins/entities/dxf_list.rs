@@ -83,7 +83,12 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
     let parent = ename_value(it, name.handle);
     let space = ename_value(it, MODEL_SPACE_RECORD);
     let d: &Drawing = it.ext::<Drawing>();
-    let e = d.get(name.handle)?;
+    let Some(e) = d.get(name.handle) else {
+        if name.sub != 0 || d.is_deleted(name.handle) {
+            return None;
+        }
+        return super::objects::record_list(it, name.handle, me);
+    };
     if let EntityKind::Unmodelled { .. } = e.kind {
         let tags = d.source(name.handle)?.tags.clone();
         let (layer, color) = (e.layer.clone(), e.color);

@@ -64,9 +64,7 @@ const UNSUPPORTED: &[&str] = &[
     "UCS",
     "VIEW",
     "VPORT",
-    "APPID",
     "BLOCK_RECORD",
-    "DICTIONARY",
 ];
 
 /// The layer new entities go on (entmake without an 8 group, command): the drawing's current
@@ -311,6 +309,10 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         return Ok(Value::Nil);
     };
     let pending = it.ext::<EntityState>().pending_polyline.is_some();
+    let xdata = match super::objects::parse_xdata(it, &g)? {
+        super::objects::XdataIn::Unregistered => return Ok(Value::Nil),
+        x => x,
+    };
     let made = match ty.as_str() {
         "VERTEX" if pending => vertex(it, &g)?,
         "SEQEND" if pending => seqend(it)?,
@@ -322,12 +324,22 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         }
         "POLYLINE" => polyline_header(it, &g)?,
         "LAYER" => super::tables::make_layer(it, &g)?,
+        "APPID" => super::objects::make_appid(it, &g)?,
+        "XRECORD" | "DICTIONARY" => super::objects::make_object(it, &ty, &g)?.is_some(),
         t if UNSUPPORTED.contains(&t) => {
             return Err(err(format!(
-                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT and LAYER are)"
+                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, LAYER, APPID, XRECORD and DICTIONARY are)"
             )))
         }
-        t => make_entity(it, t, &g)?.is_some(),
+        t => match make_entity(it, t, &g)? {
+            Some(h) => {
+                if let super::objects::XdataIn::Apps(apps) = xdata {
+                    super::objects::apply_xdata(it, h, apps);
+                }
+                true
+            }
+            None => false,
+        },
     };
     Ok(if made { list.clone() } else { Value::Nil })
 }
@@ -412,6 +424,15 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         return Ok(Value::Nil);
     };
     let name = ename_arg(it, &name)?;
+    if name.sub == 0 && drawing(it).get(name.handle).is_none() {
+        // An object (XRECORD) rather than an entity.
+        let ok = super::objects::modify_object(it, name.handle, &new)?;
+        return Ok(if ok { a[0].clone() } else { Value::Nil });
+    }
+    let xdata = match super::objects::parse_xdata(it, &new)? {
+        super::objects::XdataIn::Unregistered => return Ok(Value::Nil),
+        x => x,
+    };
     let Some(old_list) = entity_list(it, name) else {
         return Ok(Value::Nil);
     };
@@ -465,10 +486,13 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         color,
         kind,
     };
-    Ok(match drawing(it).replace(name.handle, e) {
-        Ok(()) => a[0].clone(),
-        Err(_) => Value::Nil,
-    })
+    if drawing(it).replace(name.handle, e).is_err() {
+        return Ok(Value::Nil);
+    }
+    if let super::objects::XdataIn::Apps(apps) = xdata {
+        super::objects::apply_xdata(it, name.handle, apps);
+    }
+    Ok(a[0].clone())
 }
 
 /// `entmod` of a VERTEX: its location (10) and bulge (42).

@@ -7,7 +7,10 @@
 //! (`(-4 . "<,>,*")`), and `(-4 . "<AND")` ... `(-4 . "AND>")`, `<OR`, `<XOR`, `<NOT` group
 //! the tests. A colour filter (62 . 256) matches BYLAYER entities, which have no 62 group.
 
+use glam::DVec2;
+
 use super::dxf_list::{entity_list, point_of, Groups};
+use super::select_area::{select_area, AreaMode};
 use super::{ename_arg, ename_value, pickset_arg, pickset_value, Ename, EntityState};
 use crate::builtins::drawing::drawing;
 use crate::builtins::text::wcmatch::WcPattern;
@@ -153,6 +156,14 @@ fn eval(it: &Interp, f: &Filter, groups: &Groups) -> bool {
             op,
             value,
             pattern,
+        } if *code == -3 => groups
+            .all(-3)
+            .any(|g| super::objects::xdata_filter_match(value, g)),
+        Filter::Test {
+            code,
+            op,
+            value,
+            pattern,
         } => {
             let mut any = false;
             for v in groups.all(*code) {
@@ -177,6 +188,14 @@ fn only_common_groups(f: &Filter) -> bool {
         Filter::Test { code, .. } => matches!(code, 0 | 8 | 62),
         Filter::And(v) | Filter::Or(v) | Filter::Xor(v) => v.iter().all(only_common_groups),
         Filter::Not(f) => only_common_groups(f),
+    }
+}
+
+fn has_xdata_test(f: &Filter) -> bool {
+    match f {
+        Filter::Test { code, .. } => *code == -3,
+        Filter::And(v) | Filter::Or(v) | Filter::Xor(v) => v.iter().any(has_xdata_test),
+        Filter::Not(f) => has_xdata_test(f),
     }
 }
 
@@ -207,9 +226,16 @@ fn select(it: &mut Interp, filter: Option<&Filter>) -> Result<Vec<u64>, Exn> {
         }
         return Ok(out);
     }
+    let all_apps = ["*".to_string()];
     for h in handles {
         let list = entity_list(it, Ename { handle: h, sub: 0 }).unwrap_or(Value::Nil);
-        let g = Groups::parse(it, &list)?;
+        let mut g = Groups::parse(it, &list)?;
+        // Extended data is looked at only when the filter has a -3 test (it is costly).
+        if has_xdata_test(f) {
+            if let Some(x) = super::objects::xdata_group(it, h, &all_apps) {
+                g.0.push((-3, x.cdr()));
+            }
+        }
         if eval(it, f, &g) {
             out.push(h);
         }
@@ -227,11 +253,15 @@ pub fn ssget(it: &mut Interp, a: &[Value]) -> LResult {
             "ssget: interactive selection needs a user; in a headless run use (ssget \"X\" [filter]), \"A\", \"L\" or \"P\"",
         ));
     };
-    // The filter list is the last argument when it is a list of pairs.
-    let filter = match a.last() {
-        Some(v @ Value::Cons(c)) if a.len() >= 2 && matches!(c.car, Value::Cons(_)) => {
-            Some(parse_filter(it, v)?)
-        }
+    // The filter list follows the mode's points; for the other modes it is the last
+    // argument when that is a list of pairs.
+    let filter_arg = match mode.as_str() {
+        "W" | "C" => a.get(3),
+        "WP" | "CP" | "F" => a.get(2),
+        _ => a.last().filter(|_| a.len() >= 2),
+    };
+    let filter = match filter_arg {
+        Some(v @ Value::Cons(c)) if matches!(c.car, Value::Cons(_)) => Some(parse_filter(it, v)?),
         _ => None,
     };
     let mut found = match mode.as_str() {
@@ -255,9 +285,38 @@ pub fn ssget(it: &mut Interp, a: &[Value]) -> LResult {
             }
             v
         }
+        "W" | "C" => {
+            let (p1, p2) = (point2(it, a.get(1))?, point2(it, a.get(2))?);
+            let (lo, hi) = (p1.min(p2), p1.max(p2));
+            let rect = [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)];
+            let how = if mode == "W" {
+                AreaMode::Window
+            } else {
+                AreaMode::Crossing
+            };
+            by_area(it, &rect, how, filter.as_ref())?
+        }
+        "WP" | "CP" | "F" => {
+            let list = a.get(1).cloned().unwrap_or(Value::Nil);
+            let pts: Vec<DVec2> = list
+                .iter()
+                .map(|p| point2(it, Some(p)))
+                .collect::<Result<_, _>>()?;
+            let (how, need) = match mode.as_str() {
+                "WP" => (AreaMode::Window, 3),
+                "CP" => (AreaMode::Crossing, 3),
+                _ => (AreaMode::Fence, 2),
+            };
+            if pts.len() < need {
+                return Err(err(format!(
+                    "ssget: mode \"{mode}\" needs a list of at least {need} points"
+                )));
+            }
+            by_area(it, &pts, how, filter.as_ref())?
+        }
         m => {
             return Err(err(format!(
-                "ssget: selection mode \"{m}\" needs a user; in a headless run use \"X\" [filter], \"A\", \"L\" or \"P\""
+                "ssget: selection mode \"{m}\" needs a user; in a headless run use \"X\" [filter], \"A\", \"L\", \"P\", \"W\"/\"C\" with two points, or \"WP\"/\"CP\"/\"F\" with a point list"
             )))
         }
     };
@@ -267,6 +326,33 @@ pub fn ssget(it: &mut Interp, a: &[Value]) -> LResult {
     }
     it.ext::<EntityState>().previous = found.clone();
     Ok(pickset_value(it, found))
+}
+
+/// A point argument's X and Y.
+fn point2(it: &Interp, v: Option<&Value>) -> Result<DVec2, Exn> {
+    let v = v.ok_or_else(|| err("ssget: this selection mode needs points"))?;
+    let xs: Option<Vec<f64>> = v.iter().map(Value::as_f64).collect();
+    match xs {
+        Some(xs) if matches!(v, Value::Cons(_)) && (2..=3).contains(&xs.len()) => {
+            Ok(DVec2::new(xs[0], xs[1]))
+        }
+        _ => Err(err(format!("ssget: bad point: {}", it.prin1_string(v)))),
+    }
+}
+
+/// The entities a boundary selects that also pass the filter.
+fn by_area(
+    it: &mut Interp,
+    pts: &[DVec2],
+    how: AreaMode,
+    filter: Option<&Filter>,
+) -> Result<Vec<u64>, Exn> {
+    let mut v = select_area(drawing(it), pts, how);
+    if let Some(f) = filter {
+        let all = select(it, Some(f))?;
+        v.retain(|h| all.contains(h));
+    }
+    Ok(v)
 }
 
 pub fn sslength(it: &mut Interp, a: &[Value]) -> LResult {

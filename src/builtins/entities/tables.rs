@@ -43,7 +43,7 @@ fn opened_records(it: &mut Interp, table: &str) -> Option<Vec<(String, Value)>> 
 }
 
 /// The records of a table, each as (name, DXF list), in table order.
-fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
+pub(super) fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
     if let Some(r) = opened_records(it, table) {
         return r;
     }
@@ -120,6 +120,14 @@ fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
                 })
                 .collect()
         }
+        "APPID" => d
+            .appids()
+            .into_iter()
+            .map(|n| {
+                let list = Value::list([text(0, "APPID"), text(2, &n), int(70, 0)]);
+                (n, list)
+            })
+            .collect(),
         _ => Vec::new(),
     }
 }

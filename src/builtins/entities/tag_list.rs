@@ -31,6 +31,15 @@ pub fn table_record_list(it: &mut Interp, t: &TagList) -> Value {
     Value::list(out)
 }
 
+/// The `entget` list of a non-graphical record (DICTIONARY, XRECORD, table record) named
+/// `me`: its groups with handles as entity names, application data left out.
+pub fn object_list(it: &mut Interp, t: &TagList, me: Value) -> Value {
+    let groups: Vec<(i32, &str)> = t.iter().take(t.first_record_end()).collect();
+    let mut out = vec![pair(-1, me), pair(0, Value::str(groups[0].1))];
+    typed_groups_with(it, &groups, &mut out, None);
+    Value::list(out)
+}
+
 /// The `entget` list of record `index` (0 = the entity) of a group list, named `me`, on
 /// `layer` with `color` (the drawing's values: a script may have changed them).
 pub fn tags_entity_list(
@@ -123,7 +132,8 @@ fn typed_value(
             }
             Value::list(p)
         }
-        50..=58 if ty != "MTEXT" => Value::Real(num(v).to_radians()),
+        // An XRECORD keeps its data as given (no degrees in the file).
+        50..=58 if ty != "MTEXT" && ty != "XRECORD" => Value::Real(num(v).to_radians()),
         _ => match value_type(c) {
             ValueType::Float => Value::Real(num(v)),
             ValueType::Int16 | ValueType::Int32 | ValueType::Int64 | ValueType::Bool => {

@@ -27,6 +27,13 @@ pub static BUILTINS: &[Builtin] = &[
 ];
 
 fn entmakex(it: &mut Interp, a: &[Value]) -> LResult {
+    let g = crate::builtins::entities::dxf_list::Groups::parse(it, &a[0])?;
+    let ty = g.string(it, 0)?.unwrap_or_default().to_uppercase();
+    if ty == "XRECORD" || ty == "DICTIONARY" {
+        // An object without an owner, for dictadd.
+        let h = crate::builtins::entities::objects::make_object(it, &ty, &g)?;
+        return Ok(h.map_or(Value::Nil, |h| ename_value(it, h)));
+    }
     let before = it.ext::<Drawing>().next_handle();
     let r = crate::builtins::entities::make::entmake(it, a)?;
     if r.is_nil() {
