@@ -5,7 +5,7 @@
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
 //! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
-//! MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO (marks), UCS (World only), and the
+//! MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -26,11 +26,13 @@ mod draw;
 mod edit;
 #[path = "command/layer.rs"]
 mod layer;
+#[path = "command/modify.rs"]
+mod modify;
 #[path = "command/text.rs"]
 mod text;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
+    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR OFFSET EXPLODE CHPROP CHANGE UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
     builtin!("command-s", "(command-s [arg...])", "As command, but a command left unfinished at the end of the call is cancelled. Returns nil.", 0, MANY, command_s),
     builtin!("vl-cmdf", "(vl-cmdf [arg...])", "As command; returns T.", 0, MANY, vl_cmdf),
 ];
@@ -92,6 +94,9 @@ pub(crate) enum Pending {
     Erase(Vec<u64>),
     Text(text::TextCmd),
     Edit(edit::EditCmd),
+    Chprop(modify::ChpropCmd),
+    Explode,
+    Offset(modify::OffsetCmd),
     /// UNDO: BEgin/End marks keep UNDOCTL's bit 8; the other options do nothing headless.
     Undo,
     /// UCS: only the World UCS exists headless.
@@ -204,6 +209,10 @@ fn start(name: &str) -> Result<Step, Exn> {
         "ROTATE",
         "SCALE",
         "MIRROR",
+        "CHPROP",
+        "CHANGE",
+        "EXPLODE",
+        "OFFSET",
         "OSNAP",
         "GRAPHSCR",
         "TEXTSCR",
@@ -229,6 +238,8 @@ fn start(name: &str) -> Result<Step, Exn> {
         "RO" => "ROTATE",
         "SC" => "SCALE",
         "MI" => "MIRROR",
+        "X" => "EXPLODE",
+        "O" => "OFFSET",
         other => other,
     };
     let cmd = KNOWN.iter().copied().find(|k| *k == alias).unwrap_or("");
@@ -246,11 +257,15 @@ fn start(name: &str) -> Result<Step, Exn> {
         "SCALE" => Step::More(Pending::Edit(edit::EditCmd::new("SCALE"))),
         "MIRROR" => Step::More(Pending::Edit(edit::EditCmd::new("MIRROR"))),
         "UNDO" => Step::More(Pending::Undo),
+        "CHPROP" => Step::More(Pending::Chprop(modify::ChpropCmd::new("CHPROP"))),
+        "CHANGE" => Step::More(Pending::Chprop(modify::ChpropCmd::new("CHANGE"))),
+        "EXPLODE" => Step::More(Pending::Explode),
+        "OFFSET" => Step::More(Pending::Offset(modify::OffsetCmd::Distance)),
         "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "OSNAP" | "GRAPHSCR"
         | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)"
             )));
         }
     })
@@ -336,6 +351,9 @@ fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> 
             Some(Pending::Draw(d)) => d.feed(it, &inp)?,
             Some(Pending::Text(t)) => t.feed(it, &inp, raw)?,
             Some(Pending::Edit(e)) => e.feed(it, &inp)?,
+            Some(Pending::Chprop(c)) => c.feed(it, &inp, raw)?,
+            Some(Pending::Explode) => modify::explode(it, &inp)?,
+            Some(Pending::Offset(o)) => o.feed(it, &inp)?,
             Some(Pending::Undo) => {
                 let sv = it.ext::<SysVars>();
                 let ctl = sv.int("UNDOCTL");

@@ -33,9 +33,9 @@ pub mod tables;
 pub mod tag_list;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER table record) from a DXF association list; returns the list, or nil when a required group is missing or the data is invalid.", 0, 1, make::entmake),
+    builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER or APPID record, or an ownerless XRECORD or DICTIONARY) from a DXF association list, with extended data from a (-3 (\"APP\" ...)) group; returns the list, or nil when a required group is missing, the data is invalid or an application is not registered.", 0, 1, make::entmake),
     builtin!("entget", "(entget ename [applist])", "The DXF association list of an entity, object or table record (nil if deleted); with applist, the extended data of the matching registered applications as a final (-3 (\"APP\" ...)) group.", 1, 2, entget),
-    builtin!("entmod", "(entmod dxf-list)", "Modifies the entity named by the list's -1 group (groups absent from the list keep their values); returns the list or nil.", 1, 1, make::entmod),
+    builtin!("entmod", "(entmod dxf-list)", "Modifies the entity (or XRECORD) named by the list's -1 group (groups absent from the list keep their values; a -3 group replaces the named applications' extended data); returns the list or nil.", 1, 1, make::entmod),
     builtin!("entupd", "(entupd ename)", "Accepted for compatibility (the drawing is always up to date); returns ename.", 1, 1, entupd),
     builtin!("entdel", "(entdel ename)", "Deletes an entity, or restores it when it is deleted; returns ename.", 1, 1, entdel),
     builtin!("entlast", "(entlast)", "The name of the last live entity, or nil.", 0, 0, entlast),

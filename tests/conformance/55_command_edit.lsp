@@ -41,9 +41,59 @@
 (command "_.MOVE" "" )
 ;!! MOVE: no objects selected
 (command "_.FILLETX")
-;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, UNDO)
+;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)
 (command "_.ARC" "_C" '(0 0) '(3 0) '(0 3))
 (setq a (entlast))
 (command "_.MIRROR" a "" '(5 0) '(5 1) "")
 (mapcar '(lambda (g) (cdr (assoc g (entget (entlast))))) '(10 40 50 51 210))
 ;=> ((10.0 0.0 0.0) 3.0 1.5708 3.14159 (0.0 0.0 1.0))
+;; CHPROP and CHANGE's Properties option: colour and layer; what is not modelled is an error.
+(entmake '((0 . "LAYER") (2 . "Parts") (62 . 3)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 10 0 0)))
+(setq cl (entlast))
+(command "_.chprop" cl "" "_C" 1 "_LA" "Parts" "")
+(list (cdr (assoc 8 (entget cl))) (cdr (assoc 62 (entget cl))))
+;=> ("Parts" 1)
+(command "_.change" cl "" "_P" "_C" "BYLAYER" "")
+(assoc 62 (entget cl))
+;=> nil
+(command "_.chprop" cl "" "_LA" "NoSuchLayer")
+;!! CHPROP: cannot find layer "NoSuchLayer"
+(command "_.chprop" cl "" "_LT" "DASHED")
+;!! CHPROP: per-entity line types are not modelled by lispcad (only BYLAYER; set the layer's with -LAYER LType), got "DASHED"
+(command "_.change" cl "" '(5 5 0))
+;!! CHANGE: only the Properties option ("P") is supported by lispcad, got the point (5 5 0)
+;; EXPLODE: a polyline becomes its lines and arcs, on its layer and colour.
+(entmake '((0 . "LWPOLYLINE") (100 . "AcDbEntity") (100 . "AcDbPolyline") (8 . "Parts") (62 . 5) (90 . 3) (70 . 1) (10 0.0 0.0) (42 . 0.0) (10 4.0 0.0) (42 . 1.0) (10 4.0 4.0) (42 . 0.0)))
+(setq pl (entlast))
+(command "_.explode" pl)
+(entget pl)
+;=> nil
+(setq ex (ssget "X" '((8 . "Parts") (62 . 5))))
+(mapcar '(lambda (i) (cdr (assoc 0 (entget (ssname ex i))))) '(0 1 2))
+;=> ("LINE" "ARC" "LINE")
+;; The bulge 1 from (4 0) to (4 4) is the half circle through (6 2): centre (4 2), radius 2,
+;; counter-clockwise from -90 to 90 degrees.
+(setq a (entget (ssname ex 1)))
+(list (cdr (assoc 10 a)) (cdr (assoc 40 a)) (rtos (cdr (assoc 50 a)) 2 9) (rtos (cdr (assoc 51 a)) 2 9))
+;=> ((4.0 2.0 0.0) 2.0 "4.712388980" "1.570796327")
+(cdr (assoc 11 (entget (ssname ex 2))))
+;=> (0.0 0.0 0.0)
+(command "_.explode" cl)
+;!! EXPLODE: lispcad explodes polylines only, not LINE (block references are kept as read)
+;; OFFSET by a distance on the side of a point, and through a point.
+(entmake '((0 . "CIRCLE") (10 0 0 0) (40 . 5.0)))
+(setq ci (entlast))
+(command "_.offset" 2 ci '(10 0 0) "")
+(cdr (assoc 40 (entget (entlast))))
+;=> 7.0
+(command "_.offset" 2 ci '(1 0 0) "")
+(cdr (assoc 40 (entget (entlast))))
+;=> 3.0
+(command "_.offset" "_T" cl '(3 -4 0) "")
+(list (cdr (assoc 10 (entget (entlast)))) (cdr (assoc 11 (entget (entlast)))))
+;=> ((0.0 -4.0 0.0) (10.0 -4.0 0.0))
+(command "_.offset" 0 ci)
+;!! OFFSET: expected a positive distance or T, got the number 0
+(command "_.insert" "door" '(0 0 0) 1 1 0)
+;!! command: unknown command "_.insert" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)

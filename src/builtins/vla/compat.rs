@@ -9,7 +9,7 @@ use crate::lang::{Interp, Value};
 use crate::output::Drawing;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("entmakex", "(entmakex dxf-list)", "As entmake, returning the new entity's name (nil on failure).", 1, 1, entmakex),
+    builtin!("entmakex", "(entmakex dxf-list)", "As entmake, returning the new entity's name (nil on failure); an XRECORD or DICTIONARY is made without an owner, for dictadd.", 1, 1, entmakex),
     builtin!("ssnamex", "(ssnamex ss [index])", "How the entities of a selection set were selected: a list of (0 ename) (selection method 0: non-interactive).", 1, 2, ssnamex),
     builtin!("snvalid", "(snvalid name [flag])", "T if name is a valid symbol table name (flag 1 allows | inside it).", 1, 2, snvalid),
     builtin!("textbox", "(textbox dxf-list)", "The box of a TEXT entity's string relative to its insertion point, ((0 0 0) (w h 0)); an estimate (character advance 2/3 of the height), as there are no font metrics headless.", 1, 1, textbox),
