@@ -5,7 +5,7 @@
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
 //! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
-//! MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
+//! MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -32,7 +32,7 @@ mod modify;
 mod text;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR OFFSET EXPLODE CHPROP CHANGE UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
+    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR OFFSET EXPLODE FILLET CHPROP CHANGE UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
     builtin!("command-s", "(command-s [arg...])", "As command, but a command left unfinished at the end of the call is cancelled. Returns nil.", 0, MANY, command_s),
     builtin!("vl-cmdf", "(vl-cmdf [arg...])", "As command; returns T.", 0, MANY, vl_cmdf),
 ];
@@ -97,6 +97,7 @@ pub(crate) enum Pending {
     Chprop(modify::ChpropCmd),
     Explode,
     Offset(modify::OffsetCmd),
+    Fillet(modify::FilletCmd),
     /// UNDO: BEgin/End marks keep UNDOCTL's bit 8; the other options do nothing headless.
     Undo,
     /// UCS: only the World UCS exists headless.
@@ -213,6 +214,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         "CHANGE",
         "EXPLODE",
         "OFFSET",
+        "FILLET",
         "OSNAP",
         "GRAPHSCR",
         "TEXTSCR",
@@ -240,6 +242,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         "MI" => "MIRROR",
         "X" => "EXPLODE",
         "O" => "OFFSET",
+        "F" => "FILLET",
         other => other,
     };
     let cmd = KNOWN.iter().copied().find(|k| *k == alias).unwrap_or("");
@@ -261,11 +264,12 @@ fn start(name: &str) -> Result<Step, Exn> {
         "CHANGE" => Step::More(Pending::Chprop(modify::ChpropCmd::new("CHANGE"))),
         "EXPLODE" => Step::More(Pending::Explode),
         "OFFSET" => Step::More(Pending::Offset(modify::OffsetCmd::Distance)),
+        "FILLET" => Step::More(Pending::Fillet(modify::FilletCmd::First)),
         "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "OSNAP" | "GRAPHSCR"
         | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)"
             )));
         }
     })
@@ -354,6 +358,7 @@ fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> 
             Some(Pending::Chprop(c)) => c.feed(it, &inp, raw)?,
             Some(Pending::Explode) => modify::explode(it, &inp)?,
             Some(Pending::Offset(o)) => o.feed(it, &inp)?,
+            Some(Pending::Fillet(f)) => f.feed(it, &inp, raw)?,
             Some(Pending::Undo) => {
                 let sv = it.ext::<SysVars>();
                 let ctl = sv.int("UNDOCTL");

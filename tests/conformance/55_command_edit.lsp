@@ -41,7 +41,7 @@
 (command "_.MOVE" "" )
 ;!! MOVE: no objects selected
 (command "_.FILLETX")
-;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
 (command "_.ARC" "_C" '(0 0) '(3 0) '(0 3))
 (setq a (entlast))
 (command "_.MIRROR" a "" '(5 0) '(5 1) "")
@@ -96,4 +96,30 @@
 (command "_.offset" 0 ci)
 ;!! OFFSET: expected a positive distance or T, got the number 0
 (command "_.insert" "door" '(0 0 0) 1 1 0)
-;!! command: unknown command "_.insert" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.insert" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
+;; FILLET two lines: radius 2 at a right-angle corner, the arc tangent to both; radius 0
+;; extends the lines to their corner. Arcs and other objects are refused by name.
+(command "_.fillet" "_R" 2.0)
+(getvar "FILLETRAD")
+;=> 2.0
+(entmake '((0 . "LINE") (10 0 0 0) (11 10 0 0)))
+(setq f1 (entlast))
+(entmake '((0 . "LINE") (10 10 -1 0) (11 10 10 0)))
+(setq f2 (entlast))
+;; The pick on f2 at (10 5) keeps its upper part: the stub below the corner goes.
+(command "_.fillet" (list f1 '(2 0 0)) (list f2 '(10 5 0)))
+(list (cdr (assoc 10 (entget f1))) (cdr (assoc 11 (entget f1))))
+;=> ((0.0 0.0 0.0) (8.0 0.0 0.0))
+(list (cdr (assoc 10 (entget f2))) (cdr (assoc 11 (entget f2))))
+;=> ((10.0 2.0 0.0) (10.0 10.0 0.0))
+(setq fa (entget (entlast)))
+(list (cdr (assoc 0 fa)) (cdr (assoc 10 fa)) (cdr (assoc 40 fa)) (rtos (cdr (assoc 50 fa)) 2 9) (rtos (cdr (assoc 51 fa)) 2 9))
+;=> ("ARC" (8.0 2.0 0.0) 2.0 "4.712388980" "0.000000000")
+(command "_.fillet" "_R" 0 f1 (ssadd f2))
+(list (cdr (assoc 11 (entget f1))) (cdr (assoc 10 (entget f2))))
+;=> ((10.0 0.0 0.0) (10.0 0.0 0.0))
+(command "_.fillet" f1 ci)
+;!! FILLET: lispcad fillets two lines, not a CIRCLE
+(entmake '((0 . "LINE") (10 0 5 0) (11 10 5 0)))
+(command "_.fillet" f1 (entlast))
+;!! FILLET: the lines are parallel

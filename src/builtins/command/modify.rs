@@ -1,6 +1,6 @@
-//! CHPROP, CHANGE (its Properties option), EXPLODE (polylines into lines and arcs) and
-//! OFFSET (by a distance or through a point, on the side a point gives), with AutoCAD's
-//! prompts in their order. What lispcad does not model (per-entity line types, weights and
+//! CHPROP, CHANGE (its Properties option), EXPLODE (polylines into lines and arcs), FILLET
+//! (two lines) and OFFSET (by a distance or through a point, on the side a point gives),
+//! with AutoCAD's prompts in their order. What lispcad does not model (per-entity line types, weights and
 //! thickness; exploding blocks) is a clear error naming it.
 
 use glam::{DVec2, DVec3};
@@ -325,5 +325,200 @@ fn offset_toward(it: &mut Interp, h: u64, dist: Option<f64>, p: DVec3) -> Result
     let mut n = Entity::new(&e.layer, curve_entity(&o));
     n.color = e.color;
     d.add(n).map_err(|x| cmd_err("OFFSET", x))?;
+    Ok(())
+}
+
+/// FILLET: "R" sets FILLETRAD; two lines (entity names, or `(ename point)` lists whose point
+/// says which part of each line to keep) are trimmed or extended to the tangent points of
+/// an arc of that radius (to their corner for radius 0), and the arc is added.
+pub(crate) enum FilletCmd {
+    First,
+    Radius,
+    Second(u64, Option<DVec3>),
+}
+
+/// The entity of a selection argument and the point given with it.
+fn picked(input: &Input, raw: &Value) -> Option<(u64, Option<DVec3>)> {
+    let Input::Select(hs) = input else {
+        return None;
+    };
+    let h = *hs.first()?;
+    let pt = match raw {
+        Value::Cons(c) => {
+            let p = c.cdr.car();
+            let xs: Option<Vec<f64>> = p.iter().map(Value::as_f64).collect();
+            xs.filter(|x| x.len() >= 2)
+                .map(|x| DVec3::new(x[0], x[1], x.get(2).copied().unwrap_or(0.0)))
+        }
+        _ => None,
+    };
+    Some((h, pt))
+}
+
+impl FilletCmd {
+    pub(crate) fn feed(self, it: &mut Interp, input: &Input, raw: &Value) -> Result<Step, Exn> {
+        let next = match self {
+            FilletCmd::First => match input {
+                Input::Enter => return Ok(Step::Done),
+                Input::Word(_) => match input.keyword().as_deref() {
+                    Some("R" | "RADIUS") => FilletCmd::Radius,
+                    // The next command: FILLET was left waiting after its radius.
+                    _ => return Ok(Step::DoneNotConsumed),
+                },
+                _ => match picked(input, raw) {
+                    Some((h, p)) => FilletCmd::Second(h, p),
+                    None => return Err(unexpected("FILLET", "an object or R", input)),
+                },
+            },
+            FilletCmd::Radius => match input {
+                Input::Number(r) if *r >= 0.0 => {
+                    it.ext::<crate::builtins::system::SysVars>()
+                        .put("FILLETRAD", Value::Real(*r));
+                    FilletCmd::First
+                }
+                _ => return Err(unexpected("FILLET", "a radius >= 0", input)),
+            },
+            FilletCmd::Second(h1, p1) => match picked(input, raw) {
+                Some((h2, p2)) => {
+                    let r = it
+                        .ext::<crate::builtins::system::SysVars>()
+                        .real("FILLETRAD");
+                    fillet_lines(it, (h1, p1), (h2, p2), r)?;
+                    return Ok(Step::Done);
+                }
+                None => return Err(unexpected("FILLET", "a second object", input)),
+            },
+        };
+        Ok(Step::More(Pending::Fillet(next)))
+    }
+}
+
+fn line_of(d: &Drawing, h: u64) -> Result<(Entity, DVec3, DVec3), Exn> {
+    let e = d
+        .get(h)
+        .cloned()
+        .ok_or_else(|| cmd_err("FILLET", "the object is deleted"))?;
+    match e.kind {
+        EntityKind::Line { p0, p1 } => Ok((e, p0, p1)),
+        ref k => Err(cmd_err(
+            "FILLET",
+            format!("lispcad fillets two lines, not a {}", k.type_name()),
+        )),
+    }
+}
+
+fn fillet_lines(
+    it: &mut Interp,
+    (h1, q1): (u64, Option<DVec3>),
+    (h2, q2): (u64, Option<DVec3>),
+    r: f64,
+) -> Result<(), Exn> {
+    if h1 == h2 {
+        return Err(cmd_err("FILLET", "the two objects are the same line"));
+    }
+    let d = it.ext::<Drawing>();
+    let (e1, a1, b1) = line_of(d, h1)?;
+    let (e2, a2, b2) = line_of(d, h2)?;
+    let flat = |p: DVec3| p.truncate();
+    let (u1, u2) = (flat(b1 - a1), flat(b2 - a2));
+    let den = u1.perp_dot(u2);
+    if den.abs() <= 1e-12 * u1.length() * u2.length() {
+        return Err(cmd_err("FILLET", "the lines are parallel"));
+    }
+    // The corner: where the lines (extended) meet.
+    let s = flat(a2 - a1).perp_dot(u2) / den;
+    let corner = flat(a1) + u1 * s;
+    // Each line keeps the end on the side of its pick point (without one, the end farther
+    // from the corner).
+    let keep = |a: DVec3, b: DVec3, q: Option<DVec3>| -> DVec2 {
+        let (a, b) = (flat(a), flat(b));
+        let far = if (a - corner).length() >= (b - corner).length() {
+            a
+        } else {
+            b
+        };
+        let Some(q) = q else {
+            return far;
+        };
+        let dir = flat(q) - corner;
+        match ((a - corner).dot(dir) > 0.0, (b - corner).dot(dir) > 0.0) {
+            (true, false) => a,
+            (false, true) => b,
+            _ => far,
+        }
+    };
+    let (k1, k2) = (keep(a1, b1, q1), keep(a2, b2, q2));
+    let (d1, d2) = ((k1 - corner).normalize(), (k2 - corner).normalize());
+    let theta = d1.angle_to(d2).abs();
+    if !d1.is_finite() || !d2.is_finite() || theta < 1e-12 {
+        return Err(cmd_err(
+            "FILLET",
+            "a line ends at the corner on the kept side",
+        ));
+    }
+    let t = r / (theta / 2.0).tan();
+    if t > (k1 - corner).length() + 1e-9 || t > (k2 - corner).length() + 1e-9 {
+        return Err(cmd_err(
+            "FILLET",
+            format!("radius {r} is too large for these lines"),
+        ));
+    }
+    let (t1, t2) = (corner + d1 * t, corner + d2 * t);
+    let z = a1.z;
+    let trim = |e: Entity, a: DVec3, b: DVec3, k: DVec2, tp: DVec2| -> Entity {
+        let kind = if flat(a) == k {
+            EntityKind::Line {
+                p0: a,
+                p1: tp.extend(b.z),
+            }
+        } else {
+            EntityKind::Line {
+                p0: tp.extend(a.z),
+                p1: b,
+            }
+        };
+        Entity { kind, ..e }
+    };
+    let (layer, color) = if e1.layer == e2.layer {
+        (e1.layer.clone(), e1.color)
+    } else {
+        (d.current_layer().to_string(), None)
+    };
+    d.replace(h1, trim(e1, a1, b1, k1, t1))
+        .map_err(|x| cmd_err("FILLET", x))?;
+    d.replace(h2, trim(e2, a2, b2, k2, t2))
+        .map_err(|x| cmd_err("FILLET", x))?;
+    if r > 0.0 {
+        let c = corner + (d1 + d2).normalize() * (r / (theta / 2.0).sin());
+        let (s1, s2) = ((t1 - c).to_angle(), (t2 - c).to_angle());
+        // The fillet is the short arc between the tangent points.
+        let (start, end) = if crate::output::drawing::ccw_sweep(s1, s2) <= std::f64::consts::PI {
+            (s1, s2)
+        } else {
+            (s2, s1)
+        };
+        let tau = std::f64::consts::TAU;
+        // atan2 rounding leaves 2e-16 where the angle is 0.
+        let norm = |a: f64| {
+            let a = a.rem_euclid(tau);
+            if a < 1e-12 || tau - a < 1e-12 {
+                0.0
+            } else {
+                a
+            }
+        };
+        let mut n = Entity::new(
+            &layer,
+            EntityKind::Arc {
+                center: c.extend(z),
+                radius: r,
+                start: norm(start),
+                end: norm(end),
+                normal: DVec3::Z,
+            },
+        );
+        n.color = color;
+        d.add(n).map_err(|x| cmd_err("FILLET", x))?;
+    }
     Ok(())
 }
