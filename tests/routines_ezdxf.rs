@@ -1,0 +1,132 @@
+//! The published-style routines under tests/routines/ on a drawing ezdxf made (opened with
+//! `--open`): their printed results and the drawing they write compared with values computed
+//! independently in Python (tests/validate/routines_ref.py: ezdxf's bulge and B-spline
+//! geometry, numpy Gauss-Legendre lengths), to 1e-8.
+
+mod output_support;
+
+use std::process::Command;
+
+use output_support::{manifest, python};
+use serde_json::Value;
+
+const TOL: f64 = 1e-8;
+
+fn py(mode: &str, path: &std::path::Path) -> Value {
+    let out = Command::new(python())
+        .arg(manifest().join("tests/validate/routines_ref.py"))
+        .arg(mode)
+        .arg(path)
+        .output()
+        .expect("running routines_ref.py");
+    assert!(
+        out.status.success(),
+        "routines_ref.py {mode}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON from routines_ref.py")
+}
+
+fn nums(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Array(a) => a.iter().flat_map(nums).collect(),
+        Value::Number(n) => vec![n.as_f64().unwrap()],
+        other => panic!("not numbers: {other}"),
+    }
+}
+
+fn assert_close(got: &[f64], want: &[f64], what: &str) {
+    assert_eq!(got.len(), want.len(), "{what}: got {got:?}, want {want:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() <= TOL, "{what}: got {got:?}, want {want:?}");
+    }
+}
+
+#[test]
+fn routines_on_an_ezdxf_drawing_match_python() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("in.dxf");
+    let want = py("make", &input);
+    let routines = manifest().join("tests/routines");
+    let script = format!(
+        r#"
+(foreach f '("total_length" "divide_curve" "reverse_pline" "list_intersections")
+  (load (strcat "{}/" f ".lsp")))
+(defun pr (lst) (foreach x lst (princ (rtos x 2 12)) (princ " ")) (princ "\n"))
+(defun first-of (type) (ssname (ssget "X" (list (cons 0 type))) 0))
+(setq total (c:tlen))
+(princ "\n")
+(pr (list total))
+(pr (apply 'append (mapcar '(lambda (p) (list (car p) (cadr p))) (divpts (first-of "LWPOLYLINE") 5))))
+(pr (apply 'append (mapcar '(lambda (p) (list (car p) (cadr p))) (divpts (first-of "SPLINE") 4))))
+(setq lw (revpl (first-of "LWPOLYLINE")))
+(pr (mapcar '(lambda (g) (if (listp (cdr g)) (car (cdr g)) (cdr g)))
+  (vl-remove-if-not '(lambda (g) (member (car g) '(10 42))) (entget lw))))
+(pr (mapcar '(lambda (g) (cadr (cdr g)))
+  (vl-remove-if-not '(lambda (g) (= (car g) 10)) (entget lw))))
+(pr (apply 'append (mapcar '(lambda (p) (list (car p) (cadr p)))
+  (vl-sort (list-intersections) '(lambda (a b) (< (car a) (car b)))))))
+"#,
+        routines.display()
+    );
+    std::fs::write(dir.path().join("r.lsp"), script).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir.path())
+        .args(["run", "r.lsp", "--open", "in.dxf", "-o", "out.dxf"])
+        .output()
+        .expect("running lispcad");
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "lispcad: {stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines: Vec<Vec<f64>> = stdout
+        .lines()
+        .skip_while(|l| !l.starts_with("Total length of 6 objects: "))
+        .skip(1)
+        .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(lines.len(), 6, "printed: {stdout}");
+    assert_close(&lines[0], &nums(&want["total"]), "total length (TLEN)");
+    assert_close(
+        &lines[1],
+        &nums(&want["div_lw"]),
+        "polyline divided in 5 (DIVPTS)",
+    );
+    assert_close(
+        &lines[2],
+        &nums(&want["div_spline"]),
+        "spline divided in 4 (DIVPTS)",
+    );
+    // REVPL: x and bulge per vertex, then y per vertex.
+    let rev: Vec<Vec<f64>> = want["rev_lw"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(nums)
+        .collect();
+    let xb: Vec<f64> = rev.iter().flat_map(|v| [v[0], v[2]]).collect();
+    let ys: Vec<f64> = rev.iter().map(|v| v[1]).collect();
+    assert_close(&lines[3], &xb, "reversed polyline x and bulges (REVPL)");
+    assert_close(&lines[4], &ys, "reversed polyline y (REVPL)");
+    assert_close(&lines[5], &nums(&want["inters"]), "intersections (INTERS)");
+
+    // The drawing written: the POINTs DIVPTS made and the reversed polyline, as ezdxf reads
+    // them (audit 0 errors, 0 fixes).
+    let doc = py("check", &dir.path().join("out.dxf"));
+    assert_eq!(doc["audit_errors"], 0);
+    assert_eq!(doc["audit_fixes"], 0);
+    let mut want_pts = nums(&want["div_lw"]);
+    want_pts.extend(nums(&want["div_spline"]));
+    assert_close(
+        &nums(&doc["points"]),
+        &want_pts,
+        "POINTs in the written DXF",
+    );
+    assert_close(
+        &nums(&doc["lw"]),
+        &nums(&want["rev_lw"]),
+        "LWPOLYLINE in the written DXF",
+    );
+}
