@@ -130,3 +130,99 @@ fn routines_on_an_ezdxf_drawing_match_python() {
         "LWPOLYLINE in the written DXF",
     );
 }
+
+/// INSERT/-INSERT of a block an ezdxf drawing defines, with its attributes: the ATTRIBs sit
+/// where ezdxf's own block transform puts the ATTDEFs, with the values given (Enter: the
+/// default), and the file audits clean.
+#[test]
+fn insert_with_attributes_into_an_ezdxf_drawing() {
+    let dir = tempfile::tempdir().unwrap();
+    py_plain("block", &dir.path().join("in.dxf"));
+    let script = r#"
+(command "_.-insert" "DOOR" '(10 5 0) 2 "" 90 "1200" "")
+(setq ins (entlast))
+(setq a (entget (entnext ins)))
+(prin1 (list (cdr (assoc 0 a)) (cdr (assoc 2 a)) (cdr (assoc 1 a)))) (terpri)
+(command "_.insert" "door" '(1 1 0) "" "" "" "" "left")
+(setq b (entget (entnext (entnext (entlast)))))
+(prin1 (list (cdr (assoc 2 b)) (cdr (assoc 1 b)))) (terpri)
+(prin1 (cdr (assoc 0 (entget (entnext (entnext (entnext (entlast)))))))) (terpri)
+"#;
+    std::fs::write(dir.path().join("i.lsp"), script).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir.path())
+        .args(["run", "i.lsp", "--open", "in.dxf", "-o", "out.dxf"])
+        .output()
+        .expect("running lispcad");
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "lispcad: {stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        stdout.lines().collect::<Vec<_>>(),
+        [
+            r#"("ATTRIB" "WIDTH" "1200")"#,
+            r#"("NOTE" "left")"#,
+            r#""SEQEND""#
+        ]
+    );
+    let doc = py("inserts", &dir.path().join("out.dxf"));
+    assert_eq!(doc["audit_errors"], 0);
+    assert_eq!(doc["audit_fixes"], 0);
+    let ins = doc["inserts"].as_array().unwrap();
+    assert_eq!(ins.len(), 2);
+    assert_eq!(ins[0]["name"], "DOOR");
+    assert_close(
+        &nums(&ins[0]["insert"]),
+        &[10.0, 5.0, 0.0],
+        "insertion point",
+    );
+    assert_close(&nums(&ins[0]["scale"]), &[2.0, 2.0], "scale");
+    assert_close(&nums(&ins[0]["rotation"]), &[90.0], "rotation");
+    let texts: Vec<(String, String)> = ins
+        .iter()
+        .flat_map(|i| i["attribs"].as_array().unwrap().clone())
+        .map(|a| {
+            (
+                a["tag"].as_str().unwrap().into(),
+                a["text"].as_str().unwrap().into(),
+            )
+        })
+        .collect();
+    let want: Vec<(String, String)> = [
+        ("WIDTH", "1200"),
+        ("NOTE", "none"),
+        ("WIDTH", "900"),
+        ("NOTE", "left"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    assert_eq!(texts, want);
+    for i in ins {
+        for a in i["attribs"].as_array().unwrap() {
+            assert_close(&nums(&a["at"]), &nums(&a["want_at"]), "ATTRIB position");
+        }
+    }
+    assert_close(
+        &nums(&ins[0]["attribs"][0]["height"]),
+        &[0.5],
+        "scaled height",
+    );
+}
+
+fn py_plain(mode: &str, path: &std::path::Path) {
+    let out = Command::new(python())
+        .arg(manifest().join("tests/validate/routines_ref.py"))
+        .arg(mode)
+        .arg(path)
+        .output()
+        .expect("running routines_ref.py");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

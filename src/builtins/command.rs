@@ -5,7 +5,7 @@
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
 //! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
-//! MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
+//! MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -24,6 +24,8 @@ use crate::output::{Drawing, Entity, EntityKind};
 mod draw;
 #[path = "command/edit.rs"]
 mod edit;
+#[path = "command/insert.rs"]
+mod insert;
 #[path = "command/layer.rs"]
 mod layer;
 #[path = "command/modify.rs"]
@@ -32,7 +34,7 @@ mod modify;
 mod text;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR OFFSET EXPLODE FILLET CHPROP CHANGE UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
+    builtin!("command", "(command [arg...])", "Feeds arguments to AutoCAD commands (LINE CIRCLE ARC PLINE SPLINE LAYER ERASE POINT TEXT MOVE COPY ROTATE SCALE MIRROR INSERT OFFSET EXPLODE FILLET CHPROP CHANGE UNDO); \"\" is Enter, PAUSE takes the next --answers line, (command) cancels; a command may span several calls. Returns nil.", 0, MANY, command),
     builtin!("command-s", "(command-s [arg...])", "As command, but a command left unfinished at the end of the call is cancelled. Returns nil.", 0, MANY, command_s),
     builtin!("vl-cmdf", "(vl-cmdf [arg...])", "As command; returns T.", 0, MANY, vl_cmdf),
 ];
@@ -98,6 +100,7 @@ pub(crate) enum Pending {
     Explode,
     Offset(modify::OffsetCmd),
     Fillet(modify::FilletCmd),
+    Insert(insert::InsertCmd),
     /// UNDO: BEgin/End marks keep UNDOCTL's bit 8; the other options do nothing headless.
     Undo,
     /// UCS: only the World UCS exists headless.
@@ -215,6 +218,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         "EXPLODE",
         "OFFSET",
         "FILLET",
+        "INSERT",
         "OSNAP",
         "GRAPHSCR",
         "TEXTSCR",
@@ -243,6 +247,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         "X" => "EXPLODE",
         "O" => "OFFSET",
         "F" => "FILLET",
+        "I" => "INSERT",
         other => other,
     };
     let cmd = KNOWN.iter().copied().find(|k| *k == alias).unwrap_or("");
@@ -265,11 +270,12 @@ fn start(name: &str) -> Result<Step, Exn> {
         "EXPLODE" => Step::More(Pending::Explode),
         "OFFSET" => Step::More(Pending::Offset(modify::OffsetCmd::Distance)),
         "FILLET" => Step::More(Pending::Fillet(modify::FilletCmd::First)),
+        "INSERT" => Step::More(Pending::Insert(insert::InsertCmd::new())),
         "ZOOM" | "PAN" | "REGEN" | "REGENALL" | "REDRAW" | "REDRAWALL" | "OSNAP" | "GRAPHSCR"
         | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)"
             )));
         }
     })
@@ -359,6 +365,7 @@ fn feed(it: &mut Interp, st: &mut CommandState, raw: &Value) -> Result<(), Exn> 
             Some(Pending::Explode) => modify::explode(it, &inp)?,
             Some(Pending::Offset(o)) => o.feed(it, &inp)?,
             Some(Pending::Fillet(f)) => f.feed(it, &inp, raw)?,
+            Some(Pending::Insert(c)) => c.feed(it, &inp, raw)?,
             Some(Pending::Undo) => {
                 let sv = it.ext::<SysVars>();
                 let ctl = sv.int("UNDOCTL");

@@ -180,7 +180,7 @@ fn entget(it: &mut Interp, a: &[Value]) -> LResult {
         Some(l) => it
             .list_arg(l)?
             .iter()
-            .map(|v| it.string(&v).map(str::to_string))
+            .map(|v| it.string(v).map(str::to_string))
             .collect::<Result<_, _>>()?,
         None => return Ok(list),
     };

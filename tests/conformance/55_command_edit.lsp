@@ -41,7 +41,7 @@
 (command "_.MOVE" "" )
 ;!! MOVE: no objects selected
 (command "_.FILLETX")
-;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
 (command "_.ARC" "_C" '(0 0) '(3 0) '(0 3))
 (setq a (entlast))
 (command "_.MIRROR" a "" '(5 0) '(5 1) "")
@@ -96,7 +96,11 @@
 (command "_.offset" 0 ci)
 ;!! OFFSET: expected a positive distance or T, got the number 0
 (command "_.insert" "door" '(0 0 0) 1 1 0)
-;!! command: unknown command "_.insert" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
+;!! INSERT: block "door" is not defined (lispcad inserts the blocks of a drawing opened with --open, R2000 or later)
+(command "_.-insert" "c:/blocks/door.dwg" '(0 0 0) 1 1 0)
+;!! INSERT: inserting a drawing file ("c:/blocks/door.dwg") is not supported; name a block of the opened drawing
+(command "_.mline")
+;!! command: unknown command "_.mline" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
 ;; FILLET two lines: radius 2 at a right-angle corner, the arc tangent to both; radius 0
 ;; extends the lines to their corner. Arcs and other objects are refused by name.
 (command "_.fillet" "_R" 2.0)

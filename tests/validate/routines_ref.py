@@ -6,6 +6,10 @@ Usage:
   routines_ref.py make OUT.dxf   writes the drawing; prints the reference values as JSON
   routines_ref.py check IN.dxf   reads IN with the strict reader, audits it, prints JSON:
                                  audit counts, POINT locations, LWPOLYLINE (x, y, bulge)
+  routines_ref.py block OUT.dxf  writes a drawing defining block DOOR with two ATTDEFs
+  routines_ref.py inserts IN.dxf reads IN (strict, audited) and prints every INSERT with its
+                                 ATTRIBs, and where ezdxf's own block transform puts each
+                                 ATTDEF of the block for that INSERT
 """
 
 import json
@@ -137,5 +141,46 @@ def check(path):
     )
 
 
+def block(path):
+    doc = ezdxf.new("R2010")
+    blk = doc.blocks.new("DOOR")
+    blk.add_line((0, 0), (1, 0))
+    blk.add_attdef("WIDTH", (1, 0.5), "900", dxfattribs={"height": 0.25})
+    blk.add_attdef("NOTE", (0, -0.5), "none", dxfattribs={"height": 0.2})
+    doc.saveas(path)
+
+
+def inserts(path):
+    doc = ezdxf.readfile(path)
+    auditor = doc.audit()
+    out = []
+    for ins in doc.modelspace().query("INSERT"):
+        m = ins.matrix44()
+        defs = {a.dxf.tag: m.transform(a.dxf.insert) for a in doc.blocks.get(ins.dxf.name).attdefs()}
+        out.append(
+            {
+                "name": ins.dxf.name,
+                "insert": list(ins.dxf.insert),
+                "scale": [ins.dxf.xscale, ins.dxf.yscale],
+                "rotation": ins.dxf.rotation,
+                "attribs": [
+                    {
+                        "tag": a.dxf.tag,
+                        "text": a.dxf.text,
+                        "at": list(a.dxf.insert),
+                        "want_at": list(defs[a.dxf.tag]),
+                        "height": a.dxf.height,
+                    }
+                    for a in ins.attribs
+                ],
+            }
+        )
+    print(
+        json.dumps(
+            {"audit_errors": len(auditor.errors), "audit_fixes": len(auditor.fixes), "inserts": out}
+        )
+    )
+
+
 if __name__ == "__main__":
-    {"make": make, "check": check}[sys.argv[1]](sys.argv[2])
+    {"make": make, "check": check, "block": block, "inserts": inserts}[sys.argv[1]](sys.argv[2])
