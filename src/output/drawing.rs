@@ -129,6 +129,18 @@ impl Drawing {
         self.document.as_deref()
     }
 
+    /// The opened file's tables and blocks, to add records to (`dxf-import`).
+    pub fn document_mut(&mut self) -> Option<&mut DxfDocument> {
+        self.document.as_deref_mut()
+    }
+
+    /// A fresh handle for a record the drawing does not hold as an entity (a table record or
+    /// block definition added to its document).
+    pub fn take_handle(&mut self) -> u64 {
+        self.next_handle += 1;
+        self.next_handle - 1
+    }
+
     pub fn set_document(&mut self, doc: DxfDocument) {
         self.document = Some(Box::new(doc));
     }
@@ -136,6 +148,18 @@ impl Drawing {
     /// The groups a live or deleted entity was read from, if it was read from a file.
     pub fn source(&self, handle: u64) -> Option<&SourceRecord> {
         self.sources[self.index(handle)?].as_deref()
+    }
+
+    /// Replace the groups an entity kept as read is written from (`entmod` of an INSERT,
+    /// HATCH...); false when it has none.
+    pub fn set_source_tags(&mut self, handle: u64, tags: TagList) -> bool {
+        match self.index(handle).and_then(|i| self.sources[i].as_mut()) {
+            Some(s) => {
+                s.tags = tags;
+                true
+            }
+            None => false,
+        }
     }
 
     /// Start new handles at `h` (an opened file's `$HANDSEED`), for a drawing with no

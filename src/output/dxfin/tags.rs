@@ -78,6 +78,19 @@ pub fn check_number(code: i32, v: &str) -> bool {
     }
 }
 
+/// A damaged number read as its longest well-formed prefix ("-6,5" → "-6", as ezdxf's
+/// recover reads it), or 0.
+fn salvage_number(code: i32, v: &str) -> String {
+    let t = v.trim();
+    let float = value_type(code) == ValueType::Float;
+    (1..=t.len())
+        .rev()
+        .filter(|&n| t.is_char_boundary(n))
+        .map(|n| &t[..n])
+        .find(|p| p.parse::<i64>().is_ok() || float && p.parse::<f64>().is_ok_and(f64::is_finite))
+        .map_or_else(|| "0".to_string(), |p| p.to_string())
+}
+
 /// The text encoding of a DXF file: its version and code page.
 #[derive(Clone, Copy, Debug)]
 pub struct FileEncoding {
@@ -431,8 +444,14 @@ impl<'a> Iterator for Tagger<'a> {
                     let v = self.decode(b);
                     if !check_number(raw.code, &v) {
                         if self.recover {
+                            // Kept, as ezdxf's recover does: dropping the group would leave
+                            // a point without its y and the copy unreadable.
                             self.recovered += 1;
-                            continue;
+                            return Some(Ok(Tag {
+                                code: raw.code,
+                                value: Cow::Owned(salvage_number(raw.code, &v)),
+                                pos: raw.pos,
+                            }));
                         }
                         return Some(Err(DxfReadError::at(
                             Some(raw.pos),
