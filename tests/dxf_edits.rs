@@ -119,3 +119,31 @@ fn dxf_import_brings_the_block_definitions_its_inserts_need() {
     assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
 }
+
+/// A group of the wrong type is an error, more of a repeated code than the entity has gives
+/// nil, and neither changes the entity.
+#[test]
+fn entmod_of_kept_groups_refuses_what_does_not_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let o = Command::new(python())
+        .arg(&script)
+        .args(["make", d.join("in.dxf").to_str().unwrap(), "R2018"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let lsp = r#"
+(setq h (ssname (ssget "X" '((0 . "HATCH"))) 0) e (entget h) more e)
+(princ (vl-catch-all-error-p (vl-catch-all-apply 'entmod (list (subst '(41 . "x") (assoc 41 e) e)))))
+(repeat 50 (setq more (append more '((10 1.0 2.0)))))
+(princ " ")
+(princ (entmod more))
+(princ " ")
+(princ (equal (entget h) e))
+"#;
+    std::fs::write(d.join("bad.lsp"), lsp).unwrap();
+    let o = lispcad(d, &["run", "bad.lsp", "--open", "in.dxf"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "T nil T");
+}

@@ -37,7 +37,7 @@ fn owned(ty: &str) -> Option<Owned> {
         "LWPOLYLINE" => |c| matches!(c, 8 | 62 | 70 | 90 | 38 | 210 | 220 | 230),
         "SPLINE" => |c| matches!(c, 8 | 62 | 70..=74 | 210 | 220 | 230),
         "POLYLINE" => |c| matches!(c, 8 | 62 | 10 | 20 | 30 | 70),
-        "VERTEX" => |c| matches!(c, 10 | 20 | 30 | 42),
+        "VERTEX" => |c| matches!(c, 8 | 10 | 20 | 30 | 42),
         _ => return None,
     };
     let (run, flag_bits): (fn(i32) -> bool, i64) = match ty {

@@ -434,50 +434,48 @@ impl<'a> Iterator for Tagger<'a> {
     type Item = Result<Tag<'a>, DxfReadError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        loop {
-            let raw = match self.next_raw()? {
-                Ok(r) => r,
-                Err(e) => return Some(Err(e)),
-            };
-            let value: Cow<'a, str> = match raw.value {
-                RawValue::Bytes(b) => {
-                    let v = self.decode(b);
-                    if !check_number(raw.code, &v) {
-                        if self.recover {
-                            // Kept, as ezdxf's recover does: dropping the group would leave
-                            // a point without its y and the copy unreadable.
-                            self.recovered += 1;
-                            return Some(Ok(Tag {
-                                code: raw.code,
-                                value: Cow::Owned(salvage_number(raw.code, &v)),
-                                pos: raw.pos,
-                            }));
-                        }
-                        return Some(Err(DxfReadError::at(
-                            Some(raw.pos),
-                            format!(
-                                "group code {} needs a number, found {:?}",
-                                raw.code,
-                                v.chars().take(40).collect::<String>()
-                            ),
-                        )));
+        let raw = match self.next_raw()? {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e)),
+        };
+        let value: Cow<'a, str> = match raw.value {
+            RawValue::Bytes(b) => {
+                let v = self.decode(b);
+                if !check_number(raw.code, &v) {
+                    if self.recover {
+                        // Kept, as ezdxf's recover does: dropping the group would leave
+                        // a point without its y and the copy unreadable.
+                        self.recovered += 1;
+                        return Some(Ok(Tag {
+                            code: raw.code,
+                            value: Cow::Owned(salvage_number(raw.code, &v)),
+                            pos: raw.pos,
+                        }));
                     }
-                    v
+                    return Some(Err(DxfReadError::at(
+                        Some(raw.pos),
+                        format!(
+                            "group code {} needs a number, found {:?}",
+                            raw.code,
+                            v.chars().take(40).collect::<String>()
+                        ),
+                    )));
                 }
-                RawValue::Float(x) => {
-                    let mut s = String::new();
-                    crate::output::dxf_writer::push_float(&mut s, x);
-                    Cow::Owned(s)
-                }
-                RawValue::Int(i) => Cow::Owned(i.to_string()),
-                RawValue::Hex(b) => Cow::Owned(b.iter().map(|x| format!("{x:02X}")).collect()),
-            };
-            return Some(Ok(Tag {
-                code: raw.code,
-                value,
-                pos: raw.pos,
-            }));
-        }
+                v
+            }
+            RawValue::Float(x) => {
+                let mut s = String::new();
+                crate::output::dxf_writer::push_float(&mut s, x);
+                Cow::Owned(s)
+            }
+            RawValue::Int(i) => Cow::Owned(i.to_string()),
+            RawValue::Hex(b) => Cow::Owned(b.iter().map(|x| format!("{x:02X}")).collect()),
+        };
+        Some(Ok(Tag {
+            code: raw.code,
+            value,
+            pos: raw.pos,
+        }))
     }
 }
 
