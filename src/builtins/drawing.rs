@@ -307,29 +307,7 @@ fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
     let path = script_path(it, &name);
     let other = crate::output::open_drawing(&path, false).map_err(|e| err(e.to_string()))?;
-    let d = drawing(it);
-    for l in other.layers() {
-        if d.layer(&l.name).is_none() {
-            // A name the model refuses cannot be merged; its entities land on it anyway.
-            let _ = d.set_layer_record(l.clone());
-        }
-    }
-    let mut added = Vec::new();
-    for (e, src) in other.entities_with_sources() {
-        let mut e = e.clone();
-        e.handle = 0;
-        // Modelled entities are re-written from the model in their new drawing; only the
-        // unmodelled ones need their groups.
-        let src = match e.kind {
-            EntityKind::Unmodelled { .. } => src.cloned().map(|mut s| {
-                // Into this drawing's model space, whatever layout it came from.
-                s.block = None;
-                s
-            }),
-            _ => None,
-        };
-        added.push(d.push_loaded(e, src));
-    }
+    let added = drawing(it).import(&other);
     if added.is_empty() {
         return Ok(Value::Nil);
     }

@@ -132,6 +132,7 @@ impl Drawing {
         self.document.as_deref()
     }
 
+    /// The opened file's tables and blocks, to add records to (`dxf-import`, APPIDs).
     pub fn document_mut(&mut self) -> Option<&mut DxfDocument> {
         self.document.as_deref_mut()
     }
@@ -155,6 +156,18 @@ impl Drawing {
     pub fn source_mut(&mut self, handle: u64) -> Option<&mut SourceRecord> {
         let i = self.index(handle)?;
         self.sources[i].as_deref_mut()
+    }
+
+    /// Replace the groups an entity kept as read is written from (`entmod` of an INSERT,
+    /// HATCH...); false when it has none.
+    pub fn set_source_tags(&mut self, handle: u64, tags: TagList) -> bool {
+        match self.source_mut(handle) {
+            Some(s) => {
+                s.tags = tags;
+                true
+            }
+            None => false,
+        }
     }
 
     /// Start new handles at `h` (an opened file's `$HANDSEED`), for a drawing with no

@@ -44,6 +44,7 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
         }
     }
     let layers = layer_records(d, doc, &mut alloc);
+    let styles = new_style_records(d, doc, &mut alloc);
     let handseed = format!("{:X}", alloc());
 
     let mut out = String::with_capacity(ents.len() + (1 << 16));
@@ -75,6 +76,12 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                                 .write_to(&mut out);
                         }
                         for r in &layers {
+                            r.write_to(&mut out);
+                        }
+                    } else if t.name.eq_ignore_ascii_case("STYLE") && !styles.is_empty() {
+                        let n = t.records.len() + styles.len();
+                        t.head.with(70, &n.to_string(), 2).write_to(&mut out);
+                        for r in t.records.iter().chain(&styles) {
                             r.write_to(&mut out);
                         }
                     } else {
@@ -185,6 +192,7 @@ fn write_one(
                 if !doc.is_r12() {
                     t = t.with(330, &format!("{model:X}"), 5);
                 }
+                t = renumber_followers(&t, e.handle, alloc);
             }
             t.write_to(out);
             return;
@@ -211,7 +219,10 @@ fn write_one(
     }
     let mut t = TagList::from_dxf_text(&w.out);
     if let Some(s) = src {
-        t = keep_from_original(&t, &s.tags);
+        t = match super::dxf_merge::merge_changed(&s.tags, &t, e, &s.original) {
+            Some(m) => m,
+            None => keep_from_original(&t, &s.tags),
+        };
     }
     if doc.is_r12() {
         t = r12_groups(&t);
@@ -357,4 +368,89 @@ fn patch_layer(r: &TagList, l: &Layer) -> TagList {
     r.with(70, &flags.to_string(), 2)
         .with(62, &l.color.to_string(), 70)
         .with(6, &l.linetype, 62)
+}
+
+/// STYLE records for the text styles the drawing's TEXT entities name and the file lacks:
+/// copies of its "Standard" record (same font and settings) under the new name, so no TEXT
+/// names a style that does not exist.
+fn new_style_records(
+    d: &Drawing,
+    doc: &DxfDocument,
+    alloc: &mut impl FnMut() -> u64,
+) -> Vec<TagList> {
+    let old = doc.table_records("STYLE");
+    let Some(template) = old
+        .iter()
+        .find(|r| r.get(2).is_some_and(|n| n.eq_ignore_ascii_case("Standard")))
+        .or(old.first())
+    else {
+        return Vec::new();
+    };
+    let mut names: Vec<&str> = Vec::new();
+    for e in d.entities() {
+        if let EntityKind::Text { style, .. } = &e.kind {
+            let known = |n: &str| n.eq_ignore_ascii_case(style);
+            if !style.is_empty()
+                && !old.iter().any(|r| r.get(2).is_some_and(known))
+                && !names.iter().any(|n| known(n))
+            {
+                names.push(style);
+            }
+        }
+    }
+    names
+        .into_iter()
+        .map(|name| {
+            let mut r = without_app_data(template).with(2, name, 100);
+            if r.get(5).is_some() {
+                r = r.with(5, &format!("{:X}", alloc()), 0);
+            }
+            r
+        })
+        .collect()
+}
+
+/// A record minus its application data (reactors, extension dictionary) and extended data,
+/// which belong to the record it was copied from.
+fn without_app_data(r: &TagList) -> TagList {
+    let mut out = TagList::new();
+    let mut in_app = false;
+    for (c, v) in r.iter() {
+        if c == 102 {
+            in_app = v.starts_with('{');
+            continue;
+        }
+        if !in_app && c < 1000 {
+            out.push(c, v);
+        }
+    }
+    out
+}
+
+/// An imported entity's ATTRIB/VERTEX/SEQEND followers: fresh handles, owned by their
+/// entity's new handle (their old ones belong to the file they came from).
+fn renumber_followers(t: &TagList, parent: u64, alloc: &mut impl FnMut() -> u64) -> TagList {
+    let first = t.first_record_end();
+    let mut out = TagList::new();
+    let mut in_app = false;
+    let mut record_start = 0;
+    for (i, (c, v)) in t.iter().enumerate() {
+        if c == 0 {
+            record_start = i;
+            in_app = false;
+        }
+        if i < first {
+            out.push(c, v);
+            continue;
+        }
+        if c == 102 {
+            in_app = v.starts_with('{');
+        }
+        match c {
+            5 if i == record_start + 1 => out.push(5, &format!("{:X}", alloc())),
+            330 if !in_app => out.push(330, &format!("{parent:X}")),
+            _ => out.push(c, v),
+        }
+    }
+    out
 }

@@ -41,7 +41,7 @@ def extra(e):
         if t == "LWPOLYLINE":
             return [list(p) for p in e.get_points()]
         if t == "SPLINE":
-            return [list(map(list, e.control_points)), list(e.knots()), list(e.weights()),
+            return [list(map(list, e.control_points)), list(e.knots), list(e.weights),
                     list(map(list, e.fit_points))]
         if t == "MTEXT":
             return e.text
@@ -85,7 +85,7 @@ def compare(orig, copy):
     damaged = False
     try:
         a = ezdxf.readfile(orig)
-    except ezdxf.DXFStructureError:
+    except (ezdxf.DXFStructureError, ValueError):
         # A damaged original (some real files are): ezdxf's own recovery reads it, and the
         # copy, kept as it was, may need the same.
         damaged = True
@@ -161,4 +161,5 @@ def main():
     print(json.dumps(out, indent=1))
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -443,7 +443,16 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
             return Ok(Value::Nil);
         }
     }
+    if !modify_kept_groups(it, name, &new, &old)? {
+        return Ok(Value::Nil);
+    }
     if name.sub != 0 {
+        if drawing(it)
+            .source(name.handle)
+            .is_some_and(|s| unmodelled(&s.original))
+        {
+            return Ok(a[0].clone());
+        }
         return Ok(if modify_vertex(it, name, &new)? {
             a[0].clone()
         } else {
@@ -493,6 +502,35 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         super::objects::apply_xdata(it, name.handle, apps);
     }
     Ok(a[0].clone())
+}
+
+fn unmodelled(e: &Entity) -> bool {
+    matches!(e.kind, EntityKind::Unmodelled { .. })
+}
+
+/// `entmod` of an entity kept as its groups (INSERT, MTEXT, HATCH, DIMENSION... and their
+/// ATTRIB followers): the list's groups replace the kept ones. False when they do not fit.
+fn modify_kept_groups(
+    it: &mut Interp,
+    name: super::Ename,
+    g: &Groups,
+    old: &Groups,
+) -> Result<bool, Exn> {
+    let d = drawing(it);
+    let Some(tags) = d
+        .source(name.handle)
+        .filter(|s| unmodelled(&s.original) && d.get(name.handle).is_some())
+        .map(|s| s.tags.clone())
+    else {
+        return Ok(true);
+    };
+    match super::tag_list::modify_tags(it, &tags, name.sub as usize, g, old)? {
+        Some(t) => {
+            drawing(it).set_source_tags(name.handle, t);
+            Ok(true)
+        }
+        None => Ok(false),
+    }
 }
 
 /// `entmod` of a VERTEX: its location (10) and bulge (42).

@@ -4,6 +4,7 @@
 
 use super::dxf_list::pair;
 use super::ename_value;
+use crate::lang::error::Exn;
 use crate::lang::{Interp, Value};
 use crate::output::dxfin::tags::{value_type, ValueType};
 use crate::output::record::TagList;
@@ -146,4 +147,151 @@ fn typed_value(
 
 fn num(v: &str) -> f64 {
     v.trim().parse().unwrap_or(0.0)
+}
+
+/// `entmod` of a record kept as its groups (record `index`: 0 the entity, else an ATTRIB or
+/// VERTEX follower): each group of the list replaces the record's group with its code, the
+/// i-th of a repeated code the i-th (as AutoCAD matches them); a code the record lacks is
+/// added at the end of its data. Handles, owners, subclass markers, application data and
+/// extended data are kept; at index 0 the layer and colour are the drawing's (set by the
+/// caller). A group equal to the `old` list's (the record's `entget`) is left as it was
+/// read. `None` when the list has more of a code than the record can take.
+pub fn modify_tags(
+    it: &Interp,
+    t: &TagList,
+    index: usize,
+    groups: &super::dxf_list::Groups,
+    old: &super::dxf_list::Groups,
+) -> Result<Option<TagList>, Exn> {
+    let Some(range) = records(t).get(index).cloned() else {
+        return Ok(None);
+    };
+    let ty = t.at(range.start).1.to_string();
+    let mut rec: Vec<(i32, String)> = range
+        .clone()
+        .map(|i| (t.at(i).0, t.at(i).1.to_string()))
+        .collect();
+    let kept = |c: i32| {
+        matches!(c, -5..=0 | 5 | 105 | 100 | 102 | 330 | 360)
+            || c >= 1000
+            || (index == 0 && matches!(c, 8 | 62))
+    };
+    // Where each code occurs in the record's own data (not in application or extended data).
+    let data_end = rec
+        .iter()
+        .position(|(c, _)| *c >= 1000)
+        .unwrap_or(rec.len());
+    let mut in_app = false;
+    let mut slots: Vec<(i32, usize)> = Vec::new();
+    for (k, (c, v)) in rec[..data_end].iter().enumerate() {
+        if *c == 102 {
+            in_app = v.starts_with('{');
+        } else if !in_app && k > 0 {
+            slots.push((*c, k));
+        }
+    }
+    let mut seen: Vec<(i32, usize)> = Vec::new();
+    let mut added: Vec<(i32, String)> = Vec::new();
+    for (c, v) in &groups.0 {
+        let c = *c;
+        if kept(c) {
+            continue;
+        }
+        let n = match seen.iter_mut().find(|(x, _)| *x == c) {
+            Some((_, n)) => {
+                *n += 1;
+                *n - 1
+            }
+            None => {
+                seen.push((c, 1));
+                0
+            }
+        };
+        // A group given back as `entget` gave it keeps its text exactly.
+        let unchanged = old
+            .0
+            .iter()
+            .filter(|(x, _)| *x == c)
+            .nth(n)
+            .is_some_and(|(_, ov)| ov.equal(v, 0.0));
+        if unchanged {
+            continue;
+        }
+        let texts = group_texts(it, c, v, &ty)?;
+        match slots.iter().filter(|(x, _)| *x == c).nth(n) {
+            Some(&(_, k)) => {
+                // A point's coordinates follow its x group.
+                for (j, (code, text)) in texts.into_iter().enumerate() {
+                    match rec.get_mut(k + j) {
+                        Some(g) if g.0 == code => g.1 = text,
+                        _ => {}
+                    }
+                }
+            }
+            None if n == 0 => added.extend(texts),
+            None => return Ok(None),
+        }
+    }
+    let at = data_end;
+    rec.splice(at..at, added);
+    let mut out = TagList::new();
+    for i in 0..range.start {
+        let (c, v) = t.at(i);
+        out.push(c, v);
+    }
+    for (c, v) in &rec {
+        out.push(*c, v);
+    }
+    for i in range.end..t.len() {
+        let (c, v) = t.at(i);
+        out.push(c, v);
+    }
+    Ok(Some(out))
+}
+
+/// A list value as the group(s) of a file: a point as its x, y (and z) groups, an angle in
+/// degrees, an entity name as its handle, numbers as DXF writes them.
+fn group_texts(it: &Interp, c: i32, v: &Value, ty: &str) -> Result<Vec<(i32, String)>, Exn> {
+    let bad = || super::dxf_list::bad_group(it, &pair(c, v.clone()));
+    let real = |x: f64| {
+        let mut s = String::new();
+        crate::output::dxf_writer::push_float(&mut s, x);
+        s
+    };
+    if matches!(c, 10..=18 | 110..=112 | 210) && matches!(v, Value::Cons(_)) {
+        let p: Vec<f64> = v
+            .iter()
+            .map(|x| x.as_f64().filter(|x| x.is_finite()))
+            .collect::<Option<_>>()
+            .ok_or_else(bad)?;
+        if !(2..=3).contains(&p.len()) {
+            return Err(bad());
+        }
+        return Ok(p
+            .iter()
+            .enumerate()
+            .map(|(i, x)| (c + 10 * i as i32, real(*x)))
+            .collect());
+    }
+    let text = match (value_type(c), v) {
+        (_, Value::Obj(_)) if matches!(c, 320..=369 | 390..=399 | 480 | 481) => {
+            let e = super::ename_arg(it, v)?;
+            format!("{:X}", e.handle)
+        }
+        (ValueType::Float, _) => {
+            let x = v.as_f64().filter(|x| x.is_finite()).ok_or_else(bad)?;
+            real(if matches!(c, 50..=58) && ty != "MTEXT" {
+                x.to_degrees()
+            } else {
+                x
+            })
+        }
+        (
+            ValueType::Int16 | ValueType::Int32 | ValueType::Int64 | ValueType::Bool,
+            Value::Int(i),
+        ) => i.to_string(),
+        (ValueType::Str | ValueType::Binary, Value::Str(s)) => s.to_string(),
+        _ => return Err(bad()),
+    };
+    Ok(vec![(c, text)])
 }

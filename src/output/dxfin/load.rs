@@ -74,7 +74,16 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
                         Section::Other { name, records }
                     }
                     _ => {
+                        // THUMBNAILIMAGE's data comes before any record: it arrives with the
+                        // SECTION record, and is kept as a first record without a 0 group.
+                        let mut lead = TagList::new();
+                        for (c, v) in rec.iter().skip(2) {
+                            lead.push(c, v);
+                        }
                         let mut records = Vec::new();
+                        if !lead.is_empty() {
+                            records.push(lead);
+                        }
                         rs.section_body(&name, pos, false, |r| {
                             records.push(r);
                             Ok(())

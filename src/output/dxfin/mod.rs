@@ -64,7 +64,7 @@ pub fn recover_note(path: &Path, d: &Drawing) -> Option<String> {
     let n = d.document()?.recovered;
     (n > 0).then(|| {
         format!(
-            "warning: {}: damaged DXF read with --recover ({n} bad group{} skipped)",
+            "warning: {}: damaged DXF read with --recover ({n} bad group{} skipped or repaired)",
             path.display(),
             if n == 1 { "" } else { "s" }
         )

@@ -78,6 +78,19 @@ pub fn check_number(code: i32, v: &str) -> bool {
     }
 }
 
+/// A damaged number read as its longest well-formed prefix ("-6,5" → "-6", as ezdxf's
+/// recover reads it), or 0.
+fn salvage_number(code: i32, v: &str) -> String {
+    let t = v.trim();
+    let float = value_type(code) == ValueType::Float;
+    (1..=t.len())
+        .rev()
+        .filter(|&n| t.is_char_boundary(n))
+        .map(|n| &t[..n])
+        .find(|p| p.parse::<i64>().is_ok() || float && p.parse::<f64>().is_ok_and(f64::is_finite))
+        .map_or_else(|| "0".to_string(), |p| p.to_string())
+}
+
 /// The text encoding of a DXF file: its version and code page.
 #[derive(Clone, Copy, Debug)]
 pub struct FileEncoding {
@@ -421,44 +434,48 @@ impl<'a> Iterator for Tagger<'a> {
     type Item = Result<Tag<'a>, DxfReadError>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        loop {
-            let raw = match self.next_raw()? {
-                Ok(r) => r,
-                Err(e) => return Some(Err(e)),
-            };
-            let value: Cow<'a, str> = match raw.value {
-                RawValue::Bytes(b) => {
-                    let v = self.decode(b);
-                    if !check_number(raw.code, &v) {
-                        if self.recover {
-                            self.recovered += 1;
-                            continue;
-                        }
-                        return Some(Err(DxfReadError::at(
-                            Some(raw.pos),
-                            format!(
-                                "group code {} needs a number, found {:?}",
-                                raw.code,
-                                v.chars().take(40).collect::<String>()
-                            ),
-                        )));
+        let raw = match self.next_raw()? {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e)),
+        };
+        let value: Cow<'a, str> = match raw.value {
+            RawValue::Bytes(b) => {
+                let v = self.decode(b);
+                if !check_number(raw.code, &v) {
+                    if self.recover {
+                        // Kept, as ezdxf's recover does: dropping the group would leave
+                        // a point without its y and the copy unreadable.
+                        self.recovered += 1;
+                        return Some(Ok(Tag {
+                            code: raw.code,
+                            value: Cow::Owned(salvage_number(raw.code, &v)),
+                            pos: raw.pos,
+                        }));
                     }
-                    v
+                    return Some(Err(DxfReadError::at(
+                        Some(raw.pos),
+                        format!(
+                            "group code {} needs a number, found {:?}",
+                            raw.code,
+                            v.chars().take(40).collect::<String>()
+                        ),
+                    )));
                 }
-                RawValue::Float(x) => {
-                    let mut s = String::new();
-                    crate::output::dxf_writer::push_float(&mut s, x);
-                    Cow::Owned(s)
-                }
-                RawValue::Int(i) => Cow::Owned(i.to_string()),
-                RawValue::Hex(b) => Cow::Owned(b.iter().map(|x| format!("{x:02X}")).collect()),
-            };
-            return Some(Ok(Tag {
-                code: raw.code,
-                value,
-                pos: raw.pos,
-            }));
-        }
+                v
+            }
+            RawValue::Float(x) => {
+                let mut s = String::new();
+                crate::output::dxf_writer::push_float(&mut s, x);
+                Cow::Owned(s)
+            }
+            RawValue::Int(i) => Cow::Owned(i.to_string()),
+            RawValue::Hex(b) => Cow::Owned(b.iter().map(|x| format!("{x:02X}")).collect()),
+        };
+        Some(Ok(Tag {
+            code: raw.code,
+            value,
+            pos: raw.pos,
+        }))
     }
 }
 

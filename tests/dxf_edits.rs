@@ -1,0 +1,149 @@
+//! `entmod` on an opened drawing changes only what it is given: the groups lispcad does not
+//! model (thickness, extrusion, line type scale, true colour, transparency, text alignment,
+//! per-vertex widths, spline tangents, extended data) survive an edit of a modelled entity,
+//! and any group of an entity kept as its groups (INSERT and its ATTRIBs, MTEXT, HATCH) can
+//! be replaced. A TEXT style the script uses is added to the STYLE table. ezdxf reads the
+//! original and the result, and computes the expected values itself
+//! (`tests/validate/dxf_edits.py`).
+
+mod dxf_support;
+
+use std::process::Command;
+
+use dxf_support::{lispcad, manifest, python, strs};
+
+const EDIT: &str = r#"
+(defun ent (layer / ss) (if (setq ss (ssget "X" (list (cons 8 layer)))) (ssname ss 0)))
+(defun put (e code val) (entmod (subst (cons code val) (assoc code e) e)))
+(defun moved (e code d) (subst (cons code (mapcar '+ (cdr (assoc code e)) d)) (assoc code e) e))
+(if (setq x (ent "LN")) (entmod (moved (entget x) 10 '(1 2 3))))
+(if (setq x (ent "TX")) (put (entget x) 1 "world"))
+(if (setq x (ent "TJ")) (entmod (moved (entget x) 10 '(2 -1 0))))
+(if (setq x (ent "CI")) (put (moved (entget x) 10 '(0 0 1)) 40 2.0))
+(if (setq x (ent "LW")) (entmod (moved (entget x) 10 '(0.5 0))))
+(if (setq x (ent "SP"))
+  (progn
+    (setq e (entget x)
+          old (cadr (vl-remove-if-not '(lambda (g) (= (car g) 10)) e)))
+    (entmod (subst (cons 10 (mapcar '+ (cdr old) '(0 1 0))) old e))))
+(if (setq x (ent "IN"))
+  (progn
+    (put (subst '(10 41.0 42.0 0.0) (assoc 10 (entget x)) (entget x)) 41 3.0)
+    (put (entget (entnext x)) 1 "second")))
+(if (setq x (ent "MT")) (put (subst '(40 . 2.5) (assoc 40 (entget x)) (entget x)) 1 "new text"))
+(if (setq x (ent "HA")) (put (subst '(62 . 6) (assoc 62 (entget x)) (entget x)) 41 0.75))
+(entmake '((0 . "TEXT") (8 . "ZZ") (10 0.0 0.0 0.0) (40 . 1.0) (1 . "new") (7 . "Mono")))
+"#;
+
+fn edits(dir: &std::path::Path, version: &str) -> serde_json::Value {
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let orig = dir.join(format!("{version}.dxf"));
+    let out = dir.join(format!("{version}-edited.dxf"));
+    let o = Command::new(python())
+        .arg(&script)
+        .args(["make", orig.to_str().unwrap(), version])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = lispcad(
+        dir,
+        &[
+            "run",
+            "edit.lsp",
+            "--open",
+            orig.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ],
+    );
+    assert!(
+        o.status.success(),
+        "{version}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let o = Command::new(python())
+        .arg(&script)
+        .args(["check", orig.to_str().unwrap(), out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn entmod_changes_only_the_given_groups() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("edit.lsp"), EDIT).unwrap();
+    for version in ["R12", "R2000", "R2018"] {
+        let r = edits(dir.path(), version);
+        assert!(strs(&r["diffs"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_errors"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_fixes"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["styles"]).contains(&"Mono".to_string()), "{r}");
+    }
+}
+
+#[test]
+fn dxf_import_brings_the_block_definitions_its_inserts_need() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
+    let py = |args: &[&std::path::Path], mode: &str| {
+        let o = Command::new(python())
+            .arg(&script)
+            .arg(mode)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    py(&[&target, &other], "import-make");
+    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
+    let o = lispcad(
+        d,
+        &[
+            "run",
+            "import.lsp",
+            "--open",
+            "t.dxf",
+            "-o",
+            result.to_str().unwrap(),
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value =
+        serde_json::from_slice(&py(&[&target, &other, &result], "import-check")).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
+
+/// A group of the wrong type is an error, more of a repeated code than the entity has gives
+/// nil, and neither changes the entity.
+#[test]
+fn entmod_of_kept_groups_refuses_what_does_not_fit() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let o = Command::new(python())
+        .arg(&script)
+        .args(["make", d.join("in.dxf").to_str().unwrap(), "R2018"])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let lsp = r#"
+(setq h (ssname (ssget "X" '((0 . "HATCH"))) 0) e (entget h) more e)
+(princ (vl-catch-all-error-p (vl-catch-all-apply 'entmod (list (subst '(41 . "x") (assoc 41 e) e)))))
+(repeat 50 (setq more (append more '((10 1.0 2.0)))))
+(princ " ")
+(princ (entmod more))
+(princ " ")
+(princ (equal (entget h) e))
+"#;
+    std::fs::write(d.join("bad.lsp"), lsp).unwrap();
+    let o = lispcad(d, &["run", "bad.lsp", "--open", "in.dxf"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stdout).trim(), "T nil T");
+}

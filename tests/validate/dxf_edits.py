@@ -1,0 +1,243 @@
+"""Edits of opened entities must change only the edited values (tests/dxf_edits.rs).
+
+usage: dxf_edits.py make OUT.dxf VERSION
+           writes a drawing whose entities carry groups lispcad does not model (thickness,
+           extrusion, line type scale, true colour, transparency, line weight, text alignment,
+           per-vertex widths, spline tangents, xdata), one entity per layer;
+       dxf_edits.py import-make TARGET OTHER
+           writes a target drawing and another one whose INSERTs and DIMENSION name blocks
+           the target lacks (nested, using a text style and a line type the target lacks)
+           or has (a named one, and an anonymous one under the same name);
+       dxf_edits.py import-check TARGET OTHER RESULT
+           prints {"diffs", "audit_errors", "audit_fixes"} for RESULT = TARGET + OTHER;
+       dxf_edits.py check ORIG EDITED
+           reads both with ezdxf and prints a JSON object: "diffs" (every attribute or data
+           difference that the edit script in dxf_edits.rs did not make; the expected changes
+           are computed here, independently of lispcad), "audit_errors", "audit_fixes",
+           "styles" (the STYLE table's names).
+"""
+import json
+import sys
+
+import ezdxf
+from ezdxf.math import Vec3
+
+from dxf_compare import extra, same, same_deep, xdata
+
+MODERN_ONLY = {"LW", "SP", "MT", "HA"}
+
+
+def make(path, version):
+    doc = ezdxf.new(version)
+    modern = version != "R12"
+    msp = doc.modelspace()
+    doc.appids.add("LISPCAD")
+    doc.linetypes.add("DASHED", [0.75, 0.5, -0.25])
+    for name in ["LN", "TX", "TJ", "CI", "LW", "SP", "IN", "MT", "HA", "ZZ"]:
+        if modern or name not in MODERN_ONLY:
+            doc.layers.add(name)
+    style = {"linetype": "DASHED", "ltscale": 0.5, "color": 3}
+    if modern:
+        style.update({"true_color": 0x123456, "transparency": 0x02000040, "lineweight": 35})
+    line = msp.add_line((0, 0, 0), (10, 5, 1), dxfattribs={
+        "layer": "LN", "thickness": 2.5, "extrusion": (0.6, 0, 0.8), **style})
+    line.set_xdata("LISPCAD", [(1000, "kept"), (1040, 3.25)])
+    msp.add_text("hello", dxfattribs={
+        "layer": "TX", "insert": (1, 2), "height": 2.5, "width": 0.8, "oblique": 15,
+        "thickness": 0.5, **style})
+    tj = msp.add_text("centred", dxfattribs={"layer": "TJ", "height": 1.5, "rotation": 10})
+    tj.set_placement((5, 5), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    tj.dxf.insert = (4, 4.5)
+    msp.add_circle((1, 2, 3), 1.5, dxfattribs={
+        "layer": "CI", "thickness": 3, "extrusion": (0, 0, -1), **style})
+    blk = doc.blocks.new("TAG")
+    blk.add_circle((0, 0), 1)
+    blk.add_attdef("NAME", (0, -2), dxfattribs={"height": 0.5})
+    ins = msp.add_blockref("TAG", (40, 40), dxfattribs={
+        "layer": "IN", "rotation": 15, "xscale": 2, **style})
+    ins.add_attrib("NAME", "first", (40, 38), dxfattribs={"layer": "IN", "height": 0.5})
+    if modern:
+        msp.add_lwpolyline(
+            [(0, 0, 0.1, 0.2, 0.5), (10, 0, 0.3, 0.4, 0), (10, 10, 0, 0, -1), (0, 10, 0.5, 0.5, 0)],
+            format="xyseb", close=True,
+            dxfattribs={"layer": "LW", "thickness": 1.5, "flags": 128, **style})
+        sp = msp.add_open_spline([(0, 0), (3, 5), (6, -2), (9, 4), (12, 0)],
+                            dxfattribs={"layer": "SP", **style})
+        sp.dxf.start_tangent = (1, 1, 0)
+        sp.dxf.end_tangent = (1, -1, 0)
+        sp.dxf.knot_tolerance = 1e-8
+        msp.add_mtext("multi\\Pline", dxfattribs={
+            "layer": "MT", "insert": (0, -10), "char_height": 2, "width": 30,
+            "attachment_point": 5, **style})
+        hatch = msp.add_hatch(color=4, dxfattribs={"layer": "HA"})
+        hatch.set_pattern_fill("ANSI31", scale=0.5, angle=0)
+        hatch.paths.add_polyline_path([(0, 0), (4, 0), (4, 4), (0, 4)], is_closed=True)
+        hatch.set_xdata("LISPCAD", [(1000, "hatch data")])
+    doc.saveas(path)
+
+
+def by_layer(doc):
+    out = {}
+    for e in doc.modelspace():
+        out.setdefault(e.dxf.layer, []).append(e)
+    return out
+
+
+def expected(ea):
+    """The attribute changes the edit script makes to entity `ea`: {name: value}, plus
+    the expected type-specific data (None = unchanged)."""
+    layer = ea.dxf.layer
+    if layer == "LN":
+        return {"start": Vec3(ea.dxf.start) + (1, 2, 3)}, None
+    if layer == "TX":
+        return {"text": "world"}, None
+    if layer == "TJ":
+        d = Vec3(2, -1, 0)
+        return {"insert": Vec3(ea.dxf.insert) + d, "align_point": Vec3(ea.dxf.align_point) + d}, None
+    if layer == "CI":
+        return {"center": Vec3(ea.dxf.center) + (0, 0, 1), "radius": 2.0}, None
+    if layer == "LW":
+        pts = [list(p) for p in ea.get_points()]
+        pts[0][0] += 0.5
+        return {}, pts
+    if layer == "SP":
+        cps = [list(p) for p in ea.control_points]
+        cps[1][1] += 1.0
+        return {}, [cps, list(ea.knots), list(ea.weights), [list(p) for p in ea.fit_points]]
+    if layer == "IN":
+        return {"insert": Vec3(41, 42, 0), "xscale": 3.0}, None
+    if layer == "MT":
+        return {"char_height": 2.5}, "new text"
+    if layer == "HA":
+        return {"pattern_scale": 0.75, "color": 6}, None
+    return {}, None
+
+
+def check(orig, edited):
+    a = ezdxf.readfile(orig)
+    b = ezdxf.readfile(edited)
+    auditor = b.audit()
+    diffs = []
+    la, lb = by_layer(a), by_layer(b)
+    for layer, ents in la.items():
+        for ea in ents:
+            h = ea.dxf.handle
+            eb = b.entitydb.get(h)
+            if eb is None:
+                diffs.append(f"{layer} {h} missing")
+                continue
+            changes, data = expected(ea)
+            da = ea.dxf.all_existing_dxf_attribs()
+            db = eb.dxf.all_existing_dxf_attribs()
+            if a.dxfversion <= "AC1009":
+                # R12 files have no owners: ezdxf links them to records it numbers on loading.
+                da.pop("owner", None)
+                db.pop("owner", None)
+            for k in sorted(set(da) | set(db) | set(changes)):
+                want = changes.get(k, da.get(k))
+                if not same(want, db.get(k)):
+                    diffs.append(f"{layer} {ea.dxftype()} {k}: want {want!r} got {db.get(k)!r}")
+            want = extra(ea) if data is None else data
+            if not same_deep(want, extra(eb)):
+                diffs.append(f"{layer} {ea.dxftype()} data: want {want!r} got {extra(eb)!r}")
+            if xdata(ea) != xdata(eb):
+                diffs.append(f"{layer} xdata: {xdata(ea)!r} -> {xdata(eb)!r}")
+            if ea.dxftype() == "INSERT":
+                at = {x.dxf.tag: (x.dxf.text, x.dxf.handle, x.dxf.height) for x in ea.attribs}
+                bt = {x.dxf.tag: (x.dxf.text, x.dxf.handle, x.dxf.height) for x in eb.attribs}
+                at = {k: ("second",) + v[1:] for k, v in at.items()}
+                if at != bt:
+                    diffs.append(f"attribs: want {at!r} got {bt!r}")
+    new = lb.get("ZZ", [])
+    if [(e.dxftype(), e.dxf.get("style")) for e in new] != [("TEXT", "Mono")]:
+        diffs.append(f"new entities on ZZ: {[(e.dxftype(), e.dxf.get('style')) for e in new]}")
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+        "styles": sorted(s.dxf.name for s in b.styles),
+    }))
+
+
+def import_make(target, other):
+    a = ezdxf.new("R2018")
+    a.blocks.new("SAME").add_circle((0, 0), 1)
+    a.modelspace().add_blockref("SAME", (0, 0))
+    a.modelspace().add_linear_dim(base=(0, 5), p1=(0, 0), p2=(3, 0)).render()
+    a.saveas(target)
+    b = ezdxf.new("R2018")
+    b.styles.add("Mono", font="cour.ttf")
+    b.linetypes.add("DASHED", [0.75, 0.5, -0.25])
+    b.layers.add("INNER_LAYER", color=2)
+    inner = b.blocks.new("INNER")
+    inner.add_line((0, 0), (1, 1), dxfattribs={"linetype": "DASHED", "layer": "INNER_LAYER"})
+    tag = b.blocks.new("TAG")
+    tag.add_circle((0, 0), 1)
+    tag.add_attdef("NAME", (0, -2), dxfattribs={"height": 0.5})
+    tag.add_text("label", dxfattribs={"style": "Mono", "height": 0.3})
+    tag.add_blockref("INNER", (2, 2))
+    b.blocks.new("SAME").add_circle((0, 0), 5)
+    msp = b.modelspace()
+    ins = msp.add_blockref("TAG", (40, 40))
+    ins.add_attrib("NAME", "value", (40, 38))
+    msp.add_blockref("SAME", (10, 10))
+    msp.add_linear_dim(base=(0, 60), p1=(0, 55), p2=(20, 55)).render()
+    b.saveas(other)
+
+
+def block_content(doc, name):
+    return sorted(e.dxftype() for e in doc.blocks.get(name))
+
+
+def ref(e):
+    return e.dxf.name if e.dxftype() == "INSERT" else e.dxf.geometry
+
+
+def import_check(target, other, result):
+    a, b, r = ezdxf.readfile(target), ezdxf.readfile(other), ezdxf.readfile(result)
+    auditor = r.audit()
+    diffs = []
+    for name in ["TAG", "INNER"]:
+        if name not in r.blocks or block_content(r, name) != block_content(b, name):
+            diffs.append(f"block {name} not imported as it was")
+    if block_content(r, "SAME") != block_content(a, "SAME") or \
+            r.blocks.get("SAME")[0].dxf.radius != 1:
+        diffs.append("the target's block SAME was replaced")
+    for s, table in [("Mono", r.styles), ("DASHED", r.linetypes)]:
+        if s not in table:
+            diffs.append(f"{s} missing")
+    msp = r.modelspace()
+    refs = [e for e in msp if e.dxftype() in ("INSERT", "DIMENSION")]
+    if len(refs) != 5:
+        diffs.append(f"{len(refs)} references")
+    for e in refs:
+        if ref(e) not in r.blocks:
+            diffs.append(f"{e.dxftype()} names missing block {ref(e)}")
+    dims = [e for e in refs if e.dxftype() == "DIMENSION"]
+    names = {ref(d) for d in dims}
+    if len(names) != 2:
+        diffs.append(f"dimension blocks {names}")
+    want = [block_content(a, ref(d)) for d in a.modelspace().query("DIMENSION")] + \
+        [block_content(b, ref(d)) for d in b.modelspace().query("DIMENSION")]
+    got = [block_content(r, ref(d)) for d in dims]
+    if want != got:
+        diffs.append(f"dimension blocks {got} want {want}")
+    tags = [(x.dxf.tag, x.dxf.text) for e in msp.query("INSERT") for x in e.attribs]
+    if tags != [("NAME", "value")]:
+        diffs.append(f"attribs {tags}")
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+    }))
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "import-make":
+        import_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "import-check":
+        import_check(sys.argv[2], sys.argv[3], sys.argv[4])
+    elif sys.argv[1] == "make":
+        make(sys.argv[2], sys.argv[3])
+    else:
+        check(sys.argv[2], sys.argv[3])
