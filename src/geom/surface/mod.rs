@@ -7,11 +7,13 @@
 //! [`CurveRef`] (any [`ParamCurve`]); [`SampledCurve`] wraps a point list.
 
 mod analytic;
+mod coaxial;
 mod error;
 mod hits;
 mod kinds;
 mod ops;
 mod planar;
+mod quadrics;
 mod refine;
 mod sampled;
 mod sweep;
