@@ -263,3 +263,51 @@ fn figure_eight_section_of_a_torus_keeps_its_double_point() {
     let total: f64 = cs.iter().map(length).sum();
     assert!((exact - total).abs() < 1e-6 * exact, "{total} vs {exact}");
 }
+
+fn torus() -> Surface {
+    Surface::revolve(
+        c(Curve::circle(DVec3::new(5.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap()),
+        DVec3::ZERO,
+        DVec3::Z,
+        TAU,
+    )
+    .unwrap()
+}
+
+fn on_torus(p: DVec3) -> f64 {
+    ((rho(p) - 5.0).hypot(p.z) - 1.0).abs()
+}
+
+#[test]
+fn surfaces_touching_without_crossing_meet_in_points() {
+    // A ball of radius 2 about (8, 0, 0) touches the torus's outer equator at (6, 0, 0).
+    let ball = Surface::sphere(DVec3::new(8.0, 0.0, 0.0), 2.0).unwrap();
+    for (a, b) in [(&torus(), &ball), (&ball, &torus())] {
+        let r = surface_intersect_seeded(a, b, 0.01, 1e-6, 1e-9).unwrap();
+        assert_eq!(r.len(), 1, "{r:?}");
+        assert_eq!(r[0].points.len(), 1);
+        let p = r[0].points[0];
+        assert!(on_torus(p) <= 1e-9 && (p.distance(DVec3::new(8.0, 0.0, 0.0)) - 2.0).abs() <= 1e-9);
+        assert!(p.distance(DVec3::new(6.0, 0.0, 0.0)) <= 1e-6, "{p}");
+    }
+    // A cylinder of radius 1 along X at height 2 lies on the torus's top at (±5, 0, 1).
+    let cyl = Surface::cylinder(DVec3::new(-8.0, 0.0, 2.0), DVec3::X, 1.0, 16.0).unwrap();
+    let r = surface_intersect_seeded(&cyl, &torus(), 0.01, 1e-6, 1e-9).unwrap();
+    assert_eq!(r.len(), 2, "{r:?}");
+    for p in r.iter().map(|c| c.points[0]) {
+        assert!(
+            on_torus(p) <= 1e-9 && (p.y.hypot(p.z - 2.0) - 1.0).abs() <= 1e-9,
+            "{p}"
+        );
+        assert!(
+            p.distance(DVec3::new(5.0 * p.x.signum(), 0.0, 1.0)) <= 1e-6,
+            "{p}"
+        );
+    }
+    assert!(r[0].points[0].x * r[1].points[0].x < 0.0);
+    // Lifted by 1e-3 they no longer touch: nothing.
+    let cyl = Surface::cylinder(DVec3::new(-8.0, 0.0, 2.001), DVec3::X, 1.0, 16.0).unwrap();
+    assert!(surface_intersect_seeded(&cyl, &torus(), 0.01, 1e-6, 1e-9)
+        .unwrap()
+        .is_empty());
+}

@@ -8,6 +8,7 @@
 
 mod analytic;
 mod coaxial;
+mod contact;
 mod error;
 mod hits;
 mod kinds;

@@ -200,10 +200,11 @@ pub fn surface_intersect(
 }
 
 /// Intersection curves of two surfaces: closed forms for sphere/sphere, sphere/plane,
-/// plane/plane and a cylinder against a plane parallel to its axis (a tangent contact comes
-/// back as a one-point polyline); otherwise the meshes' intersection seeds the curves and every
-/// point is carried onto both true surfaces by Newton iteration to within `geom_tol`, then the
-/// curves are densified within `chord_tol`.
+/// plane/plane, the pairs with a cylinder and coaxial surfaces of revolution (a tangent contact
+/// comes back as a one-point polyline); otherwise the meshes' intersection seeds the curves and
+/// every point is carried onto both true surfaces by Newton iteration to within `geom_tol`, then
+/// the curves are densified within `chord_tol`; isolated tangent contacts, which the meshes
+/// miss, are found as zero minima of the distance between the surfaces.
 pub fn surface_intersect_tol(
     a: &Surface,
     b: &Surface,
@@ -230,7 +231,7 @@ pub fn surface_intersect_seeded(
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
     let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
-    Ok(seeds
+    let mut curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
             let mut r = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
@@ -238,7 +239,14 @@ pub fn surface_intersect_seeded(
             r
         })
         .filter(|c| !c.points.is_empty())
-        .collect())
+        .collect();
+    // Touching without crossing: the meshes miss each other there.
+    let contacts = super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol);
+    curves.extend(contacts.into_iter().map(|p| Polyline3 {
+        points: vec![p],
+        closed: false,
+    }));
+    Ok(curves)
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for
