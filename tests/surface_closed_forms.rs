@@ -364,3 +364,74 @@ fn planes_across_a_torus_axis_cut_circles_on_the_true_profile() {
         assert!((p.z - 0.6).abs() <= 1e-15);
     }
 }
+
+fn region(pts: &[(f64, f64)], z: f64) -> Surface {
+    Surface::plane(pts.iter().map(|&(x, y)| DVec3::new(x, y, z)).collect()).unwrap()
+}
+
+/// Shoelace area of a closed loop in the XY plane.
+fn loop_area(l: &Polyline3) -> f64 {
+    let p = &l.points;
+    0.5 * (0..p.len())
+        .map(|i| {
+            let (a, b) = (p[i], p[(i + 1) % p.len()]);
+            a.x * b.y - b.x * a.y
+        })
+        .sum::<f64>()
+}
+
+#[test]
+fn coplanar_regions_overlap_in_their_common_region() {
+    let sq = |x0: f64, y0: f64, s: f64| {
+        region(
+            &[(x0, y0), (x0 + s, y0), (x0 + s, y0 + s), (x0, y0 + s)],
+            1.0,
+        )
+    };
+    // [0, 2]² and [1, 3]²: the unit square [1, 2]², as one closed loop.
+    let r = surface_intersect(&sq(0.0, 0.0, 2.0), &sq(1.0, 1.0, 2.0), 0.01).unwrap();
+    assert_eq!(r.len(), 1);
+    assert!(r[0].closed);
+    let mut pts: Vec<(f64, f64)> = r[0].points.iter().map(|p| (p.x, p.y)).collect();
+    pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    assert_eq!(pts, vec![(1.0, 1.0), (1.0, 2.0), (2.0, 1.0), (2.0, 2.0)]);
+    assert!(r[0].points.iter().all(|p| p.z == 1.0));
+    assert_eq!(loop_area(&r[0]), 1.0);
+    // The same region twice: all of it.
+    let r = surface_intersect(&sq(0.0, 0.0, 2.0), &sq(0.0, 0.0, 2.0), 0.01).unwrap();
+    assert_eq!(r.len(), 1);
+    assert_eq!(loop_area(&r[0]), 4.0);
+    // An L (area 3) against [1, 3]² wound the other way: the overlap is the L's arm
+    // [1, 2] × [1, 2] plus nothing else, area 1, counter-clockwise about the L's normal.
+    let l = region(
+        &[
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (2.0, 2.0),
+            (1.0, 2.0),
+            (1.0, 1.0),
+            (0.0, 1.0),
+        ],
+        1.0,
+    );
+    let cw = region(&[(1.0, 1.0), (1.0, 3.0), (3.0, 3.0), (3.0, 1.0)], 1.0);
+    let r = surface_intersect(&l, &cw, 0.01).unwrap();
+    assert_eq!(r.len(), 1);
+    assert_eq!(loop_area(&r[0]), 1.0);
+    // An L against a square over both arms: [0.5, 2] × [0.5, 1] and [1, 2]², area 1.75.
+    let big = region(&[(0.5, 0.5), (2.5, 0.5), (2.5, 2.5), (0.5, 2.5)], 1.0);
+    let r = surface_intersect(&l, &big, 0.01).unwrap();
+    assert_eq!(r.len(), 1);
+    assert!((loop_area(&r[0]) - 1.75).abs() <= 1e-15);
+    assert_eq!(r[0].points.len(), 6);
+    // Coplanar but apart, and parallel planes: nothing.
+    assert!(
+        surface_intersect(&sq(0.0, 0.0, 1.0), &sq(5.0, 5.0, 1.0), 0.01)
+            .unwrap()
+            .is_empty()
+    );
+    let low = region(&[(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)], 0.0);
+    assert!(surface_intersect(&low, &sq(0.0, 0.0, 2.0), 0.01)
+        .unwrap()
+        .is_empty());
+}

@@ -203,7 +203,8 @@ fn line_in_region(o: DVec3, d: DVec3, p: &PlaneRegion, tol: f64) -> Vec<(f64, f6
 fn plane_plane(p: &PlaneRegion, q: &PlaneRegion, tol: f64) -> Vec<Polyline3> {
     let d = p.normal.cross(q.normal);
     if d.length() <= 1e-12 {
-        return Vec::new(); // parallel: apart, or coincident (a region, not a curve)
+        // Parallel: apart (none), or coplanar: their common region's boundary.
+        return super::overlap::coplanar_overlap(p, q, tol).unwrap_or_default();
     }
     // A point on both planes: the one nearest p's first vertex.
     let (hp, hq) = (p.normal.dot(p.boundary[0]), q.normal.dot(q.boundary[0]));

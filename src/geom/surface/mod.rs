@@ -13,6 +13,7 @@ mod error;
 mod hits;
 mod kinds;
 mod ops;
+mod overlap;
 mod planar;
 mod quadrics;
 mod refine;
