@@ -8,7 +8,7 @@
 //! a contact point.
 
 use super::refine::Patch;
-use crate::geom::mesh::{closest_on_triangle, Mesh, Polyline3};
+use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use glam::{DVec2, DVec3};
 use std::cell::Cell;
 
@@ -27,15 +27,23 @@ pub(crate) fn tangent_contacts(
     if va.is_empty() || mb.is_empty() {
         return Vec::new();
     }
+    // Two inscribed meshes of touching surfaces are apart by a few chord tolerances at most.
+    let gap = 8.0 * seed_tol;
     let bvh = mb.bvh();
+    // Distance to mb, only within the gap (a box query rejects the far vertices quickly).
     let dist: Vec<f64> = va
         .iter()
         .map(|&p| {
-            bvh.nearest(p, |t| {
+            let mut best = f64::INFINITY;
+            let b = Aabb {
+                min: p - DVec3::splat(gap),
+                max: p + DVec3::splat(gap),
+            };
+            bvh.query_box(&b, |t| {
                 let [x, y, z] = mb.corners_of(t as usize);
-                closest_on_triangle(p, x, y, z).distance_squared(p)
-            })
-            .map_or(f64::INFINITY, |(_, d2)| d2.sqrt())
+                best = best.min(closest_on_triangle(p, x, y, z).distance(p));
+            });
+            best
         })
         .collect();
     // Each vertex's neighbours and the longest edge at it.
@@ -51,8 +59,6 @@ pub(crate) fn tangent_contacts(
             reach[j as usize] = reach[j as usize].max(l);
         }
     }
-    // Two inscribed meshes touching surfaces are apart by a few chord tolerances at most.
-    let gap = 8.0 * seed_tol;
     let mut out: Vec<DVec3> = Vec::new();
     for i in 0..va.len() {
         let d = dist[i];
