@@ -258,6 +258,21 @@ fn coaxial_torus_and_cylinders_meet_in_circles_or_touch_all_round() {
     for p in r.iter().flat_map(|l| l.points.iter()) {
         assert!((rho(*p) - 5.5).abs() <= 1e-12 && (p.z.abs() - 0.75f64.sqrt()).abs() <= 1e-9);
     }
+    // A fatter coaxial torus (tube about ρ = 5.5): meridian circles cross at ρ = 5.25,
+    // z = ±√(1 − 0.25²).
+    let t2 = Surface::revolve(
+        c(Curve::circle(DVec3::new(0.0, 5.5, 0.0), 1.0, Some(DVec3::X)).unwrap()),
+        DVec3::ZERO,
+        DVec3::Z,
+        TAU,
+    )
+    .unwrap();
+    let r = surface_intersect_tol(&torus, &t2, 1e-6, 1e-9).unwrap();
+    assert_eq!(r.len(), 2);
+    for p in r.iter().flat_map(|l| l.points.iter()) {
+        assert!((rho(*p) - 5.25).abs() <= 1e-12, "{p}");
+        assert!((p.z.abs() - (1.0f64 - 0.0625).sqrt()).abs() <= 1e-12, "{p}");
+    }
     // The outer and inner equators: tangent circles, each once.
     for (rad, exact) in [(6.0, 6.0), (4.0, 4.0)] {
         let r = surface_intersect_tol(&torus, &cyl(rad), 1e-6, 1e-9).unwrap();

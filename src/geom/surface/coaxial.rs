@@ -211,7 +211,7 @@ type Crossing = (DVec2, Span, Option<Span>);
 
 /// The profile's parameters and meridian points, sampled finely enough to bracket crossings.
 fn sample_meridian(ax: &Axis, r: &Revolve, tol: f64) -> (Vec<f64>, Vec<DVec2>) {
-    let (ts, pts) = super::sampled::sample_curve(r.profile.as_ref(), tol.max(1e-7), 512);
+    let (ts, pts) = super::sampled::sample_curve(r.profile.as_ref(), tol, 512);
     (ts, pts.into_iter().map(|p| ax.meridian(p)).collect())
 }
 
@@ -226,7 +226,7 @@ fn profile_implicit(ax: &Axis, r: &Revolve, mer: &Meridian, tol: f64) -> Vec<Cro
     };
     let at = |t: f64| ax.meridian(r.profile.eval(t));
     let g = |t: f64| f(at(t));
-    let (ts, ms) = sample_meridian(ax, r, tol);
+    let (ts, ms) = sample_meridian(ax, r, tol.max(1e-7));
     let fs: Vec<f64> = ms.iter().map(|m| f(*m)).collect();
     if fs.iter().all(|f| f.abs() <= tol) {
         return Vec::new(); // the same surface: a region, not curves
@@ -320,8 +320,9 @@ fn golden_min(h: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
 /// Two profiles about one axis: crossings of their sampled meridian curves, refined by Newton
 /// on `m1(t) = m2(u)`.
 fn profile_profile(ax: &Axis, r1: &Revolve, r2: &Revolve, tol: f64) -> Vec<Crossing> {
-    let (t1, m1) = sample_meridian(ax, r1, tol);
-    let (t2, m2) = sample_meridian(ax, r2, tol);
+    // Coarser samples: they only bracket the crossings (every pair of segments is tried).
+    let (t1, m1) = sample_meridian(ax, r1, tol.max(1e-5));
+    let (t2, m2) = sample_meridian(ax, r2, tol.max(1e-5));
     if m1 == m2 {
         return Vec::new(); // the same surface: a region, not curves
     }
