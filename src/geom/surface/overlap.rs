@@ -40,42 +40,8 @@ pub(crate) fn coplanar_overlap(
         a.iter().map(|v| to2(*v)).collect(),
         b.iter().map(|v| to2(*v)).collect(),
     );
-    // Split points of every edge: (fraction along the edge, point).
-    let mut split_a: Vec<Vec<(f64, DVec3)>> = vec![Vec::new(); a.len()];
-    let mut split_b: Vec<Vec<(f64, DVec3)>> = vec![Vec::new(); b.len()];
-    let (na, nb) = (a.len(), b.len());
-    for i in 0..na {
-        let (p0, p1) = (a2[i], a2[(i + 1) % na]);
-        for j in 0..nb {
-            let (q0, q1) = (b2[j], b2[(j + 1) % nb]);
-            let (dp, dq) = (p1 - p0, q1 - q0);
-            let den = dp.perp_dot(dq);
-            let scale = dp.length() * dq.length();
-            if den.abs() > 1e-12 * scale {
-                let w = q0 - p0;
-                let s = w.perp_dot(dq) / den;
-                let t = w.perp_dot(dp) / den;
-                if s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0 {
-                    let pt = a[i].lerp(a[(i + 1) % na], s);
-                    split_a[i].push((s, pt));
-                    split_b[j].push((t, pt));
-                }
-            }
-            // Corners of one lying on an edge of the other (touching or running together).
-            let on = |v: DVec2, e0: DVec2, e1: DVec2| {
-                let d = e1 - e0;
-                let f = (v - e0).dot(d) / d.length_squared();
-                let off = (v - e0).perp_dot(d).abs() / d.length();
-                (f > 0.0 && f < 1.0 && off <= tol).then_some(f)
-            };
-            if let Some(f) = on(q0, p0, p1) {
-                split_a[i].push((f, b[j]));
-            }
-            if let Some(f) = on(p0, q0, q1) {
-                split_b[j].push((f, a[i]));
-            }
-        }
-    }
+    let (mut split_a, mut split_b) = split_points(&a, &b, &a2, &b2, tol);
+    let nb = b.len();
     let mut edges: Vec<(DVec3, DVec3)> = Vec::new();
     let pieces = |poly: &[DVec3], splits: &mut [Vec<(f64, DVec3)>]| {
         let m = poly.len();
@@ -111,6 +77,56 @@ pub(crate) fn coplanar_overlap(
         }
     }
     Some(chain_loops(edges))
+}
+
+/// Per edge: its split points, (fraction along the edge, point).
+type Splits = Vec<Vec<(f64, DVec3)>>;
+
+/// The split points of every edge of both polygons (3D, with their 2D images in the plane):
+/// crossings computed once for both edges, and corners of one lying on an edge of the other.
+fn split_points(
+    a: &[DVec3],
+    b: &[DVec3],
+    a2: &[DVec2],
+    b2: &[DVec2],
+    tol: f64,
+) -> (Splits, Splits) {
+    let mut split_a: Splits = vec![Vec::new(); a.len()];
+    let mut split_b: Splits = vec![Vec::new(); b.len()];
+    let (na, nb) = (a.len(), b.len());
+    for i in 0..na {
+        let (p0, p1) = (a2[i], a2[(i + 1) % na]);
+        for j in 0..nb {
+            let (q0, q1) = (b2[j], b2[(j + 1) % nb]);
+            let (dp, dq) = (p1 - p0, q1 - q0);
+            let den = dp.perp_dot(dq);
+            let scale = dp.length() * dq.length();
+            if den.abs() > 1e-12 * scale {
+                let w = q0 - p0;
+                let s = w.perp_dot(dq) / den;
+                let t = w.perp_dot(dp) / den;
+                if s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0 {
+                    let pt = a[i].lerp(a[(i + 1) % na], s);
+                    split_a[i].push((s, pt));
+                    split_b[j].push((t, pt));
+                }
+            }
+            // Corners of one lying on an edge of the other (touching or running together).
+            let on = |v: DVec2, e0: DVec2, e1: DVec2| {
+                let d = e1 - e0;
+                let f = (v - e0).dot(d) / d.length_squared();
+                let off = (v - e0).perp_dot(d).abs() / d.length();
+                (f > 0.0 && f < 1.0 && off <= tol).then_some(f)
+            };
+            if let Some(f) = on(q0, p0, p1) {
+                split_a[i].push((f, b[j]));
+            }
+            if let Some(f) = on(p0, q0, q1) {
+                split_b[j].push((f, a[i]));
+            }
+        }
+    }
+    (split_a, split_b)
 }
 
 /// Chains directed edges that meet end to start (exactly) into closed loops.
