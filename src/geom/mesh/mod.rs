@@ -31,6 +31,7 @@ pub use io::{
 };
 pub use primitives::icosphere;
 pub use section::section;
+pub(crate) use trim::closest_on_triangle;
 pub use trim::{trim, Trimmed};
 
 use glam::DVec3;

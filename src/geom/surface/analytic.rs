@@ -1,5 +1,7 @@
 //! Closed-form intersections of the analytic pairs: sphere/sphere and sphere/plane give a circle
-//! (or a tangent point), plane/plane a line, each clipped to the planar regions involved.
+//! (or a tangent point), plane/plane a line, each clipped to the planar regions involved; the
+//! pairs with a cylinder are in [`super::quadrics`], coaxial surfaces of revolution in
+//! [`super::coaxial`].
 //! Curves are sampled within the chord tolerance; their points lie on both surfaces to
 //! roundoff.
 
@@ -24,9 +26,19 @@ pub(crate) fn analytic_intersect(
         }
         (Surface::Plane(p), Surface::Plane(q)) => Some(plane_plane(p, q, tol)),
         (Surface::Cylinder(c), Surface::Plane(p)) | (Surface::Plane(p), Surface::Cylinder(c)) => {
-            cylinder_plane_parallel(c, p, tol)
+            Some(
+                cylinder_plane_parallel(c, p, tol).unwrap_or_else(|| {
+                    super::quadrics::cylinder_plane_oblique(c, p, tol, chord_tol)
+                }),
+            )
         }
-        _ => None,
+        (Surface::Cylinder(c), Surface::Cylinder(d)) => {
+            super::quadrics::cylinder_cylinder(c, d, tol)
+        }
+        (Surface::Sphere(s), Surface::Cylinder(c)) | (Surface::Cylinder(c), Surface::Sphere(s)) => {
+            super::quadrics::sphere_cylinder(s, c, tol, chord_tol)
+        }
+        _ => super::coaxial::coaxial_intersect(a, b, tol, chord_tol),
     }
 }
 
@@ -191,7 +203,8 @@ fn line_in_region(o: DVec3, d: DVec3, p: &PlaneRegion, tol: f64) -> Vec<(f64, f6
 fn plane_plane(p: &PlaneRegion, q: &PlaneRegion, tol: f64) -> Vec<Polyline3> {
     let d = p.normal.cross(q.normal);
     if d.length() <= 1e-12 {
-        return Vec::new(); // parallel: apart, or coincident (a region, not a curve)
+        // Parallel: apart (none), or coplanar: their common region's boundary.
+        return super::overlap::coplanar_overlap(p, q, tol).unwrap_or_default();
     }
     // A point on both planes: the one nearest p's first vertex.
     let (hp, hq) = (p.normal.dot(p.boundary[0]), q.normal.dot(q.boundary[0]));
@@ -218,7 +231,7 @@ fn plane_plane(p: &PlaneRegion, q: &PlaneRegion, tol: f64) -> Vec<Polyline3> {
 }
 
 /// A plane parallel to a cylinder's axis cuts it along rulings (one where it touches): each
-/// clipped to the region. Other planes: None (an ellipse, through the meshes and Newton).
+/// clipped to the region. Other planes: None (an ellipse, [`super::quadrics`]).
 fn cylinder_plane_parallel(c: &Cylinder, p: &PlaneRegion, tol: f64) -> Option<Vec<Polyline3>> {
     let n = p.normal;
     if n.dot(c.axis).abs() > 1e-12 {

@@ -7,11 +7,15 @@
 //! [`CurveRef`] (any [`ParamCurve`]); [`SampledCurve`] wraps a point list.
 
 mod analytic;
+mod coaxial;
+mod contact;
 mod error;
 mod hits;
 mod kinds;
 mod ops;
+mod overlap;
 mod planar;
+mod quadrics;
 mod refine;
 mod sampled;
 mod sweep;

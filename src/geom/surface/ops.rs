@@ -107,7 +107,7 @@ pub fn surface_section_seeded(
                 closed: true,
             }])
         }
-        Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol) {
+        Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol, geom_tol) {
             Some(curves) => Ok(curves),
             None => Ok(refined(section(
                 &mesh_surface(s, seed_tol)?,
@@ -125,14 +125,15 @@ pub fn surface_section_seeded(
 }
 
 /// The exact sections of a surface of revolution where they are simple: a plane perpendicular
-/// to the axis cuts circles (arcs for a partial revolution) through the profile's crossings
-/// (paper 002's arc/plane, inverted); a plane containing the axis cuts the profile itself,
+/// to the axis cuts circles (arcs for a partial revolution) through the profile's crossings,
+/// solved on the true profile to `geom_tol` (paper 002's arc/plane, inverted); a plane containing the axis cuts the profile itself,
 /// turned into the plane. Other planes: None (use the mesh).
 fn revolve_section(
     r: &super::kinds::Revolve,
     p: DVec3,
     n: DVec3,
     tol: f64,
+    geom_tol: f64,
 ) -> Option<Vec<Polyline3>> {
     use glam::DQuat;
     use std::f64::consts::TAU;
@@ -151,44 +152,9 @@ fn revolve_section(
         prof[last] = prof[0];
     }
     if (1.0 - along) <= 1e-14 {
-        let mut out = Vec::new();
-        // One crossing per sign change, a point on the plane counting as positive (as in the
-        // mesh section), so a sample lying on the plane is not reported twice.
-        for w in prof.windows(2) {
-            let (d0, d1) = (n.dot(w[0] - p), n.dot(w[1] - p));
-            if (d0 < 0.0) == (d1 < 0.0) {
-                continue;
-            }
-            let q = if d0 == 0.0 {
-                w[0]
-            } else if d1 == 0.0 {
-                w[1]
-            } else {
-                w[0] + (w[1] - w[0]) * (d0 / (d0 - d1))
-            };
-            let c = r.axis_point + axis * (q - r.axis_point).dot(axis);
-            let rad = (q - c).length();
-            if rad <= tol {
-                out.push(Polyline3 {
-                    points: vec![q],
-                    closed: false,
-                });
-                continue;
-            }
-            let step = (2.0 * (1.0 - tol / rad).clamp(-1.0, 1.0).acos())
-                .clamp(1e-4, std::f64::consts::FRAC_PI_8);
-            let k = (r.angle / step).ceil().max(1.0) as usize;
-            let full = r.angle >= TAU;
-            let m = if full { k } else { k + 1 };
-            let pts: Vec<DVec3> = (0..m)
-                .map(|i| c + DQuat::from_axis_angle(axis, r.angle * i as f64 / k as f64) * (q - c))
-                .collect();
-            out.push(Polyline3 {
-                points: pts,
-                closed: full,
-            });
-        }
-        return Some(out);
+        return Some(super::coaxial::revolve_plane_perpendicular(
+            r, p, geom_tol, tol,
+        ));
     }
     if along <= 1e-14 && n.dot(r.axis_point - p).abs() <= tol {
         // The plane contains the axis: the profile turned by θ lies in it where its radial
@@ -234,10 +200,11 @@ pub fn surface_intersect(
 }
 
 /// Intersection curves of two surfaces: closed forms for sphere/sphere, sphere/plane,
-/// plane/plane and a cylinder against a plane parallel to its axis (a tangent contact comes
-/// back as a one-point polyline); otherwise the meshes' intersection seeds the curves and every
-/// point is carried onto both true surfaces by Newton iteration to within `geom_tol`, then the
-/// curves are densified within `chord_tol`.
+/// plane/plane, the pairs with a cylinder and coaxial surfaces of revolution (a tangent contact
+/// comes back as a one-point polyline); otherwise the meshes' intersection seeds the curves and
+/// every point is carried onto both true surfaces by Newton iteration to within `geom_tol`, then
+/// the curves are densified within `chord_tol`; isolated tangent contacts, which the meshes
+/// miss, are found as zero minima of the distance between the surfaces.
 pub fn surface_intersect_tol(
     a: &Surface,
     b: &Surface,
@@ -264,7 +231,7 @@ pub fn surface_intersect_seeded(
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
     let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
-    Ok(seeds
+    let mut curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
             let mut r = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
@@ -272,7 +239,14 @@ pub fn surface_intersect_seeded(
             r
         })
         .filter(|c| !c.points.is_empty())
-        .collect())
+        .collect();
+    // Touching without crossing: the meshes miss each other there.
+    let contacts = super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol);
+    curves.extend(contacts.into_iter().map(|p| Polyline3 {
+        points: vec![p],
+        closed: false,
+    }));
+    Ok(curves)
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for

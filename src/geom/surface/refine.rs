@@ -78,7 +78,7 @@ impl<'a> Patch<'a> {
 
     /// Puts a parameter pair back in the domain: wraps periodic directions, clamps the others.
     /// Returns which parameters sit on a domain edge.
-    fn normalise(&self, uv: &mut DVec2) -> [bool; 2] {
+    pub(crate) fn normalise(&self, uv: &mut DVec2) -> [bool; 2] {
         let mut edge = [false; 2];
         for k in 0..2 {
             if self.periodic[k] {
