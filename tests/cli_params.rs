@@ -153,3 +153,44 @@ fn batch_columns_and_values_are_checked_before_any_row_runs() {
     assert_eq!(o.status.code(), Some(2), "{}", err(&o));
     assert!(!dir.path().join("out").exists());
 }
+
+#[test]
+fn names_used_only_by_a_loaded_file_are_accepted() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("lib")).unwrap();
+    std::fs::write(
+        dir.path().join("lib/shape.lsp"),
+        "(defparam RAD 5.0 \"radius\" 1 50)\n(draw (circle '(0 0) RAD))\n(princ RAD)\n",
+    )
+    .unwrap();
+    let main = dir.path().join("main.lsp");
+    std::fs::write(&main, "(load \"lib/shape\")\n").unwrap();
+    let out = dir.path().join("o.svg");
+    let m = main.to_str().unwrap();
+    let o = lispcad(&["run", m, "--set", "RAD=7", "-o", out.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", err(&o));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "7");
+    assert!(out.is_file());
+    // The loaded file's declared range and names still hold.
+    let o = lispcad(&["run", m, "--set", "RAD=70"]);
+    assert_eq!(o.status.code(), Some(2), "{}", err(&o));
+    assert!(
+        err(&o).contains("must be a number in [1, 50]"),
+        "{}",
+        err(&o)
+    );
+    let o = lispcad(&["run", m, "--set", "RADIUS=7"]);
+    assert_eq!(o.status.code(), Some(2), "{}", err(&o));
+    assert!(err(&o).contains("did you mean RAD?"), "{}", err(&o));
+    // A batch column too.
+    std::fs::write(dir.path().join("t.csv"), "RAD\n3\n4\n").unwrap();
+    let o = lispcad(&[
+        "batch",
+        m,
+        "--vary",
+        dir.path().join("t.csv").to_str().unwrap(),
+        "-o",
+        dir.path().join("out/c-{row}.svg").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", err(&o));
+}

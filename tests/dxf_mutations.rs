@@ -94,3 +94,21 @@ fn binary_garbage_never_panics() {
         check(&d[..rng.below(d.len())]);
     }
 }
+
+/// Found by examples/fuzz_inputs: a block name whose 12th byte falls inside a character (here
+/// a Windows-1252 quote, three bytes in UTF-8) was sliced there to compare with
+/// "*Paper_Space", and panicked.
+#[test]
+fn a_block_name_with_a_wide_character_at_byte_12_reads() {
+    for name in [&b"*Model_Spac\x93e"[..], "*Paper_Spac\u{e9}X".as_bytes()] {
+        let mut d = b"  0\nSECTION\n  2\nBLOCKS\n  0\nBLOCK\n  8\n0\n  2\n".to_vec();
+        d.extend_from_slice(name);
+        d.extend_from_slice(
+            b"\n 70\n0\n 10\n0\n 20\n0\n  0\nENDBLK\n  8\n0\n  0\nENDSEC\n  0\nEOF\n",
+        );
+        check(&d);
+        read_dxf(&d, true).expect("reads with --recover");
+    }
+    // The whole input the fuzzer saved.
+    check(include_bytes!("dxf_support/fuzz-block-name.dxf"));
+}

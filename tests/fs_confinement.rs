@@ -270,10 +270,19 @@ fn the_sandbox_confines_reads_and_hides_the_environment() {
     );
     let o = run(&t, &src, &["--sandbox"], &[]);
     assert_eq!(stdout(&o), "refused refused nil");
-    // A symlink inside pointing at the victim is not followed either.
+    // A symlink inside pointing at the victim is not followed either: a refusal.
     symlink(&t.outside.join("victim"), &t.inside.join("peek"));
-    let o = run(&t, "(princ (open \"peek\" \"r\"))", &["--sandbox"], &[]);
-    assert_eq!(stdout(&o), "nil");
+    let o = run(
+        &t,
+        "(princ (vl-catch-all-error-message (vl-catch-all-apply 'open (list \"peek\" \"r\"))))",
+        &["--sandbox"],
+        &[],
+    );
+    assert!(
+        stdout(&o).starts_with("file access refused"),
+        "{}",
+        stdout(&o)
+    );
     let o = run(
         &t,
         &src,
@@ -281,5 +290,160 @@ fn the_sandbox_confines_reads_and_hides_the_environment() {
         &[],
     );
     assert_eq!(stdout(&o), "refused ok nil");
+    outside_is_untouched(&t);
+}
+
+/// Every way a script reads, aimed at `name`: "refused" for a policy refusal, the result
+/// otherwise (never the victim's text, which would be a leak).
+fn read_attempts(name: &str) -> String {
+    format!(
+        r#"(defun try (f a) (setq r (vl-catch-all-apply f a))
+  (princ (cond ((and (vl-catch-all-error-p r) (wcmatch (vl-catch-all-error-message r) "file access refused*")) "refused")
+               ((vl-catch-all-error-p r) (strcat "error:" (vl-catch-all-error-message r)))
+               (r (vl-princ-to-string r)) (T "nil"))) (princ " "))
+(try '(lambda (n) (read-line (open n "r"))) (list "{name}"))
+(try 'load (list "{name}"))
+(try 'vl-file-copy (list "{name}" "copy.txt"))
+(try 'vl-file-size (list "{name}"))
+(try 'vl-file-directory-p (list "{name}"))
+(try 'findfile (list "{name}"))
+(try 'dxf-open (list "{name}"))
+(try 'dxf-import (list "{name}"))
+"#
+    )
+}
+
+#[test]
+fn sandboxed_reads_follow_no_symlink_or_dotdot_out_of_a_root() {
+    let t = tree();
+    symlink(&t.outside.join("victim"), &t.inside.join("peek"));
+    symlink(&t.outside, &t.inside.join("dir"));
+    std::fs::create_dir(t.inside.join("sub")).unwrap();
+    for name in [
+        "peek",
+        "dir/victim",
+        "../outside/victim",
+        "sub/../../outside/victim",
+    ] {
+        let o = run(&t, &read_attempts(name), &["--sandbox"], &[]);
+        assert_eq!(
+            stdout(&o).trim(),
+            "refused refused refused refused refused nil refused refused",
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    // A directory reached through a symlink out is neither listed nor examined.
+    let o = run(
+        &t,
+        "(princ (vl-catch-all-error-p (vl-catch-all-apply 'vl-directory-files (list \"dir\"))))\
+         (princ (vl-catch-all-error-p (vl-catch-all-apply 'vl-file-directory-p (list \"dir\"))))",
+        &["--sandbox"],
+        &[],
+    );
+    assert_eq!(stdout(&o), "TT");
+    // A mesh file linked from outside is not read either.
+    symlink(&t.outside.join("victim"), &t.inside.join("peek.stl"));
+    let o = run(
+        &t,
+        "(princ (vl-catch-all-error-message (vl-catch-all-apply 'mesh-read (list \"peek.stl\"))))",
+        &["--sandbox"],
+        &[],
+    );
+    assert!(
+        stdout(&o).starts_with("file access refused"),
+        "{}",
+        stdout(&o)
+    );
+    assert!(!t.inside.join("copy.txt").exists());
+    outside_is_untouched(&t);
+}
+
+#[test]
+fn sandboxed_reads_follow_symlinks_that_stay_inside() {
+    let t = tree();
+    std::fs::create_dir(t.inside.join("lib")).unwrap();
+    std::fs::write(t.inside.join("lib/data.txt"), "ok\n").unwrap();
+    std::fs::write(t.inside.join("lib/code.lsp"), "(setq loaded 42)\n").unwrap();
+    symlink(Path::new("lib/data.txt"), &t.inside.join("alias.txt"));
+    symlink(Path::new("lib"), &t.inside.join("libs"));
+    let o = run(
+        &t,
+        "(princ (read-line (open \"alias.txt\" \"r\"))) (princ \" \")\
+         (princ (read-line (open \"libs/data.txt\" \"r\"))) (princ \" \")\
+         (load \"libs/code\") (princ loaded) (princ \" \")\
+         (princ (vl-file-size \"alias.txt\")) (princ \" \")\
+         (princ (vl-directory-files \"libs\" \"*.txt\" 1))",
+        &["--sandbox"],
+        &[],
+    );
+    assert_eq!(
+        stdout(&o),
+        "ok ok 42 3 (data.txt)",
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+#[test]
+fn a_directory_flipped_to_a_symlink_never_lets_a_sandboxed_read_escape() {
+    let t = tree();
+    let d = t.inside.join("d");
+    let real = t.inside.join("d.real");
+    std::fs::create_dir(&real).unwrap();
+    std::fs::write(real.join("victim"), "inside\n").unwrap();
+    // Relative links: an absolute one leaves the root by definition and is always refused.
+    let (to_real, to_outside) = (Path::new("d.real"), Path::new("../outside"));
+    symlink(to_real, &d);
+    // The script reads d/victim over and over while d flips between the directory inside and
+    // a symlink to the outside one (whose victim says "secret"); it counts what it saw.
+    let script = t.inside.join("s.lsp");
+    std::fs::write(
+        &script,
+        "(setq inside 0 secret 0 refused 0)\n\
+         (repeat 20000\n\
+           (setq f (vl-catch-all-apply 'open (list \"d/victim\" \"r\")))\n\
+           (cond ((vl-catch-all-error-p f) (setq refused (1+ refused)))\n\
+                 (f (setq l (read-line f)) (close f)\n\
+                    (if (= l \"secret\") (setq secret (1+ secret)) (setq inside (1+ inside))))))\n\
+         (princ (list inside secret refused))\n",
+    )
+    .unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .arg("--sandbox")
+        .arg("run")
+        .arg(&script)
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let tmp = t.inside.join("d.tmp");
+    let mut flips = 0u64;
+    while child.try_wait().unwrap().is_none() && flips < 2_000_000 {
+        let target = if flips.is_multiple_of(2) {
+            to_outside
+        } else {
+            to_real
+        };
+        let _ = std::fs::remove_file(&tmp);
+        symlink(target, &tmp);
+        std::fs::rename(&tmp, &d).unwrap();
+        flips += 1;
+    }
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success(), "the script did not finish");
+    assert!(flips > 100, "the race did not run ({flips} flips)");
+    let out = stdout(&o);
+    let counts: Vec<u64> = out
+        .trim_matches(['(', ')'])
+        .split(' ')
+        .map(|n| n.parse().unwrap())
+        .collect();
+    let [inside, secret, refused] = counts[..] else {
+        panic!("{out}")
+    };
+    assert_eq!(secret, 0, "{out}: a read escaped");
+    assert_eq!(inside + refused, 20000, "{out}");
+    // Both states were met (otherwise the race proved nothing).
+    assert!(inside > 0 && refused > 0, "{out} after {flips} flips");
     outside_is_untouched(&t);
 }

@@ -140,13 +140,7 @@ fn catch_all_error_message(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn load(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
-    if let Some(p) = it.resolve_path(&name) {
-        let policy = it.ext::<crate::builtins::io::FsPolicy>();
-        policy
-            .confine(&p, crate::builtins::io::Access::Read)
-            .map_err(crate::lang::error::err)?;
-    }
-    match it.load_file(&name) {
+    match load_confined(it, &name) {
         Ok(v) => Ok(v),
         Err(e)
             if a.len() > 1
@@ -158,6 +152,37 @@ fn load(it: &mut Interp, a: &[Value]) -> LResult {
         }
         Err(e) => Err(e),
     }
+}
+
+/// `Interp::load_file`, with the file read through the policy (under --sandbox through the
+/// root's directory handle, so no symlink swapped in meanwhile leads out) and within the
+/// memory budget.
+fn load_confined(it: &mut Interp, name: &str) -> LResult {
+    use crate::builtins::fs_policy::ReadError;
+    let failed = |m: String| err(format!("LOAD failed: \"{name}\": {m}"));
+    let path = it
+        .resolve_path(name)
+        .ok_or_else(|| err(format!("LOAD failed: \"{name}\"")))?;
+    let bytes = match it.ext::<crate::builtins::io::FsPolicy>().read_bytes(&path) {
+        Ok(b) => b,
+        Err(ReadError::Open(m)) if m.starts_with("file access refused") => return Err(err(m)),
+        Err(ReadError::Open(m)) => return Err(failed(m)),
+        Err(ReadError::Memory(e)) => return Err(e),
+    };
+    let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
+    let text = crate::lang::encoding::decode(&bytes, code_page);
+    drop(bytes);
+    if !it.loaded_files.contains(&path) {
+        it.loaded_files.push(path.clone());
+    }
+    let saved = it.base_dir.replace(
+        path.parent()
+            .map(std::path::Path::to_path_buf)
+            .unwrap_or_default(),
+    );
+    let r = it.eval_source(&path.display().to_string(), &text);
+    it.base_dir = saved;
+    r
 }
 
 fn defun_q_list_ref(it: &mut Interp, a: &[Value]) -> LResult {

@@ -280,12 +280,22 @@ fn script_path(it: &Interp, name: &str) -> PathBuf {
     }
 }
 
+/// A drawing the script names, read through the file policy (confined under --sandbox) and
+/// within the memory budget.
+fn read_drawing(it: &mut Interp, path: &Path) -> Result<crate::output::Drawing, Exn> {
+    let data = it.ext::<FsPolicy>().read_bytes(path)?;
+    // The model takes a few times the file's size.
+    crate::lang::memory::reserve(data.len().saturating_mul(4))?;
+    crate::output::read_dxf(&data, false).map_err(|e| err(e.with_path(path).to_string()))
+}
+
 fn dxf_open(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
     let path = script_path(it, &name);
-    if let Some(note) = open_into(it, &path, false).map_err(err)? {
-        eprintln!("{note}");
-    }
+    let d = read_drawing(it, &path)?;
+    *drawing(it) = d;
+    forget_pending(it);
+    it.ext::<SysVars>().set_drawing_path(&path);
     Ok(a[0].clone())
 }
 
@@ -306,7 +316,7 @@ fn entity_curve(it: &mut Interp, a: &[Value]) -> LResult {
 fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
     let path = script_path(it, &name);
-    let other = crate::output::open_drawing(&path, false).map_err(|e| err(e.to_string()))?;
+    let other = read_drawing(it, &path)?;
     let added = drawing(it).import(&other);
     if added.is_empty() {
         return Ok(Value::Nil);

@@ -2,6 +2,7 @@
 //! family. Thin argument-checking wrappers over the pure functions in `text`; the unit
 //! settings come from the system variables (LUNITS, LUPREC, AUNITS, AUPREC, DIMZIN...).
 
+use super::strings::build_string;
 use crate::builtin;
 use crate::builtins::system::SysVars;
 use crate::builtins::text::{self, AngleSettings, FmtError};
@@ -112,6 +113,8 @@ fn substr(it: &mut Interp, a: &[Value]) -> LResult {
         Some(v) => Some(it.int(v)? as i64),
         None => None,
     };
+    // The copy is asked of the memory budget first (a substring of a huge string is huge).
+    super::strings::check_string_room(s.len().min(len.map_or(usize::MAX, |l| l.max(0) as usize)))?;
     text::substr(s, start, len)
         .map(|r| Value::str(&r))
         .map_err(fmt_err)
@@ -119,11 +122,18 @@ fn substr(it: &mut Interp, a: &[Value]) -> LResult {
 
 fn strcase(it: &mut Interp, a: &[Value]) -> LResult {
     let lower = a.get(1).is_some_and(Value::truthy);
-    Ok(Value::str(&text::strcase(it.string(&a[0])?, lower)))
+    let s = it.string(&a[0])?;
+    // Case mapping may lengthen a character: twice the bytes is room for any text.
+    build_string(s.len().saturating_mul(2), |out| {
+        out.push_str(&text::strcase(s, lower))
+    })
 }
 
 fn xstrcase(it: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::str(&text::strcase(it.string(&a[0])?, false)))
+    let s = it.string(&a[0])?;
+    build_string(s.len().saturating_mul(2), |out| {
+        out.push_str(&text::strcase(s, false))
+    })
 }
 
 fn wcmatch(it: &mut Interp, a: &[Value]) -> LResult {
@@ -141,17 +151,21 @@ fn two_strings<'a>(it: &Interp, a: &'a [Value]) -> Result<(&'a str, &'a str), Ex
 
 fn trim(it: &mut Interp, a: &[Value]) -> LResult {
     let (set, s) = two_strings(it, a)?;
-    Ok(Value::str(&text::vl_string_trim(set, s)))
+    build_string(s.len(), |out| out.push_str(&text::vl_string_trim(set, s)))
 }
 
 fn left_trim(it: &mut Interp, a: &[Value]) -> LResult {
     let (set, s) = two_strings(it, a)?;
-    Ok(Value::str(&text::vl_string_left_trim(set, s)))
+    build_string(s.len(), |out| {
+        out.push_str(&text::vl_string_left_trim(set, s))
+    })
 }
 
 fn right_trim(it: &mut Interp, a: &[Value]) -> LResult {
     let (set, s) = two_strings(it, a)?;
-    Ok(Value::str(&text::vl_string_right_trim(set, s)))
+    build_string(s.len(), |out| {
+        out.push_str(&text::vl_string_right_trim(set, s))
+    })
 }
 
 fn index_or_nil(i: Option<usize>) -> Value {
@@ -185,13 +199,19 @@ fn subst(it: &mut Interp, a: &[Value]) -> LResult {
     let (new, pat) = two_strings(it, a)?;
     let s = it.string(&a[2])?;
     let start = opt_start(it, a, 3)?;
-    Ok(Value::str(&text::vl_string_subst(new, pat, s, start)))
+    build_string(s.len().saturating_add(new.len()), |out| {
+        out.push_str(&text::vl_string_subst(new, pat, s, start))
+    })
 }
 
 fn translate(it: &mut Interp, a: &[Value]) -> LResult {
     let (from, to) = two_strings(it, a)?;
     let s = it.string(&a[2])?;
-    Ok(Value::str(&text::vl_string_translate(from, to, s)))
+    // A one-byte character may become a four-byte one.
+    let widest = to.chars().map(char::len_utf8).max().unwrap_or(1);
+    build_string(s.len().saturating_mul(widest), |out| {
+        out.push_str(&text::vl_string_translate(from, to, s))
+    })
 }
 
 fn mismatch(it: &mut Interp, a: &[Value]) -> LResult {

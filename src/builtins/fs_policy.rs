@@ -8,9 +8,13 @@
 //! the kernel has it, a component-by-component walk otherwise). The file itself is then
 //! reached as `/proc/self/fd/N/NAME` from that open directory, so swapping a directory for a
 //! symlink after the check changes nothing, and opened with O_NOFOLLOW. A file with more than
-//! one hard link is not written in place (it could be a link to a file outside).
+//! one hard link is not written in place (it could be a link to a file outside). Sandboxed
+//! reads (open, stat, directory listing) resolve the whole path through the root's handle
+//! with cap-std: a symlink is followed only while it stays below the root, atomically with
+//! the open, so no swap between a check and the read can lead out.
 
 use std::fs::File;
+use std::io::Read;
 use std::path::{Component, Path, PathBuf};
 
 /// The policy of one run; `Default` (no roots) confines writes to the current directory.
@@ -105,26 +109,21 @@ impl FsPolicy {
 
     /// Whether reading `path` is allowed.
     pub fn may_read(&self, path: &Path) -> bool {
-        !self.sandbox || self.allow_all || self.confine(path, Access::Read).is_ok()
+        !self.sandbox || self.allow_all || self.stat(path).is_ok_and(|m| m.is_some())
     }
 
-    /// The path to use for `access` to `path`, or the refusal message.
-    pub fn confine(&self, path: &Path, access: Access) -> Result<Confined, String> {
+    /// Where `path` lies for `access`: anywhere (not confined), or below a root (the root as
+    /// the path names it, and the rest). A lexical check: nothing is opened yet.
+    fn locate(&self, path: &Path, access: Access) -> Result<Place, String> {
         let free = self.allow_all || (access == Access::Read && !self.sandbox);
         if free {
-            return Ok(Confined {
-                _dir: None,
-                path: path.to_path_buf(),
-            });
+            return Ok(Place::Free);
         }
         let abs = absolute(path).ok_or_else(|| refused(path, access, "contains `..`"))?;
         if access == Access::Read {
             for f in &self.read_files {
                 if absolute(f).as_deref() == Some(&abs) {
-                    return Ok(Confined {
-                        _dir: None,
-                        path: path.to_path_buf(),
-                    });
+                    return Ok(Place::Free);
                 }
             }
         }
@@ -137,12 +136,10 @@ impl FsPolicy {
             let forms = [absolute(root), root.canonicalize().ok()];
             for r in forms.iter().flatten() {
                 if let Ok(rel) = abs.strip_prefix(r) {
-                    return open_beneath(r, rel).map_err(|e| {
-                        refused(
-                            path,
-                            access,
-                            &format!("cannot be reached below {}: {e}", root.display()),
-                        )
+                    return Ok(Place::Beneath {
+                        root: r.clone(),
+                        shown: root.clone(),
+                        rel: rel.to_path_buf(),
                     });
                 }
             }
@@ -152,6 +149,59 @@ impl FsPolicy {
             access,
             "is outside the script and output directories",
         ))
+    }
+
+    /// The path to use for `access` to `path`, or the refusal message.
+    pub fn confine(&self, path: &Path, access: Access) -> Result<Confined, String> {
+        match self.locate(path, access)? {
+            Place::Free => Ok(Confined {
+                _dir: None,
+                path: path.to_path_buf(),
+            }),
+            Place::Beneath { root, shown, rel } => open_beneath(&root, &rel).map_err(|e| {
+                refused(
+                    path,
+                    access,
+                    &format!("cannot be reached below {}: {e}", shown.display()),
+                )
+            }),
+        }
+    }
+
+    /// For a confined read: the root's directory handle and the path below it, which every
+    /// read then resolves through cap-std (symlinks followed only while they stay below the
+    /// root, atomically with the open). `None`: reads are not confined for this path.
+    fn read_place(&self, path: &Path) -> Result<Option<(cap_std::fs::Dir, PathBuf)>, String> {
+        match self.locate(path, Access::Read)? {
+            Place::Free => Ok(None),
+            Place::Beneath { root, shown, rel } => {
+                let dir = cap_std::fs::Dir::open_ambient_dir(&root, cap_std::ambient_authority())
+                    .map_err(|e| {
+                    refused(
+                        path,
+                        Access::Read,
+                        &format!("cannot be reached below {}: {e}", shown.display()),
+                    )
+                })?;
+                let rel = if rel.as_os_str().is_empty() {
+                    PathBuf::from(".")
+                } else {
+                    rel
+                };
+                Ok(Some((dir, rel)))
+            }
+        }
+    }
+
+    /// A failed confined read: an escape through a symlink is a refusal, anything else the
+    /// ordinary I/O error.
+    fn read_failed(path: &Path, e: std::io::Error) -> String {
+        // cap-std reports an escape as a non-OS PermissionDenied ("a path led outside...").
+        if e.kind() == std::io::ErrorKind::PermissionDenied && e.raw_os_error().is_none() {
+            refused(path, Access::Read, "leads outside the allowed directories")
+        } else {
+            format!("cannot open {}: {e}", path.display())
+        }
     }
 
     /// Opens `path` for writing in place ("w" truncates, "a" appends, `new` must not exist):
@@ -189,19 +239,121 @@ impl FsPolicy {
         Ok(f)
     }
 
-    /// Opens `path` for reading (confined under --sandbox).
+    /// Opens `path` for reading; under --sandbox through the root's directory handle, so no
+    /// symlink or swapped directory leads out of it, however the tree changes meanwhile.
     pub fn open_read(&self, path: &Path) -> Result<File, String> {
-        use std::os::unix::fs::OpenOptionsExt;
-        let c = self.confine(path, Access::Read)?;
-        let mut o = std::fs::OpenOptions::new();
-        o.read(true);
-        if self.sandbox && !self.allow_all && c._dir.is_some() {
-            // A symlink named below a root could lead anywhere: sandboxed reads do not follow.
-            o.custom_flags(libc::O_NOFOLLOW);
+        match self.read_place(path)? {
+            None => File::open(path).map_err(|e| format!("cannot open {}: {e}", path.display())),
+            Some((dir, rel)) => dir
+                .open(&rel)
+                .map(cap_std::fs::File::into_std)
+                .map_err(|e| Self::read_failed(path, e)),
         }
-        o.open(&c.path)
-            .map_err(|e| format!("cannot open {}: {e}", path.display()))
     }
+
+    /// Whether `path` exists and is a directory, and its size: `Ok(None)` when it does not
+    /// exist (or cannot be examined), a refusal when it lies (or leads) outside under --sandbox.
+    pub fn stat(&self, path: &Path) -> Result<Option<(bool, u64)>, String> {
+        match self.read_place(path)? {
+            None => Ok(std::fs::metadata(path).ok().map(|m| (m.is_dir(), m.len()))),
+            Some((dir, rel)) => match dir.metadata(&rel) {
+                Ok(m) => Ok(Some((m.is_dir(), m.len()))),
+                Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => {
+                    Err(Self::read_failed(path, e))
+                }
+                Err(_) => Ok(None),
+            },
+        }
+    }
+
+    /// The entries of directory `path` (name, is a directory), `Ok(None)` if it cannot be
+    /// listed; confined like `open_read`.
+    pub fn list_dir(&self, path: &Path) -> Result<Option<Vec<(String, bool)>>, String> {
+        let name = |n: std::ffi::OsString| n.to_string_lossy().into_owned();
+        match self.read_place(path)? {
+            None => Ok(std::fs::read_dir(path).ok().map(|entries| {
+                entries
+                    .filter_map(Result::ok)
+                    .map(|e| (name(e.file_name()), e.file_type().is_ok_and(|t| t.is_dir())))
+                    .collect()
+            })),
+            Some((dir, rel)) => match dir.read_dir(&rel) {
+                Ok(entries) => Ok(Some(
+                    entries
+                        .filter_map(Result::ok)
+                        .map(|e| (name(e.file_name()), e.file_type().is_ok_and(|t| t.is_dir())))
+                        .collect(),
+                )),
+                Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => {
+                    Err(Self::read_failed(path, e))
+                }
+                Err(_) => Ok(None),
+            },
+        }
+    }
+
+    /// The whole file at `path`, read as `open_read` opens it, within the memory budget.
+    pub fn read_bytes(&self, path: &Path) -> Result<Vec<u8>, ReadError> {
+        let f = self.open_read(path).map_err(ReadError::Open)?;
+        read_all(f).map_err(|e| match e {
+            ReadError::Open(m) => ReadError::Open(format!("cannot read {}: {m}", path.display())),
+            other => other,
+        })
+    }
+}
+
+/// Why a whole-file read failed: the file could not be opened (or read), or it does not fit
+/// in the memory budget.
+pub enum ReadError {
+    Open(String),
+    Memory(crate::lang::Exn),
+}
+
+impl From<ReadError> for crate::lang::Exn {
+    fn from(e: ReadError) -> Self {
+        match e {
+            ReadError::Open(m) => crate::lang::error::err(m),
+            ReadError::Memory(e) => e,
+        }
+    }
+}
+
+/// Reads `r` to its end in chunks, asking the memory budget before the buffer grows and
+/// growing it fallibly, so a huge (or endless) file is an "out of memory" error, never an
+/// allocation failure that aborts.
+pub fn read_all(mut r: impl std::io::Read) -> Result<Vec<u8>, ReadError> {
+    const CHUNK: usize = 1 << 16;
+    let mut out: Vec<u8> = Vec::new();
+    loop {
+        if out.capacity() - out.len() < CHUNK {
+            // Doubling, as Vec would, but checked first.
+            let more = out.capacity().max(CHUNK);
+            crate::lang::memory::reserve(more).map_err(ReadError::Memory)?;
+            out.try_reserve_exact(more)
+                .map_err(|_| ReadError::Memory(crate::lang::memory::system_refused(more)))?;
+        }
+        // At most the room there is, so read_to_end never grows the buffer itself.
+        let room = out.capacity() - out.len();
+        let n = (&mut r)
+            .take(room as u64)
+            .read_to_end(&mut out)
+            .map_err(|e| ReadError::Open(e.to_string()))?;
+        if n < room {
+            return Ok(out);
+        }
+    }
+}
+
+/// Where a path lies for the policy.
+enum Place {
+    /// Not confined: used as named.
+    Free,
+    /// Below `root` (absolute, in the form the path used; `shown` as configured) at `rel`.
+    Beneath {
+        root: PathBuf,
+        shown: PathBuf,
+        rel: PathBuf,
+    },
 }
 
 /// Opens the parent of `rel` below `root` and names the file through that handle.

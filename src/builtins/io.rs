@@ -40,6 +40,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("vl-mkdir", "(vl-mkdir dir)", "Creates a directory (where writing is allowed); T, or nil on failure.", 1, 1, mkdir),
 ];
 
+use super::fs_policy::ReadError;
 pub use super::fs_policy::{Access, FsPolicy};
 
 /// An output file is an ordinary file: 0644 before the umask (writers built on `tempfile`
@@ -119,7 +120,7 @@ fn princ(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(x) = a.first() else {
         return Ok(quiet(it));
     };
-    let s = it.princ_string(x);
+    let s = it.try_print_string(x, false)?;
     emit(it, &s, a.get(1))?;
     Ok(x.clone())
 }
@@ -133,7 +134,7 @@ fn prin1(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(x) = a.first() else {
         return Ok(quiet(it));
     };
-    let s = it.prin1_string(x);
+    let s = it.try_print_string(x, true)?;
     emit(it, &s, a.get(1))?;
     Ok(x.clone())
 }
@@ -142,7 +143,7 @@ fn print(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(x) = a.first() else {
         return Ok(quiet(it));
     };
-    let s = format!("\n{} ", it.prin1_string(x));
+    let s = format!("\n{} ", it.try_print_string(x, true)?);
     emit(it, &s, a.get(1))?;
     Ok(x.clone())
 }
@@ -172,14 +173,11 @@ fn open(it: &mut Interp, a: &[Value]) -> LResult {
         _ => PathBuf::from(&name),
     };
     let handle = match mode.as_str() {
-        "r" => {
-            let policy = it.ext::<FsPolicy>();
-            policy.confine(&path, Access::Read).map_err(err)?;
-            match policy.open_read(&path) {
-                Ok(f) => Handle::Read(BufReader::new(f)),
-                Err(_) => return Ok(Value::Nil),
-            }
-        }
+        "r" => match it.ext::<FsPolicy>().open_read(&path) {
+            Ok(f) => Handle::Read(BufReader::new(f)),
+            Err(m) if m.starts_with("file access refused") => return Err(err(m)),
+            Err(_) => return Ok(Value::Nil),
+        },
         "w" | "a" => {
             let policy = it.ext::<FsPolicy>();
             // A refusal is an error; a file that cannot be opened is AutoLISP's nil.
@@ -248,18 +246,50 @@ fn read_line(it: &mut Interp, a: &[Value]) -> LResult {
         return Err(err(format!("file {} is not open for reading", f.name)));
     };
     // Bytes, not a String: a line in the code page (not UTF-8) is decoded, not refused.
-    let mut line = Vec::new();
-    let read = r.read_until(b'\n', &mut line);
+    let read = read_line_bytes(r);
     drop(h);
-    it.charge(line.len() as u64)?;
     match read {
-        Ok(0) => Ok(Value::Nil),
-        Ok(_) => {
+        Ok(None) => Ok(Value::Nil),
+        Ok(Some(line)) => {
+            it.charge(line.len() as u64)?;
             let code_page = it.ext::<crate::lang::encoding::SourceCodePage>().0;
             let text = crate::lang::encoding::decode(&line, code_page);
             Ok(Value::str(text.trim_end_matches(['\n', '\r'])))
         }
-        Err(e) => Err(err(format!("read from {} failed: {e}", f.name))),
+        Err(ReadError::Open(e)) => Err(err(format!("read from {} failed: {e}", f.name))),
+        Err(ReadError::Memory(e)) => Err(e),
+    }
+}
+
+/// One line (up to and including its newline), `None` at the end of the file. The buffer
+/// grows only after the memory budget allows it (a file of one endless line is an "out of
+/// memory" error, not an abort); the line is charged to the step budget by the caller.
+fn read_line_bytes(r: &mut impl BufRead) -> Result<Option<Vec<u8>>, ReadError> {
+    let mut line: Vec<u8> = Vec::new();
+    loop {
+        let buf = match r.fill_buf() {
+            Ok(b) => b,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(ReadError::Open(e.to_string())),
+        };
+        if buf.is_empty() {
+            return Ok((!line.is_empty()).then_some(line));
+        }
+        let (take, done) = match buf.iter().position(|&b| b == b'\n') {
+            Some(i) => (i + 1, true),
+            None => (buf.len(), false),
+        };
+        if line.capacity() - line.len() < take {
+            let more = take.max(line.capacity());
+            crate::lang::memory::reserve(more).map_err(ReadError::Memory)?;
+            line.try_reserve(more)
+                .map_err(|_| ReadError::Memory(crate::lang::memory::system_refused(more)))?;
+        }
+        line.extend_from_slice(&buf[..take]);
+        r.consume(take);
+        if done {
+            return Ok(Some(line));
+        }
     }
 }
 
@@ -356,17 +386,18 @@ fn filename_extension(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn file_size(it: &mut Interp, a: &[Value]) -> LResult {
-    let (_, c) = confined(it, &a[0], Access::Read)?;
-    Ok(match std::fs::metadata(&c.path) {
-        Ok(m) if m.is_dir() => Value::Int(0),
-        Ok(m) => Value::Int(i32::try_from(m.len()).unwrap_or(i32::MAX)),
-        Err(_) => Value::Nil,
+    let path = path_arg(it, &a[0])?;
+    Ok(match it.ext::<FsPolicy>().stat(&path).map_err(err)? {
+        Some((true, _)) => Value::Int(0),
+        Some((false, len)) => Value::Int(i32::try_from(len).unwrap_or(i32::MAX)),
+        None => Value::Nil,
     })
 }
 
 fn file_directory_p(it: &mut Interp, a: &[Value]) -> LResult {
-    let (_, c) = confined(it, &a[0], Access::Read)?;
-    Ok(Value::bool(c.path.is_dir()))
+    let path = path_arg(it, &a[0])?;
+    let st = it.ext::<FsPolicy>().stat(&path).map_err(err)?;
+    Ok(Value::bool(st.is_some_and(|(dir, _)| dir)))
 }
 
 /// DOS-style wildcard match: `*` any run, `?` one character, case-insensitive. Two pointers
@@ -413,22 +444,16 @@ fn directory_files(it: &mut Interp, a: &[Value]) -> LResult {
         Some(v) if v.truthy() => it.int(v)?,
         _ => 0,
     };
-    let c = it
-        .ext::<FsPolicy>()
-        .confine(&dir, Access::Read)
-        .map_err(err)?;
-    let Ok(entries) = std::fs::read_dir(&c.path) else {
+    let Some(entries) = it.ext::<FsPolicy>().list_dir(&dir).map_err(err)? else {
         return Ok(Value::Nil);
     };
     let mut names: Vec<String> = Vec::new();
-    for e in entries.filter_map(Result::ok) {
-        let is_dir = e.file_type().is_ok_and(|t| t.is_dir());
+    for (name, is_dir) in entries {
         let wanted = match what {
             -1 => is_dir,
             1 => !is_dir,
             _ => true,
         };
-        let name = e.file_name().to_string_lossy().into_owned();
         let (hit, work) = glob(&pattern, &name.chars().collect::<Vec<_>>());
         it.charge(work + 16)?;
         if wanted && hit {
@@ -466,22 +491,40 @@ fn file_rename(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn file_copy(it: &mut Interp, a: &[Value]) -> LResult {
-    let (_, src) = confined(it, &a[0], Access::Read)?;
+    let from = path_arg(it, &a[0])?;
     let to = path_arg(it, &a[1])?;
     let append = a.get(2).is_some_and(Value::truthy);
     let policy = it.ext::<FsPolicy>().clone();
     policy.confine(&to, Access::Write).map_err(err)?;
-    let Ok(data) = std::fs::read(&src.path) else {
-        return Ok(Value::Nil);
-    };
-    // AutoCAD refuses to overwrite: copying onto an existing file fails unless appending.
-    let opened = match policy.open_write(&to, append, !append) {
+    let mut src = match policy.open_read(&from) {
         Ok(f) => f,
         Err(m) if m.starts_with("file access refused") => return Err(err(m)),
         Err(_) => return Ok(Value::Nil),
     };
-    Ok(match (&opened).write_all(&data) {
-        Ok(()) => Value::Int(i32::try_from(data.len()).unwrap_or(i32::MAX)),
+    if src.metadata().is_ok_and(|m| m.is_dir()) {
+        return Ok(Value::Nil);
+    }
+    // AutoCAD refuses to overwrite: copying onto an existing file fails unless appending.
+    let mut opened = match policy.open_write(&to, append, !append) {
+        Ok(f) => f,
+        Err(m) if m.starts_with("file access refused") => return Err(err(m)),
+        Err(_) => return Ok(Value::Nil),
+    };
+    // Appending a file to itself would read what it writes, without end.
+    let same = |a: &File, b: &File| {
+        use std::os::unix::fs::MetadataExt;
+        matches!((a.metadata(), b.metadata()), (Ok(x), Ok(y)) if x.dev() == y.dev() && x.ino() == y.ino())
+    };
+    if same(&src, &opened) {
+        return Ok(Value::Nil);
+    }
+    // Streamed: a file of any size is copied in constant memory.
+    let copied = std::io::copy(&mut src, &mut opened);
+    if let Ok(n) = copied {
+        it.charge(n)?;
+    }
+    Ok(match copied {
+        Ok(n) => Value::Int(i32::try_from(n).unwrap_or(i32::MAX)),
         Err(_) => Value::Nil,
     })
 }

@@ -2,7 +2,9 @@
 
 use crate::builtin;
 use crate::lang::builtin::{bad_arg, Builtin, MANY};
-use crate::lang::error::{err, LResult};
+use std::rc::Rc;
+
+use crate::lang::error::{err, Exn, LResult};
 use crate::lang::reader::read_one;
 use crate::lang::{Interp, Value};
 
@@ -85,23 +87,48 @@ pub static BUILTINS: &[Builtin] = &[
 /// AutoLISP's string length limit: `strlen` answers a 32-bit integer.
 const MAX_STRING: usize = i32::MAX as usize;
 
-fn strcat(it: &mut Interp, a: &[Value]) -> LResult {
-    let mut len = 0usize;
-    for x in a {
-        len = len.saturating_add(it.string(x)?.len());
-    }
+/// An empty string with room for `len` bytes: within AutoLISP's string limit and the memory
+/// budget, and reserved fallibly, so a huge result is an error before any allocation (an
+/// address-space limit below the budget included), never an abort.
+pub fn string_with_room(len: usize) -> Result<String, Exn> {
+    check_string_room(len)?;
+    let mut s = String::new();
+    s.try_reserve_exact(len)
+        .map_err(|_| crate::lang::memory::system_refused(len))?;
+    Ok(s)
+}
+
+/// An error unless a string of `len` bytes is within AutoLISP's limit and the memory budget.
+pub fn check_string_room(len: usize) -> Result<(), Exn> {
     if len > MAX_STRING {
         return Err(err(format!(
             "string too long: {len} bytes (strings hold at most {MAX_STRING})"
         )));
     }
-    // Twice: the text is built, then copied into the value.
+    crate::lang::memory::reserve(len)
+}
+
+/// A string value made by `f` from text of at most `len` bytes, within the limits of
+/// `string_with_room` (for builtins that copy or transform a string).
+pub fn build_string(len: usize, f: impl FnOnce(&mut String)) -> LResult {
+    // `f` works on a temporary of about the same size.
     crate::lang::memory::reserve(len.saturating_mul(2))?;
-    let mut s = String::with_capacity(len);
+    let mut s = string_with_room(len)?;
+    f(&mut s);
+    // Moved into the value, not copied.
+    Ok(Value::Str(Rc::new(s)))
+}
+
+fn strcat(it: &mut Interp, a: &[Value]) -> LResult {
+    let mut len = 0usize;
+    for x in a {
+        len = len.saturating_add(it.string(x)?.len());
+    }
+    let mut s = string_with_room(len)?;
     for x in a {
         s.push_str(it.string(x)?);
     }
-    Ok(Value::str(&s))
+    Ok(Value::Str(Rc::new(s)))
 }
 
 fn strlen(it: &mut Interp, a: &[Value]) -> LResult {
@@ -164,11 +191,11 @@ fn read(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn princ_to_string(it: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::str(&it.princ_string(&a[0])))
+    Ok(Value::Str(Rc::new(it.try_print_string(&a[0], false)?)))
 }
 
 fn prin1_to_string(it: &mut Interp, a: &[Value]) -> LResult {
-    Ok(Value::str(&it.prin1_string(&a[0])))
+    Ok(Value::Str(Rc::new(it.try_print_string(&a[0], true)?)))
 }
 
 fn string_to_list(it: &mut Interp, a: &[Value]) -> LResult {
@@ -180,7 +207,8 @@ fn string_to_list(it: &mut Interp, a: &[Value]) -> LResult {
 }
 
 fn list_to_string(it: &mut Interp, a: &[Value]) -> LResult {
-    let mut s = String::new();
+    let n = it.list_arg(&a[0])?.iter().count();
+    let mut s = string_with_room(n)?;
     for x in it.list_arg(&a[0])?.iter() {
         let c = match x {
             Value::Int(c) => *c,
@@ -193,5 +221,5 @@ fn list_to_string(it: &mut Interp, a: &[Value]) -> LResult {
                 .unwrap_or('\u{FFFD}'),
         );
     }
-    Ok(Value::str(&s))
+    Ok(Value::Str(Rc::new(s)))
 }

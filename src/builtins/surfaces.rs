@@ -414,14 +414,27 @@ fn mesh_read(it: &mut Interp, a: &[Value]) -> LResult {
     let path = it
         .resolve_path(&name)
         .ok_or_else(|| err(format!("mesh-read: cannot find \"{name}\"")))?;
-    let c = it
+    // Read through the policy (confined under --sandbox) and within the memory budget, then
+    // parsed from memory; the mesh takes about as much again.
+    let bytes = it
         .ext::<crate::builtins::io::FsPolicy>()
-        .confine(&path, crate::builtins::io::Access::Read)
-        .map_err(err)?;
-    let bytes = std::fs::metadata(&c.path).map_or(0, |m| m.len());
-    it.charge(bytes)?;
-    crate::lang::memory::reserve(usize::try_from(bytes).unwrap_or(usize::MAX))?;
-    Ok(mesh_value(mesh::read_mesh(&c.path).map_err(mesh_err)?))
+        .read_bytes(&path)?;
+    it.charge(bytes.len() as u64)?;
+    crate::lang::memory::reserve(bytes.len())?;
+    let shown = path.display().to_string();
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let m = match ext.as_deref() {
+        Some("stl") => mesh::parse_stl(&bytes, 0.0, &shown).map(|(m, _)| m),
+        Some("obj") => match std::str::from_utf8(&bytes) {
+            Ok(text) => mesh::parse_obj(text, &shown),
+            Err(_) => return Err(err(format!("mesh-read: {shown} is not UTF-8 text"))),
+        },
+        _ => mesh::read_mesh(&path),
+    };
+    Ok(mesh_value(m.map_err(mesh_err)?))
 }
 
 fn mesh_write(it: &mut Interp, a: &[Value]) -> LResult {

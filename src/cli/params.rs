@@ -25,6 +25,8 @@ pub struct Param {
 pub struct ScriptNames {
     pub params: Vec<Param>,
     pub symbols: Vec<String>,
+    /// The literal file names of its `(load "...")` forms, as written.
+    pub loads: Vec<String>,
 }
 
 /// Reads the script's forms (without running them) and collects its names.
@@ -55,6 +57,9 @@ fn walk(
             }
         }
         Value::Cons(_) => {
+            if let Some(name) = as_load(v, it) {
+                out.loads.push(name);
+            }
             if let Some(p) = as_defparam(v, it) {
                 out.params.retain(|q| q.name != p.name);
                 out.params.push(p);
@@ -72,6 +77,86 @@ fn walk(
         }
         _ => {}
     }
+}
+
+/// The file of a `(load "NAME" ...)` form with a literal name.
+fn as_load(v: &Value, it: &Interp) -> Option<String> {
+    let Value::Cons(c) = v else { return None };
+    if it.syms.name(c.car.as_sym()?) != "LOAD" {
+        return None;
+    }
+    match &c.cdr {
+        Value::Cons(a) => match &a.car {
+            Value::Str(s) => Some(s.to_string()),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// Where `load` would find `name` from a file in `dir`: there, then the current directory,
+/// with ".lsp" added to a name without extension (as `Interp::resolve_path`).
+fn resolve_load(name: &str, dir: &Path) -> Option<std::path::PathBuf> {
+    let p = Path::new(name);
+    let mut candidates = vec![p.to_path_buf()];
+    if p.extension().is_none() {
+        candidates.push(p.with_extension("lsp"));
+    }
+    candidates.into_iter().find_map(|c| {
+        let places = if c.is_absolute() {
+            vec![c]
+        } else {
+            vec![dir.join(&c), c]
+        };
+        places.into_iter().find(|q| q.is_file())
+    })
+}
+
+/// `scan` of a script in `dir`, together with the files it loads by literal name (followed
+/// from each loaded file's own directory, as `load` resolves them; each file once): a `--set`
+/// or column may name a symbol only a loaded routine uses. A loaded file that cannot be read
+/// or parsed is skipped here; the run reports it.
+pub fn scan_with_loads(text: &str, dir: &Path) -> Result<ScriptNames, String> {
+    /// Loaded files followed at most (a guard against a tree of thousands).
+    const MAX_FILES: usize = 256;
+    let mut out = scan(text)?;
+    let mut known: std::collections::HashSet<String> = out.symbols.iter().cloned().collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut queue: Vec<(String, std::path::PathBuf)> = std::mem::take(&mut out.loads)
+        .into_iter()
+        .map(|l| (l, dir.to_path_buf()))
+        .collect();
+    while let Some((name, base)) = queue.pop() {
+        let Some(path) = resolve_load(&name, &base) else {
+            continue;
+        };
+        let key = path.canonicalize().unwrap_or_else(|_| path.clone());
+        if seen.len() >= MAX_FILES || !seen.insert(key) {
+            continue;
+        }
+        let Ok(bytes) = std::fs::read(&path) else {
+            continue;
+        };
+        let text = crate::lang::encoding::decode(
+            &bytes,
+            crate::lang::encoding::SourceCodePage::default().0,
+        );
+        let Ok(more) = scan(&text) else { continue };
+        for s in more.symbols {
+            if known.insert(s.clone()) {
+                out.symbols.push(s);
+            }
+        }
+        for p in more.params {
+            out.params.retain(|q| q.name != p.name);
+            out.params.push(p);
+        }
+        let here = path
+            .parent()
+            .map_or_else(|| base.clone(), Path::to_path_buf);
+        queue.extend(more.loads.into_iter().map(|l| (l, here.clone())));
+    }
+    Ok(out)
 }
 
 fn as_defparam(v: &Value, it: &Interp) -> Option<Param> {
@@ -108,7 +193,7 @@ pub fn params(file: &Path) -> i32 {
             return EXIT_USAGE;
         }
     };
-    let names = match scan(&text) {
+    let names = match scan_with_loads(&text, &super::run::parent_dir(file)) {
         Ok(n) => n,
         Err(m) => {
             eprintln!("error: {}: {m}", file.display());
@@ -228,7 +313,7 @@ impl ScriptNames {
 pub fn script_names(file: &Path) -> Result<ScriptNames, String> {
     let text = std::fs::read_to_string(file)
         .map_err(|e| format!("cannot read script {}: {e}", file.display()))?;
-    Ok(scan(&text).unwrap_or_default())
+    Ok(scan_with_loads(&text, &super::run::parent_dir(file)).unwrap_or_default())
 }
 
 #[cfg(test)]
@@ -276,5 +361,39 @@ mod tests {
             "--set L1=250: parameter L1 must be a number in [100, 200]"
         );
         assert!(n.check_value("column", "L1", "\"big\"").is_err());
+    }
+
+    #[test]
+    fn names_used_by_loaded_files_count() {
+        let dir = tempfile::tempdir().unwrap();
+        let lib = dir.path().join("lib");
+        std::fs::create_dir(&lib).unwrap();
+        // main loads lib/bend (".lsp" added), which loads its neighbour util.lsp, which
+        // loads bend again (followed once).
+        std::fs::write(
+            lib.join("bend.lsp"),
+            "(defparam BENDANG 40.0 \"bend\" 0 90) (load \"util.lsp\")",
+        )
+        .unwrap();
+        std::fs::write(lib.join("util.lsp"), "(setq TIPR 2.0) (load \"bend\")").unwrap();
+        let main = "(load \"lib/bend\") (load (strcat \"dyn\" \"amic\")) (princ L1)";
+        let n = scan_with_loads(main, dir.path()).unwrap();
+        assert!(n.check_name("--set", "bendang", &[]).is_ok());
+        assert!(n.check_name("--set", "TIPR", &[]).is_ok());
+        assert!(n.check_name("--set", "L1", &[]).is_ok());
+        assert_eq!(n.params.len(), 1);
+        assert_eq!(
+            n.check_sets(&["BENDANG=95".into()]).unwrap_err(),
+            "--set BENDANG=95: parameter BENDANG must be a number in [0, 90]"
+        );
+        assert!(n
+            .check_name("--set", "BEND", &[])
+            .unwrap_err()
+            .contains("did you mean BENDANG?"));
+        // The file alone knows none of them.
+        assert!(scan(main)
+            .unwrap()
+            .check_name("--set", "TIPR", &[])
+            .is_err());
     }
 }

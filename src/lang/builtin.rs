@@ -58,7 +58,8 @@ macro_rules! builtin {
 /// "bad argument type: PRED: VALUE" as AutoLISP prints it. AutoLISP puts a colon after the
 /// numeric predicates (numberp:, fixnump:) and none after the others (stringp nil).
 pub fn bad_arg(it: &Interp, pred: &str, v: &Value) -> Exn {
-    let shown = it.prin1_string(v);
+    // Bounded: the value may be a huge (or exponentially shared) structure.
+    let shown = it.prin1_short(v, 4096);
     if matches!(pred, "numberp" | "fixnump" | "2D/3D point" | "2D point") {
         err(format!("bad argument type: {pred}: {shown}"))
     } else {

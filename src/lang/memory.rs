@@ -105,6 +105,19 @@ fn out_of_memory(more: usize) -> Exn {
     ))
 }
 
+/// The "out of memory" error for a fallible reservation of `more` bytes the system allocator
+/// refused (an address-space limit below the budget): what `reserve` would have said.
+pub fn system_refused(more: usize) -> Exn {
+    if BUDGET.with(Cell::get) > 0 {
+        return out_of_memory(more);
+    }
+    err(format!(
+        "out of memory: the system refused {} more (holding {})",
+        human(more),
+        human(usize::try_from(thread_bytes().max(0)).unwrap_or(0))
+    ))
+}
+
 /// An error unless this thread may allocate `bytes` more.
 #[inline]
 pub fn reserve(bytes: usize) -> Result<(), Exn> {

@@ -209,7 +209,7 @@ impl Object for SafeArray {
 impl SafeArray {
     fn len(&self, dim: usize) -> usize {
         let (lo, hi) = self.bounds[dim];
-        (hi - lo + 1).max(0) as usize
+        (i64::from(hi) - i64::from(lo) + 1).max(0) as usize
     }
 
     /// The flat index of the given indices, or AutoCAD's bounds error.
@@ -225,7 +225,7 @@ impl SafeArray {
             if i < lo || i > hi {
                 return Err(err("ActiveX Server returned an error: Invalid index"));
             }
-            flat = flat * self.len(d) + (i - lo) as usize;
+            flat = flat * self.len(d) + (i64::from(i) - i64::from(lo)) as usize;
         }
         Ok(flat)
     }
@@ -420,7 +420,7 @@ fn make_safearray(it: &mut Interp, a: &[Value]) -> LResult {
             Value::Cons(c) => (it.int(&c.car)?, it.int(&c.cdr)?),
             other => return Err(bad_arg(it, "consp", other)),
         };
-        if hi < lo - 1 {
+        if i64::from(hi) < i64::from(lo) - 1 {
             return Err(err("ActiveX Server returned an error: Invalid bounds"));
         }
         bounds.push((lo, hi));
@@ -432,12 +432,19 @@ fn make_safearray(it: &mut Interp, a: &[Value]) -> LResult {
     }
     let n: usize = bounds
         .iter()
-        .map(|(lo, hi)| (hi - lo + 1).max(0) as usize)
-        .product();
+        .map(|&(lo, hi)| (i64::from(hi) - i64::from(lo) + 1).max(0) as usize)
+        .fold(1usize, usize::saturating_mul);
+    // Bounds of a few numbers can ask for gigabytes: the memory budget answers first.
+    let bytes = n.saturating_mul(std::mem::size_of::<Value>());
+    crate::lang::memory::reserve(bytes)?;
+    let mut data = Vec::new();
+    data.try_reserve_exact(n)
+        .map_err(|_| crate::lang::memory::system_refused(bytes))?;
+    data.resize(n, empty_element(vt));
     Ok(Value::obj(SafeArray {
         vt,
         bounds,
-        data: RefCell::new(vec![empty_element(vt); n]),
+        data: RefCell::new(data),
     }))
 }
 

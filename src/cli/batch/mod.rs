@@ -110,7 +110,7 @@ fn check_plan(src: &Source, files: &OutputFiles) -> Result<(), String> {
 /// `--set` names and the source's columns must be symbols the script uses (a column may also
 /// be a pattern field); values of declared parameters must be within their ranges.
 fn check_names(text: &str, args: &BatchArgs, src: &Source) -> Result<(), String> {
-    let names = super::params::scan(text)?;
+    let names = super::params::scan_with_loads(text, &super::run::parent_dir(&args.file))?;
     names.check_sets(&args.set)?;
     let fields: Vec<String> = args
         .outputs
@@ -214,12 +214,7 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1);
-    let pool = match rayon::ThreadPoolBuilder::new()
-        .num_threads(jobs)
-        .stack_size(EVAL_STACK_SIZE)
-        .start_handler(|_| mark_eval_thread(EVAL_STACK_SIZE))
-        .build()
-    {
+    let pool = match worker_pool(jobs) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: cannot start {jobs} workers: {e}");
@@ -261,6 +256,44 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
     } else {
         EXIT_SCRIPT_ERROR
     }
+}
+
+/// The workers, each with the evaluator's deep stack; under an address-space limit
+/// (`ulimit -v`) that cannot hold `jobs` of them, smaller stacks (a proportionally smaller
+/// recursion limit, as for a single run) rather than no batch at all.
+fn worker_pool(jobs: usize) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
+    // Stacks are address space: leave most of a limit to the rows' data (and spare the
+    // failed attempts, whose threads are released asynchronously).
+    let room = address_space_limit().map_or(usize::MAX, |l| l / 2 / jobs.max(1));
+    let mut last = None;
+    for shift in [0, 2, 4, 6] {
+        let size = EVAL_STACK_SIZE >> shift;
+        if size > room && shift < 6 {
+            continue;
+        }
+        match rayon::ThreadPoolBuilder::new()
+            .num_threads(jobs)
+            .stack_size(size)
+            .start_handler(move |_| mark_eval_thread(size))
+            .build()
+        {
+            Ok(p) => return Ok(p),
+            Err(e) => last = Some(e),
+        }
+    }
+    Err(last.expect("at least one size was tried"))
+}
+
+/// The address-space limit (`ulimit -v`), if any.
+fn address_space_limit() -> Option<usize> {
+    let mut r = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: r is a valid rlimit for getrlimit to fill.
+    let ok = unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut r) } == 0;
+    (ok && r.rlim_cur != libc::RLIM_INFINITY)
+        .then(|| usize::try_from(r.rlim_cur).unwrap_or(usize::MAX))
 }
 
 /// Runs every row (stopping early on an interrupt); the rows run and the failed row numbers.

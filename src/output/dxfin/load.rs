@@ -54,7 +54,11 @@ pub fn read_dxf(data: &[u8], recover: bool) -> Result<Drawing, DxfReadError> {
                             match r.type_name() {
                                 "BLOCK" => {
                                     let is_layout = r.get(2).is_some_and(|n| {
-                                        n.len() > 12 && n[..12].eq_ignore_ascii_case("*Paper_Space")
+                                        // `get`: byte 12 may fall inside a character.
+                                        n.len() > 12
+                                            && n.get(..12).is_some_and(|p| {
+                                                p.eq_ignore_ascii_case("*Paper_Space")
+                                            })
                                     });
                                     layout = is_layout.then_some(records.len());
                                     records.push(r);
