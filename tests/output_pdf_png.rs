@@ -2,7 +2,8 @@
 //! measured in pixels — the PDF rendered by poppler's pdftoppm, the PNG decoded directly —
 //! matches its extent read from the DXF by ezdxf to 0.3 mm, for a drawing in millimetres and
 //! one in inches; the DXF header and the SVG carry the unit; a bad output extension is a usage
-//! error before the script runs.
+//! error before the script runs; the PDF's layers are optional content groups that pypdf lists
+//! by name and that poppler hides when they are switched off.
 
 #[path = "cli_support/mod.rs"]
 mod cli;
@@ -208,4 +209,87 @@ fn png_records_its_resolution() {
     assert_eq!(phys.xppu, 10_000); // 254 dpi = 10 px/mm
                                    // 20 mm circle + 2 × 5 mm margin = 30 mm = 300 px.
     assert_eq!((info.width, info.height), (300, 300));
+}
+
+/// Layer names, then the names initially off, from the PDF's /OCProperties (read by pypdf); and
+/// a copy of the PDF with the group `switch_off` also off, as a viewer's layer toggle leaves it.
+fn pdf_layers(pdf: &Path, copy: &Path, switch_off: &str) -> (Vec<String>, Vec<String>) {
+    let code = format!(
+        "from pypdf import PdfReader, PdfWriter\n\
+         from pypdf.generic import NameObject, ArrayObject\n\
+         r = PdfReader(r'{}')\n\
+         oc = r.trailer['/Root']['/OCProperties']\n\
+         print('|'.join(g.get_object()['/Name'] for g in oc['/OCGs']))\n\
+         print('|'.join(g.get_object()['/Name'] for g in oc['/D'].get('/OFF', [])))\n\
+         w = PdfWriter(clone_from=r)\n\
+         oc = w.root_object['/OCProperties']\n\
+         hit = [g for g in oc['/OCGs'] if g.get_object()['/Name'] == '{switch_off}']\n\
+         oc['/D'][NameObject('/OFF')] = ArrayObject(list(oc['/D'].get('/OFF', [])) + hit)\n\
+         w.write(r'{}')\n",
+        pdf.display(),
+        copy.display()
+    );
+    let out = Command::new(support::python())
+        .args(["-c", &code])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let s = String::from_utf8(out.stdout).unwrap();
+    let mut lines = s.lines().map(|l| {
+        l.split('|')
+            .filter(|x| !x.is_empty())
+            .map(String::from)
+            .collect::<Vec<_>>()
+    });
+    (lines.next().unwrap(), lines.next().unwrap())
+}
+
+/// Whether any pixel of the PNG is close to `rgb`.
+fn has_colour(png_path: &Path, rgb: [u8; 3]) -> bool {
+    let dec = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(png_path).unwrap(),
+    ));
+    let mut r = dec.read_info().unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    let ch = info.color_type.samples();
+    buf[..info.buffer_size()].chunks_exact(ch).any(|p| {
+        p[..3]
+            .iter()
+            .zip(rgb)
+            .all(|(&a, b)| (a as i32 - b as i32).abs() < 60)
+    })
+}
+
+#[test]
+fn pdf_layers_are_optional_content_groups() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(
+        d.join("l.lsp"),
+        "(layer \"CUT\" 1)\n(draw (pline '((0 0) (100 0) (100 50) (0 50)) T))\n\
+         (layer \"HOLES\" 3)\n(draw (circle '(50 25) 10))\n\
+         (layer \"NOTES\" 7)\n\
+         (entmake '((0 . \"TEXT\") (8 . \"NOTES\") (10 10.0 -10.0 0.0) (40 . 5.0) (1 . \"Temple\")))\n\
+         (layer \"GUIDE\" 5)\n(draw (line '(0 0) '(100 50)))\n\
+         (command \"-LAYER\" \"OFF\" \"GUIDE\" \"\")\n",
+    )
+    .unwrap();
+    let o = cli::lispcad_in(d, &["run", "l.lsp", "-o", "l.pdf"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (names, off) = pdf_layers(&d.join("l.pdf"), &d.join("no-cut.pdf"), "CUT");
+    // Layer "0" has no entities and gets no group; the layer that is off starts off.
+    assert_eq!(names, ["CUT", "HOLES", "NOTES", "GUIDE"]);
+    assert_eq!(off, ["GUIDE"]);
+    let (red, green, blue) = ([255, 0, 0], [0, 255, 0], [0, 0, 255]);
+    let all = pdftoppm(&d.join("l.pdf"), 100, &d.join("all"));
+    assert!(has_colour(&all, red) && has_colour(&all, green));
+    assert!(!has_colour(&all, blue), "GUIDE is off but drawn");
+    let no_cut = pdftoppm(&d.join("no-cut.pdf"), 100, &d.join("no-cut"));
+    assert!(has_colour(&no_cut, green));
+    assert!(!has_colour(&no_cut, red), "CUT switched off but drawn");
 }

@@ -241,7 +241,7 @@ pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u
                 dxf::encode_cp1252(out.dxf)
             }
         },
-        Format::Pdf => pdf::svg_to_pdf(&svg::write_svg(d, opts))?,
+        Format::Pdf => pdf::layers_to_pdf(&svg::svg_layers(d, opts))?,
         Format::Png => png::svg_to_png(&svg::write_svg(d, opts), opts.dpi)?,
     })
 }

@@ -377,9 +377,119 @@ fn text_element(insert: DVec3, height: f64, value: &str, rotation: f64, v: &View
         .set("fill", "currentColor")
 }
 
+/// One drawing layer's part of the SVG: what its `<g>` is built from.
+pub struct SvgLayer {
+    /// The layer's name (the group's `inkscape:label`).
+    pub name: String,
+    /// Off or frozen: `display="none"` in the SVG.
+    pub hidden: bool,
+    id: String,
+    color: String,
+    body: String,
+}
+
+/// The SVG split by layer, so the PDF writer can put each layer in its own optional content
+/// group; `to_svg` joins it into the document `write_svg` returns.
+pub struct SvgLayers {
+    /// The `<svg ...>` start tag (size, viewBox, namespaces).
+    pub head: String,
+    pub layers: Vec<SvgLayer>,
+    stroke_width: String,
+}
+
+impl SvgLayers {
+    /// Layer `i`'s `<g>` element; `show` draws it even when the layer is hidden.
+    pub fn group(&self, i: usize, show: bool) -> String {
+        let l = &self.layers[i];
+        let mut g = Group::new()
+            .set("id", l.id.as_str())
+            .set("inkscape:groupmode", "layer")
+            .set("inkscape:label", l.name.as_str())
+            .set("transform", "scale(1 -1)")
+            .set("fill", "none")
+            .set("stroke", l.color.as_str())
+            .set("color", l.color.as_str())
+            .set("stroke-width", self.stroke_width.as_str())
+            .set("stroke-linecap", "round")
+            .set("stroke-linejoin", "round");
+        if l.hidden && !show {
+            g = g.set("display", "none");
+        }
+        g.add(Blob::new(l.body.clone())).to_string()
+    }
+
+    /// A whole SVG document of the head and the given groups.
+    pub fn document<'a>(&self, groups: impl IntoIterator<Item = &'a str>) -> String {
+        let mut s = self.head.clone();
+        let mut any = false;
+        for g in groups {
+            s.push('\n');
+            s.push_str(g);
+            any = true;
+        }
+        if any {
+            s.push_str("\n</svg>\n");
+        } else {
+            // The svg crate's empty element, as write_svg always wrote it.
+            s.pop();
+            s.push_str("/>\n");
+        }
+        s
+    }
+
+    /// The SVG document (every layer, hidden ones with `display="none"`).
+    pub fn to_svg(&self) -> String {
+        let groups: Vec<String> = (0..self.layers.len())
+            .map(|i| self.group(i, false))
+            .collect();
+        self.document(groups.iter().map(String::as_str))
+    }
+}
+
 /// The SVG document for the drawing (deterministic: same drawing and options, same bytes).
 pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
+    svg_layers(d, opts).to_svg()
+}
+
+/// The drawing's SVG, split by layer (layers without entities are left out).
+pub fn svg_layers(d: &Drawing, opts: &OutputOptions) -> SvgLayers {
     let v = View::new(opts.view_dir);
+    let head = head(d, opts, &v);
+    // Bucket entities by layer (layer table order, entities in insertion order).
+    let layers = d.layers();
+    let mut buckets: Vec<Vec<&Entity>> = vec![Vec::new(); layers.len()];
+    for e in d.entities() {
+        if let Some(i) = layers
+            .iter()
+            .position(|l| l.name.eq_ignore_ascii_case(&e.layer))
+        {
+            buckets[i].push(e);
+        }
+    }
+    let mut stroke_width = String::new();
+    num(&mut stroke_width, opts.stroke_width_mm / opts.unit_mm());
+    let parts = layers
+        .iter()
+        .zip(&buckets)
+        .enumerate()
+        .filter(|(_, (_, ents))| !ents.is_empty())
+        .map(|(i, (layer, ents))| SvgLayer {
+            name: layer.name.clone(),
+            hidden: layer.is_off() || layer.frozen,
+            id: format!("layer{}", i + 1),
+            color: aci_to_hex(layer.color),
+            body: layer_body(ents, &v),
+        })
+        .collect();
+    SvgLayers {
+        head,
+        layers: parts,
+        stroke_width,
+    }
+}
+
+/// The `<svg>` start tag: physical size and viewBox from the extents in the view plane.
+fn head(d: &Drawing, opts: &OutputOptions, v: &View) -> String {
     // Extents in the view plane.
     let mut lo = DVec2::splat(f64::INFINITY);
     let mut hi = DVec2::splat(f64::NEG_INFINITY);
@@ -423,7 +533,7 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         s.push_str(suffix);
         s
     };
-    let mut doc = Document::new()
+    let doc = Document::new()
         .set(
             "xmlns:inkscape",
             "http://www.inkscape.org/namespaces/inkscape",
@@ -433,123 +543,133 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
         .set("height", mm(h))
         .set("viewBox", vb);
 
-    // Bucket entities by layer (layer table order, entities in insertion order).
-    let layers = d.layers();
-    let mut buckets: Vec<Vec<&Entity>> = vec![Vec::new(); layers.len()];
-    for e in d.entities() {
-        if let Some(i) = layers
-            .iter()
-            .position(|l| l.name.eq_ignore_ascii_case(&e.layer))
+    let mut s = doc.to_string();
+    // The empty element's "/>" becomes the start tag's ">".
+    s.truncate(s.len() - 2);
+    s.push('>');
+    s
+}
+
+/// A layer's elements, serialized here into one string: the svg crate would copy and re-escape
+/// every path's data (digits, spaces and command letters only, nothing to escape) several
+/// times, which dominated writing large drawings. Text still goes through the crate's `Text`
+/// element for its escaping. The bytes are the same as adding `Path` elements one by one
+/// (attributes in the crate's sorted order).
+fn layer_body(ents: &[&Entity], v: &View) -> String {
+    let mut body = String::new();
+    for e in ents {
+        let own = match e.color {
+            Some(c) if (1..=255).contains(&c) => Some(aci_to_hex(c)),
+            _ => None,
+        };
+        if let EntityKind::Text {
+            insert,
+            height,
+            value,
+            rotation,
+            ..
+        } = &e.kind
         {
-            buckets[i].push(e);
-        }
-    }
-    let mut sw = String::new();
-    num(&mut sw, opts.stroke_width_mm / unit);
-    for (i, (layer, ents)) in layers.iter().zip(&buckets).enumerate() {
-        if ents.is_empty() {
+            let mut t = text_element(*insert, *height, value, *rotation, v);
+            if let Some(c) = &own {
+                t = t.set("color", c.as_str());
+            }
+            if !body.is_empty() {
+                body.push('\n');
+            }
+            let _ = write!(body, "{t}");
             continue;
         }
-        let color = aci_to_hex(layer.color);
-        let mut g = Group::new()
-            .set("id", format!("layer{}", i + 1))
-            .set("inkscape:groupmode", "layer")
-            .set("inkscape:label", layer.name.as_str())
-            .set("transform", "scale(1 -1)")
-            .set("fill", "none")
-            .set("stroke", color.as_str())
-            .set("color", color.as_str())
-            .set("stroke-width", sw.as_str())
-            .set("stroke-linecap", "round")
-            .set("stroke-linejoin", "round");
-        if layer.is_off() || layer.frozen {
-            g = g.set("display", "none");
-        }
-        // The layer's elements are serialized here into one Blob: the svg crate would copy and
-        // re-escape every path's data (digits, spaces and command letters only, nothing to
-        // escape) several times, which dominated writing large drawings. Text still goes
-        // through the crate's `Text` element for its escaping. The bytes are the same as
-        // adding `Path` elements one by one (attributes in the crate's sorted order).
-        let mut body = String::new();
-        for e in ents {
-            let own = match e.color {
-                Some(c) if (1..=255).contains(&c) => Some(aci_to_hex(c)),
-                _ => None,
-            };
-            if let EntityKind::Text {
-                insert,
-                height,
-                value,
-                rotation,
-                ..
-            } = &e.kind
-            {
-                let mut t = text_element(*insert, *height, value, *rotation, &v);
-                if let Some(c) = &own {
-                    t = t.set("color", c.as_str());
-                }
-                if !body.is_empty() {
-                    body.push('\n');
-                }
-                let _ = write!(body, "{t}");
-                continue;
+        if let Some(data) = entity_path(e, v) {
+            if !body.is_empty() {
+                body.push('\n');
             }
-            if let Some(data) = entity_path(e, &v) {
-                if !body.is_empty() {
-                    body.push('\n');
-                }
-                body.push_str("<path d=\"");
-                body.push_str(&data);
+            body.push_str("<path d=\"");
+            body.push_str(&data);
+            body.push('"');
+            if let Some(c) = &own {
+                body.push_str(" stroke=\"");
+                body.push_str(c);
                 body.push('"');
-                if let Some(c) = &own {
-                    body.push_str(" stroke=\"");
-                    body.push_str(c);
-                    body.push('"');
-                }
-                body.push_str("/>");
             }
+            body.push_str("/>");
         }
-        g = g.add(Blob::new(body));
-        doc = doc.add(g);
     }
-    let mut s = doc.to_string();
-    s.push('\n');
-    s
+    body
 }
 
 /// The usvg tree of an SVG this module wrote (for the PDF and PNG writers). Fonts are the
 /// system's, loaded once per process and only when the SVG has text.
 pub fn usvg_tree(svg: &str) -> Result<usvg::Tree, super::OutputError> {
-    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
-        std::sync::OnceLock::new();
     let mut opt = usvg::Options::default();
     if svg.contains("<text") {
-        opt.fontdb = FONTS
-            .get_or_init(|| {
-                let mut db = usvg::fontdb::Database::new();
-                db.load_system_fonts();
-                // fontdb's generic sans-serif is Arial; use the first sans family installed.
-                let have = |f: &str| {
-                    db.faces()
-                        .any(|face| face.families.iter().any(|x| x.0 == f))
-                };
-                let sans = [
-                    "DejaVu Sans",
-                    "Liberation Sans",
-                    "Noto Sans",
-                    "Arial",
-                    "Helvetica",
-                ]
-                .into_iter()
-                .find(|f| have(f));
-                if let Some(f) = sans {
-                    db.set_sans_serif_family(f);
-                }
-                std::sync::Arc::new(db)
-            })
-            .clone();
+        opt.fontdb = fonts();
     }
     usvg::Tree::from_str(svg, &opt).map_err(|e| super::OutputError::Convert(e.to_string()))
+}
+
+/// The process's font database, shared by the PDF, PNG and contact-sheet writers.
+fn fonts() -> std::sync::Arc<usvg::fontdb::Database> {
+    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
+        std::sync::OnceLock::new();
+    FONTS
+        .get_or_init(|| {
+            let mut db = usvg::fontdb::Database::new();
+            db.load_system_fonts();
+            // fontdb's generic sans-serif is Arial; use the first sans family installed.
+            let have = |f: &str| {
+                db.faces()
+                    .any(|face| face.families.iter().any(|x| x.0 == f))
+            };
+            let sans = [
+                "DejaVu Sans",
+                "Liberation Sans",
+                "Noto Sans",
+                "Arial",
+                "Helvetica",
+            ]
+            .into_iter()
+            .find(|f| have(f));
+            if let Some(f) = sans {
+                db.set_sans_serif_family(f);
+                hold_in_memory(&mut db, f);
+            }
+            std::sync::Arc::new(db)
+        })
+        .clone()
+}
+
+/// Reads the files of `family`'s faces into memory. usvg and svg2pdf ask fontdb for a face's
+/// bytes for every glyph they shape or embed, and for a file source fontdb opens and maps the
+/// file each time: some 420 opens and maps per temple PDF, most of its cost. Faces of other
+/// families (only used as fallbacks for missing glyphs) stay on disk.
+fn hold_in_memory(db: &mut usvg::fontdb::Database, family: &str) {
+    use usvg::fontdb::Source;
+    let mut paths: Vec<std::path::PathBuf> = db
+        .faces()
+        .filter(|f| f.families.iter().any(|x| x.0 == family))
+        .filter_map(|f| match &f.source {
+            Source::File(p) => Some(p.clone()),
+            _ => None,
+        })
+        .collect();
+    paths.sort();
+    paths.dedup();
+    for path in paths {
+        let Ok(bytes) = std::fs::read(&path) else {
+            continue;
+        };
+        // Every face of the file (a collection may hold other families) is replaced.
+        let ids: Vec<_> = db
+            .faces()
+            .filter(|f| matches!(&f.source, Source::File(p) if *p == path))
+            .map(|f| f.id)
+            .collect();
+        for id in ids {
+            db.remove_face(id);
+        }
+        db.load_font_data(bytes);
+    }
 }
 
 #[cfg(test)]
