@@ -80,7 +80,7 @@
 (cdr (assoc 11 (entget (ssname ex 2))))
 ;=> (0.0 0.0 0.0)
 (command "_.explode" cl)
-;!! EXPLODE: lispcad explodes polylines only, not LINE (block references are kept as read)
+;!! EXPLODE: lispcad explodes polylines and block references, not LINE
 ;; OFFSET by a distance on the side of a point, and through a point.
 (entmake '((0 . "CIRCLE") (10 0 0 0) (40 . 5.0)))
 (setq ci (entlast))

@@ -1,7 +1,7 @@
 //! CHPROP, CHANGE (its Properties option), EXPLODE (polylines into lines and arcs), FILLET
 //! (two lines; arcs are in fillet.rs) and OFFSET (by a distance or through a point, on the side a point gives),
 //! with AutoCAD's prompts in their order. What lispcad does not model (per-entity line types, weights and
-//! thickness; exploding blocks) is a clear error naming it.
+//! thickness) is a clear error naming it.
 
 use glam::{DVec2, DVec3};
 
@@ -175,6 +175,9 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
     let Some(e) = d.get(h).cloned() else {
         return Ok(());
     };
+    if matches!(&e.kind, EntityKind::Unmodelled { dxf_type } if dxf_type == "INSERT") {
+        return super::insert::explode_insert(it, h);
+    }
     let (pts, bulges, closed, ocs, z) = match &e.kind {
         EntityKind::LwPolyline {
             points,
@@ -216,7 +219,7 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
             return Err(cmd_err(
                 "EXPLODE",
                 format!(
-                    "lispcad explodes polylines only, not {} (block references are kept as read)",
+                    "lispcad explodes polylines and block references, not {}",
                     other.type_name()
                 ),
             ))
