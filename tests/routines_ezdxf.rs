@@ -213,6 +213,46 @@ fn insert_with_attributes_into_an_ezdxf_drawing() {
     );
 }
 
+/// EXPLODE of a block reference: the block's LINE (0,0)-(1,0), inserted at (10,5) with
+/// scale 2 and rotation 90 degrees, becomes the line (10,5)-(10,7) (worked by hand); the
+/// INSERT and its ATTRIBs are gone, and ezdxf reads the file with a clean audit.
+#[test]
+fn explode_of_an_inserted_block() {
+    let dir = tempfile::tempdir().unwrap();
+    py_plain("block", &dir.path().join("in.dxf"));
+    let script = r#"
+(command "_.-insert" "DOOR" '(10 5 0) 2 "" 90 "1200" "")
+(setq ins (entlast))
+(setq att (entnext ins))
+(command "_.explode" ins "")
+(prin1 (list (entget ins) (entget att) (cdr (assoc 0 (entget (entlast)))) (entnext (entlast))))
+"#;
+    std::fs::write(dir.path().join("x.lsp"), script).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir.path())
+        .args(["run", "x.lsp", "--open", "in.dxf", "-o", "out.dxf"])
+        .output()
+        .expect("running lispcad");
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(
+        out.status.success(),
+        "lispcad: {stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(stdout.trim(), r#"(nil nil "LINE" nil)"#);
+    let doc = py("inserts", &dir.path().join("out.dxf"));
+    assert_eq!(doc["audit_errors"], 0);
+    assert_eq!(doc["audit_fixes"], 0);
+    assert_eq!(doc["inserts"].as_array().unwrap().len(), 0);
+    let lines = doc["lines"].as_array().unwrap();
+    assert_eq!(lines.len(), 1);
+    assert_close(
+        &nums(&lines[0]),
+        &[10.0, 5.0, 0.0, 10.0, 7.0, 0.0],
+        "exploded line",
+    );
+}
+
 fn py_plain(mode: &str, path: &std::path::Path) {
     let out = Command::new(python())
         .arg(manifest().join("tests/validate/routines_ref.py"))

@@ -84,6 +84,12 @@ fn new_drawing_xdata_and_dictionaries_read_back_by_ezdxf() {
 (setq x2 (entmakex '((0 . "XRECORD") (100 . "AcDbXrecord") (1 . "late"))))
 (dictadd d2 "LATE" x2)
 (dictadd d "SUB" d2)
+;; A POLYLINE's extended data is given on its header.
+(entmake '((0 . "POLYLINE") (66 . 1) (70 . 1) (-3 ("LCAPP" (1000 . "header") (1070 . 3)))))
+(entmake '((0 . "VERTEX") (10 0 0 0)))
+(entmake '((0 . "VERTEX") (10 4 0 0) (42 . 1.0)))
+(entmake '((0 . "VERTEX") (10 4 4 0)))
+(entmake '((0 . "SEQEND")))
 "#;
     lispcad(dir.path(), script, &["-o", "out.dxf"]);
     let doc = ezdxf("check", &dir.path().join("out.dxf"));
@@ -99,6 +105,8 @@ fn new_drawing_xdata_and_dictionaries_read_back_by_ezdxf() {
             [1071, 70000]
         ])
     );
+    let pl = apps_of(&doc, "POLYLINE", |_| true);
+    assert_eq!(pl["LCAPP"], json!([[1000, "header"], [1070, 3]]));
     let circle = apps_of(&doc, "CIRCLE", |_| true);
     assert_eq!(circle["LCAPP"], json!([[1000, "circle"]]));
     let lc = &doc["root"]["LC_DICT"];

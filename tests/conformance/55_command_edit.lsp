@@ -41,7 +41,7 @@
 (command "_.MOVE" "" )
 ;!! MOVE: no objects selected
 (command "_.FILLETX")
-;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)
 (command "_.ARC" "_C" '(0 0) '(3 0) '(0 3))
 (setq a (entlast))
 (command "_.MIRROR" a "" '(5 0) '(5 1) "")
@@ -80,7 +80,7 @@
 (cdr (assoc 11 (entget (ssname ex 2))))
 ;=> (0.0 0.0 0.0)
 (command "_.explode" cl)
-;!! EXPLODE: lispcad explodes polylines only, not LINE (block references are kept as read)
+;!! EXPLODE: lispcad explodes polylines and block references, not LINE
 ;; OFFSET by a distance on the side of a point, and through a point.
 (entmake '((0 . "CIRCLE") (10 0 0 0) (40 . 5.0)))
 (setq ci (entlast))
@@ -100,7 +100,7 @@
 (command "_.-insert" "c:/blocks/door.dwg" '(0 0 0) 1 1 0)
 ;!! INSERT: inserting a drawing file ("c:/blocks/door.dwg") is not supported; name a block of the opened drawing
 (command "_.mline")
-;!! command: unknown command "_.mline" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.mline" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)
 ;; FILLET two lines: radius 2 at a right-angle corner, the arc tangent to both; radius 0
 ;; extends the lines to their corner. Arcs and other objects are refused by name.
 (command "_.fillet" "_R" 2.0)
@@ -123,7 +123,53 @@
 (list (cdr (assoc 11 (entget f1))) (cdr (assoc 10 (entget f2))))
 ;=> ((10.0 0.0 0.0) (10.0 0.0 0.0))
 (command "_.fillet" f1 ci)
-;!! FILLET: lispcad fillets two lines, not a CIRCLE
+;!! FILLET: lispcad fillets lines and arcs in the XY plane, not a CIRCLE
 (entmake '((0 . "LINE") (10 0 5 0) (11 10 5 0)))
 (command "_.fillet" f1 (entlast))
 ;!! FILLET: the lines are parallel
+;; FILLET with arcs. Expected values worked by hand: the fillet centre is at distance r
+;; from both curves, so for the line y=0 and the arc (10,0) R8 with r=3 it is (14,3)
+;; (4^2+3^2 = (8-3)^2); its tangent points are (14,0) and (10,0)+8*(0.8,0.6); angles are
+;; atan2(0.6,0.8) = 0.643501109 and 3pi/2.
+(defun fr (v) (mapcar '(lambda (x) (rtos x 2 6)) v))
+(defun arcof (e) (setq e (entget e)) (list (fr (cdr (assoc 10 e))) (rtos (cdr (assoc 40 e)) 2 6) (rtos (cdr (assoc 50 e)) 2 9) (rtos (cdr (assoc 51 e)) 2 9)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 20 0 0)))
+(setq fl (entlast))
+(entmake (list '(0 . "ARC") '(10 10 0 0) '(40 . 8.0) '(50 . 0.0) (cons 51 pi)))
+(setq fc (entlast))
+(command "_.fillet" "_R" 3.0 (list fl '(12 0 0)) (list fc '(10 8 0)))
+(list (fr (cdr (assoc 10 (entget fl)))) (fr (cdr (assoc 11 (entget fl)))))
+;=> (("0.000000" "0.000000" "0.000000") ("14.000000" "0.000000" "0.000000"))
+(arcof fc)
+;=> (("10.000000" "0.000000" "0.000000") "8.000000" "0.643501109" "3.141592654")
+(arcof (entlast))
+;=> (("14.000000" "3.000000" "0.000000") "3.000000" "4.712388980" "0.643501109")
+;; Radius 0: the line (0,0)-(15,0) and the arc (10,0) R8 from pi/4 to pi meet, extended, at
+;; (2,0) and (18,0); (18,0) is nearer the picks, so the line grows to it and the arc's start
+;; moves back to angle 0. No arc is added.
+(entmake '((0 . "LINE") (10 0 0 0) (11 15 0 0)))
+(setq fl (entlast))
+(entmake (list '(0 . "ARC") '(10 10 0 0) '(40 . 8.0) (cons 50 (/ pi 4)) (cons 51 pi)))
+(setq fc (entlast))
+(command "_.fillet" "_R" 0 (list fl '(12 0 0)) (list fc '(10 8 0)))
+(list (fr (cdr (assoc 11 (entget fl)))) (arcof fc) (eq (entlast) fc))
+;=> (("18.000000" "0.000000" "0.000000") (("10.000000" "0.000000" "0.000000") "8.000000" "0.000000000" "3.141592654") T)
+;; Two arcs, (0,0) R5 from pi/2 to pi and (8,0) R5 from 0 to pi/2, r=3.5: the centre is
+;; (4,7.5) (4^2+7.5^2 = 8.5^2); the first arc's start moves back to atan2(7.5,4) =
+;; 1.080839001, the second's end on to pi-1.080839001, and the fillet runs between them
+;; under its centre: from atan2(-7.5,-4) = 4.222431654 to atan2(-7.5,4) = 5.202346307.
+(entmake (list '(0 . "ARC") '(10 0 0 0) '(40 . 5.0) (cons 50 (/ pi 2)) (cons 51 pi)))
+(setq fa1 (entlast))
+(entmake (list '(0 . "ARC") '(10 8 0 0) '(40 . 5.0) '(50 . 0.0) (cons 51 (/ pi 2))))
+(setq fa2 (entlast))
+(command "_.fillet" "_R" 3.5 (list fa1 '(-3 4 0)) (list fa2 '(11 4 0)))
+(list (arcof fa1) (arcof fa2))
+;=> ((("0.000000" "0.000000" "0.000000") "5.000000" "1.080839001" "3.141592654") (("8.000000" "0.000000" "0.000000") "5.000000" "0.000000000" "2.060753653"))
+(arcof (entlast))
+;=> (("4.000000" "7.500000" "0.000000") "3.500000" "4.222431654" "5.202346307")
+;; Concentric arcs never meet; a radius no fillet fits is an error too.
+(entmake (list '(0 . "ARC") '(10 0 0 0) '(40 . 2.0) '(50 . 0.0) (cons 51 pi)))
+(command "_.fillet" "_R" 0 fa1 (entlast))
+;!! FILLET: the objects do not meet, even extended
+(command "_.fillet" "_R" 1.0 fa1 (entlast))
+;!! FILLET: no fillet of radius 1 joins these objects

@@ -132,3 +132,10 @@
 ;=> "Standard"
 (eq (handent (cdr (assoc 5 (entget x)))) x)
 ;=> T
+;; A POLYLINE's extended data comes with its header and is the polyline's once SEQEND ends it.
+(entmake '((0 . "POLYLINE") (66 . 1) (70 . 1) (-3 ("LC2" (1000 . "header") (1070 . 3)))))
+(entmake '((0 . "VERTEX") (10 0 0 0)))
+(entmake '((0 . "VERTEX") (10 4 0 0) (42 . 1.0)))
+(entmake '((0 . "SEQEND")))
+(list (cdr (assoc 0 (entget (entlast)))) (cdr (assoc -3 (entget (entlast) '("LC2")))) (assoc -3 (entget (entlast))))
+;=> ("POLYLINE" (("LC2" (1000 . "header") (1070 . 3))) nil)

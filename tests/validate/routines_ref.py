@@ -177,7 +177,12 @@ def inserts(path):
         )
     print(
         json.dumps(
-            {"audit_errors": len(auditor.errors), "audit_fixes": len(auditor.fixes), "inserts": out}
+            {
+                "audit_errors": len(auditor.errors),
+                "audit_fixes": len(auditor.fixes),
+                "inserts": out,
+                "lines": [list(l.dxf.start) + list(l.dxf.end) for l in doc.modelspace().query("LINE")],
+            }
         )
     )
 

@@ -1,7 +1,7 @@
 //! CHPROP, CHANGE (its Properties option), EXPLODE (polylines into lines and arcs), FILLET
-//! (two lines) and OFFSET (by a distance or through a point, on the side a point gives),
+//! (two lines; arcs are in fillet.rs) and OFFSET (by a distance or through a point, on the side a point gives),
 //! with AutoCAD's prompts in their order. What lispcad does not model (per-entity line types, weights and
-//! thickness; exploding blocks) is a clear error naming it.
+//! thickness) is a clear error naming it.
 
 use glam::{DVec2, DVec3};
 
@@ -175,6 +175,9 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
     let Some(e) = d.get(h).cloned() else {
         return Ok(());
     };
+    if matches!(&e.kind, EntityKind::Unmodelled { dxf_type } if dxf_type == "INSERT") {
+        return super::insert::explode_insert(it, h);
+    }
     let (pts, bulges, closed, ocs, z) = match &e.kind {
         EntityKind::LwPolyline {
             points,
@@ -216,7 +219,7 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
             return Err(cmd_err(
                 "EXPLODE",
                 format!(
-                    "lispcad explodes polylines only, not {} (block references are kept as read)",
+                    "lispcad explodes polylines and block references, not {}",
                     other.type_name()
                 ),
             ))
@@ -328,8 +331,8 @@ fn offset_toward(it: &mut Interp, h: u64, dist: Option<f64>, p: DVec3) -> Result
     Ok(())
 }
 
-/// FILLET: "R" sets FILLETRAD; two lines (entity names, or `(ename point)` lists whose point
-/// says which part of each line to keep) are trimmed or extended to the tangent points of
+/// FILLET: "R" sets FILLETRAD; two lines or arcs (entity names, or `(ename point)` lists whose
+/// point says which part of each to keep) are trimmed or extended to the tangent points of
 /// an arc of that radius (to their corner for radius 0), and the arc is added.
 pub(crate) enum FilletCmd {
     First,
@@ -383,7 +386,17 @@ impl FilletCmd {
                     let r = it
                         .ext::<crate::builtins::system::SysVars>()
                         .real("FILLETRAD");
-                    fillet_lines(it, (h1, p1), (h2, p2), r)?;
+                    let both_lines = [h1, h2].iter().all(|h| {
+                        matches!(
+                            it.ext::<Drawing>().get(*h).map(|e| &e.kind),
+                            Some(EntityKind::Line { .. })
+                        )
+                    });
+                    if both_lines {
+                        fillet_lines(it, (h1, p1), (h2, p2), r)?;
+                    } else {
+                        super::fillet::fillet_curves(it, (h1, p1), (h2, p2), r)?;
+                    }
                     return Ok(Step::Done);
                 }
                 None => return Err(unexpected("FILLET", "a second object", input)),

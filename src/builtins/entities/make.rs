@@ -15,6 +15,7 @@ use crate::geom::frame::Ocs;
 use crate::geom::quadspline::QuadSpline;
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::{Interp, Value};
+use crate::output::record::TagList;
 use crate::output::{Entity, EntityKind};
 
 /// A POLYLINE whose VERTEX entities are still arriving.
@@ -27,6 +28,8 @@ pub struct PendingPolyline {
     normal: DVec3,
     points: Vec<DVec3>,
     bulges: Vec<f64>,
+    /// The header's extended data, given to the polyline when its SEQEND makes it.
+    xdata: Option<Vec<(String, TagList)>>,
 }
 
 /// AutoCAD entity types lispcad does not model: `entmake` says so instead of returning a
@@ -322,7 +325,13 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
             it.ext::<EntityState>().pending_polyline = None;
             false
         }
-        "POLYLINE" => polyline_header(it, &g)?,
+        "POLYLINE" => {
+            let apps = match xdata {
+                super::objects::XdataIn::Apps(apps) => Some(apps),
+                _ => None,
+            };
+            polyline_header(it, &g, apps)?
+        }
         "LAYER" => super::tables::make_layer(it, &g)?,
         "APPID" => super::objects::make_appid(it, &g)?,
         "XRECORD" | "DICTIONARY" => super::objects::make_object(it, &ty, &g)?.is_some(),
@@ -344,7 +353,11 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(if made { list.clone() } else { Value::Nil })
 }
 
-fn polyline_header(it: &mut Interp, g: &Groups) -> Result<bool, Exn> {
+fn polyline_header(
+    it: &mut Interp,
+    g: &Groups,
+    xdata: Option<Vec<(String, TagList)>>,
+) -> Result<bool, Exn> {
     let flags = g.int(it, 70)?.unwrap_or(0);
     if flags & (16 | 64) != 0 {
         return Err(err(
@@ -371,6 +384,7 @@ fn polyline_header(it: &mut Interp, g: &Groups) -> Result<bool, Exn> {
         normal,
         points: Vec::new(),
         bulges: Vec::new(),
+        xdata,
     });
     Ok(true)
 }
@@ -414,7 +428,13 @@ fn seqend(it: &mut Interp) -> Result<bool, Exn> {
             closed: pl.closed,
         },
     };
-    Ok(drawing(it).add(e).is_ok())
+    let Ok(h) = drawing(it).add(e) else {
+        return Ok(false);
+    };
+    if let Some(apps) = pl.xdata {
+        super::objects::apply_xdata(it, h, apps);
+    }
+    Ok(true)
 }
 
 /// `entmod`: the groups of the list override the entity's current ones; the type cannot change.
