@@ -188,9 +188,8 @@ pub fn definition(it: &mut Interp, doc: &Document, uri: &Uri, pos: Position) -> 
     let (_, _, word) = analysis::word_at(doc.text(), offset)?;
     let here = |r| Some(Location::new(uri.clone(), doc.range(r)));
     let bound = vars::binding(it, doc, offset, word);
-    match bound {
-        Some(Binding::Param { at, .. } | Binding::Loop { at, .. }) => return here(at),
-        _ => {}
+    if let Some(Binding::Param { at, .. } | Binding::Loop { at, .. }) = bound {
+        return here(at);
     }
     let Some(f) = find_defun(it, doc, word) else {
         let Some(Binding::Global { sets }) = bound else {
