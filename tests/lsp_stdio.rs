@@ -1,6 +1,7 @@
 //! `lispcad lsp` driven over pipes with real JSON-RPC framing, as an editor would: initialize,
 //! open a broken file and one leaking a global, hover, completion, definition across a `load`,
-//! change, symbols, folding, shutdown and exit.
+//! change, symbols, folding, shutdown and exit; then range edits (incremental sync) with hover on
+//! variables and definitions following the moved text.
 
 use std::io::{BufRead, BufReader, Write};
 use std::path::Path;
@@ -150,7 +151,8 @@ fn an_editor_session_over_json_rpc() {
     assert_eq!(caps["definitionProvider"], true);
     assert_eq!(caps["documentSymbolProvider"], true);
     assert_eq!(caps["foldingRangeProvider"], true);
-    assert_eq!(caps["textDocumentSync"], 1);
+    // Incremental sync: changes come as range edits.
+    assert_eq!(caps["textDocumentSync"], 2);
     assert_eq!(init["serverInfo"]["name"], "lispcad");
     c.notify("initialized", json!({}));
 
@@ -264,4 +266,123 @@ fn an_editor_session_over_json_rpc() {
     c.notify("exit", Value::Null);
     let status = c.child.wait().unwrap();
     assert!(status.success(), "{status:?}");
+}
+
+/// The Markdown of a hover answer (empty when there is none).
+fn hover_text(c: &mut Client, uri: &str, line: u32, character: u32) -> String {
+    let h = c.request("textDocument/hover", at(uri, line, character));
+    h["contents"]["value"]
+        .as_str()
+        .unwrap_or_default()
+        .to_string()
+}
+
+fn edit(c: &mut Client, uri: &str, version: i64, range: [u32; 4], text: &str) {
+    let [l0, c0, l1, c1] = range;
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": uri, "version": version}, "contentChanges": [{
+            "range": {"start": {"line": l0, "character": c0}, "end": {"line": l1, "character": c1}},
+            "text": text}]}),
+    );
+}
+
+fn messages(diags: &[Value]) -> Vec<(u64, String)> {
+    diags
+        .iter()
+        .map(|d| {
+            let line = d["range"]["start"]["line"].as_u64().unwrap();
+            (line, d["message"].as_str().unwrap().to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn range_edits_keep_diagnostics_hover_and_definition_right() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().canonicalize().unwrap();
+    let text = ";; Area of a rectangle.\n(defun area (w h / total)\n  (setq total (* w h))\n  (setq last-area total))\n(setq count 0)\n(foreach p '(1 2) (area p count))\n";
+    let main = uri(&d.join("main.lsp"));
+    let mut c = Client::start(&d);
+    c.request(
+        "initialize",
+        json!({"processId": null, "rootUri": uri(&d), "capabilities": {}}),
+    );
+    c.notify("initialized", json!({}));
+    open(&mut c, &main, text);
+    let leak = "setq of LAST-AREA in AREA: LAST-AREA is neither a parameter nor a declared local, so it leaks into the global scope (add it after / in the argument list)";
+    assert_eq!(messages(&c.diagnostics(&main)), [(3, leak.to_string())]);
+
+    // Variables: a parameter, a declared local, globals set in a defun and at top level, a
+    // loop variable.
+    assert_eq!(
+        hover_text(&mut c, &main, 2, 17),
+        "`W`: a parameter of `AREA`\n\n```lisp\n(w h / total)\n```"
+    );
+    assert_eq!(
+        hover_text(&mut c, &main, 2, 9),
+        "`TOTAL`: a local variable of `AREA`, declared after `/`\n\n```lisp\n(w h / total)\n```"
+    );
+    assert_eq!(
+        hover_text(&mut c, &main, 3, 10),
+        "`LAST-AREA`: a global variable, set by `setq`\n- line 4 in `AREA`"
+    );
+    assert_eq!(
+        hover_text(&mut c, &main, 5, 27),
+        "`COUNT`: a global variable, set by `setq`\n- line 5 (top level)"
+    );
+    assert_eq!(
+        hover_text(&mut c, &main, 5, 24),
+        "`P`: the variable of a `foreach`"
+    );
+    // Definition of a parameter: where the argument list names it; of a global: its setq.
+    let def = c.request("textDocument/definition", at(&main, 2, 19));
+    assert_eq!(
+        def["range"],
+        json!({"start": {"line": 1, "character": 15}, "end": {"line": 1, "character": 16}})
+    );
+    let def = c.request("textDocument/definition", at(&main, 5, 27));
+    assert_eq!(def["range"]["start"], json!({"line": 4, "character": 6}));
+
+    // Two lines inserted above: diagnostics, hover and definition follow the text.
+    edit(
+        &mut c,
+        &main,
+        2,
+        [0, 0, 0, 0],
+        ";; Squares.\n(defun sq (x) (* x x))\n",
+    );
+    assert_eq!(messages(&c.diagnostics(&main)), [(5, leak.to_string())]);
+    assert!(hover_text(&mut c, &main, 4, 17).starts_with("`W`: a parameter of `AREA`"));
+    assert!(hover_text(&mut c, &main, 1, 17).starts_with("`X`: a parameter of `SQ`"));
+    // AREA is also a builtin: the file's defun replaces it, so hover and definition show it.
+    let def = c.request("textDocument/definition", at(&main, 7, 21));
+    assert_eq!(
+        def["range"],
+        json!({"start": {"line": 3, "character": 7}, "end": {"line": 3, "character": 11}})
+    );
+    assert!(hover_text(&mut c, &main, 7, 21)
+        .starts_with("```lisp\n(AREA W H / TOTAL)\n```\nArea of a rectangle."),);
+
+    // Declaring LAST-AREA local: the leak goes, and hover calls it a local.
+    edit(&mut c, &main, 3, [3, 24, 3, 24], " last-area");
+    assert_eq!(messages(&c.diagnostics(&main)), []);
+    assert!(hover_text(&mut c, &main, 5, 10).starts_with("`LAST-AREA`: a local variable of `AREA`"));
+
+    // A `)` deleted: the reader's error, at the `(` left open; restored: clean again.
+    edit(&mut c, &main, 4, [5, 24, 5, 25], "");
+    let diags = c.diagnostics(&main);
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(
+        diags[0]["range"]["start"],
+        json!({"line": 3, "character": 0})
+    );
+    assert_eq!(hover_text(&mut c, &main, 4, 17), "");
+    edit(&mut c, &main, 5, [5, 24, 5, 24], ")");
+    assert_eq!(messages(&c.diagnostics(&main)), []);
+    assert!(hover_text(&mut c, &main, 4, 17).starts_with("`W`: a parameter of `AREA`"));
+
+    c.request("shutdown", Value::Null);
+    c.notify("exit", Value::Null);
+    assert!(c.child.wait().unwrap().success());
 }

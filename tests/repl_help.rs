@@ -115,11 +115,33 @@ fn inspect_shows_the_properties_that_apply() {
         !out.contains("  length          50"),
         "no curve length for a surface: {out}"
     );
+    // An entity: one group per line, then its curve's properties.
+    let entity = out.split("  type            ENAME\n").nth(1).expect(&out);
     assert!(
-        out.contains("  type            ENAME\n  entity          ((-1 . <Entity name:"),
+        entity.starts_with("  entity\n    (-1 . <Entity name: "),
         "{out}"
     );
-    assert!(out.contains("(0 . \"LINE\")"), "{out}");
+    assert!(entity.contains("\n    (0 . \"LINE\")\n"), "{out}");
+    assert!(
+        entity.contains("\n    (10 0.0 0.0 0.0)\n    (11 3.0 4.0 0.0)\n"),
+        "{out}"
+    );
+    assert!(
+        entity.ends_with("  length          5.0\n  closed          nil\n  start           (0.0 0.0 0.0)\n  end             (3.0 4.0 0.0)\n"),
+        "{out}"
+    );
+}
+
+#[test]
+fn inspect_and_apropos_without_an_argument_say_how_to_use_them() {
+    let (out, err) = session(&[], &[], ":inspect\n:apropos\n:inspect   \n");
+    assert_eq!(out, "", "nothing evaluated, nothing listed");
+    assert_eq!(
+        err,
+        "usage: :inspect EXPR (the properties of a curve, surface, mesh, entity or list)\n\
+         usage: :apropos TEXT (the functions whose names contain TEXT)\n\
+         usage: :inspect EXPR (the properties of a curve, surface, mesh, entity or list)\n"
+    );
 }
 
 #[test]

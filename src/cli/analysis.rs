@@ -7,7 +7,9 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use crate::lang::lint::{defined_functions, lint_with, loaded_files, Severity};
+use crate::lang::lint::{
+    defined_functions, form_facts, loaded_files, resolve, FormFacts, Severity,
+};
 use crate::lang::reader::{read_source, Parsed, ReadError};
 use crate::lang::symbols::{S_DEFUN, S_DEFUN_Q};
 use crate::lang::value::Sym;
@@ -190,9 +192,20 @@ pub fn loaded(
     parsed: &Parsed,
     seen: &mut HashSet<PathBuf>,
 ) -> Vec<Loaded> {
+    let names = loaded_files(parsed, &it.syms);
+    loaded_names(it, dir, &names, seen)
+}
+
+/// As `loaded`, from the file names a source's `load` forms give.
+pub fn loaded_names(
+    it: &mut Interp,
+    dir: &Path,
+    names: &[String],
+    seen: &mut HashSet<PathBuf>,
+) -> Vec<Loaded> {
     let mut out = Vec::new();
-    for name in loaded_files(parsed, &it.syms) {
-        let mut p = dir.join(&name);
+    for name in names {
+        let mut p = dir.join(name);
         if p.extension().is_none() {
             p.set_extension("lsp");
         }
@@ -233,23 +246,48 @@ pub fn findings(
 ) -> Vec<Finding> {
     let parsed = match parsed {
         Ok(p) => p,
-        Err(e) => {
-            return vec![Finding {
-                severity: Severity::Error,
-                message: e.message.clone(),
-                range: Some((e.start, e.end.max(e.start).min(text.len()))),
-            }]
-        }
+        Err(e) => return vec![read_error_finding(text, e)],
     };
+    let facts: Vec<FormFacts> = parsed
+        .forms
+        .iter()
+        .map(|(f, span)| form_facts(it, &parsed.spans, f, *span))
+        .collect();
+    let forms: Vec<(u32, &FormFacts)> = facts.iter().map(|f| (0, f)).collect();
+    lint_findings(it, &forms, dir, self_path, known)
+}
+
+/// A reader error as a finding, its range clamped to the text.
+pub fn read_error_finding(text: &str, e: &ReadError) -> Finding {
+    Finding {
+        severity: Severity::Error,
+        message: e.message.clone(),
+        range: Some((e.start, e.end.max(e.start).min(text.len()))),
+    }
+}
+
+/// The lints of a text from the facts of its top-level forms (each with the byte offset it was
+/// read at), the files they load resolved from `dir`; `known` as in `findings`.
+pub fn lint_findings(
+    it: &mut Interp,
+    forms: &[(u32, &FormFacts)],
+    dir: &Path,
+    self_path: Option<&Path>,
+    known: &HashSet<Sym>,
+) -> Vec<Finding> {
     let mut seen = HashSet::new();
     if let Some(c) = self_path.and_then(|p| p.canonicalize().ok()) {
         seen.insert(c);
     }
+    let names: Vec<String> = forms
+        .iter()
+        .flat_map(|(_, f)| f.loads.iter().cloned())
+        .collect();
     let mut known = known.clone();
-    for l in loaded(it, dir, parsed, &mut seen) {
+    for l in loaded_names(it, dir, &names, &mut seen) {
         known.extend(l.functions);
     }
-    lint_with(it, parsed, &known)
+    resolve(it, forms, &known)
         .into_iter()
         .map(|l| Finding {
             severity: l.severity,

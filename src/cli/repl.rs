@@ -408,6 +408,10 @@ fn help_or_suggestion(it: &mut Interp, name: &str) -> String {
 /// `:apropos TEXT`: every builtin and user function whose name contains TEXT, with its help's
 /// first line.
 fn apropos(it: &mut Interp, text: &str) {
+    if text.is_empty() {
+        eprintln!("usage: :apropos TEXT (the functions whose names contain TEXT)");
+        return;
+    }
     let want = text.to_lowercase();
     let mut names: Vec<String> = function_names(it)
         .map(str::to_lowercase)
@@ -423,12 +427,24 @@ fn apropos(it: &mut Interp, text: &str) {
         let mut lines = help.lines();
         let sig = lines.next().unwrap_or("");
         let doc = lines.next().unwrap_or("").trim();
-        println!("{sig:<40} {doc}");
+        // A long signature keeps the descriptions in one column: its own line.
+        if sig.chars().count() < 40 {
+            println!("{sig:<40} {doc}");
+        } else {
+            println!("{sig}\n{:41}{doc}", "");
+        }
     }
 }
 
-/// `:inspect EXPR`: the value, its type, and every property query that applies to it.
+/// `:inspect EXPR`: the value, its type, and every property query that applies to it; an
+/// entity's data one group per line, and its curve properties when it is a curve.
 fn inspect(it: &mut Interp, expr: &str) {
+    if expr.trim().is_empty() {
+        eprintln!(
+            "usage: :inspect EXPR (the properties of a curve, surface, mesh, entity or list)"
+        );
+        return;
+    }
     let v = match it.eval_source("<inspect>", expr) {
         Ok(v) => v,
         Err(e) => {
@@ -440,7 +456,7 @@ fn inspect(it: &mut Interp, expr: &str) {
     println!("{}", it.prin1_string(&v));
     let slot = "LISPCAD-INSPECTED";
     it.set_global(slot, v);
-    const PROPERTIES: [(&str, &str); 11] = [
+    const PROPERTIES: [(&str, &str); 10] = [
         ("type", "(type ~)"),
         ("length", "(curve-length ~)"),
         ("closed", "(curve-closed-p ~)"),
@@ -450,20 +466,45 @@ fn inspect(it: &mut Interp, expr: &str) {
         ("surface area", "(surface-area ~)"),
         ("bounding box", "(bbox ~)"),
         ("boundary loops", "(length (surface-boundary ~))"),
-        ("entity", "(entget ~)"),
         ("length (list)", "(if (listp ~) (length ~) (exit))"),
     ];
-    for (label, q) in PROPERTIES {
-        let q = q.replace('~', slot);
-        // Queries that do not apply fail; they are skipped quietly.
-        let budget = it.ext::<ReplOptions>().0.max_steps;
+    // An entity's curve, through the ActiveX curve functions that take entity names.
+    const ENTITY_CURVE: [(&str, &str); 5] = [
+        (
+            "length",
+            "(vlax-curve-getDistAtParam ~ (vlax-curve-getEndParam ~))",
+        ),
+        ("closed", "(vlax-curve-isClosed ~)"),
+        ("start", "(vlax-curve-getStartPoint ~)"),
+        ("end", "(vlax-curve-getEndPoint ~)"),
+        (
+            "area",
+            "(if (vlax-curve-isClosed ~) (vlax-curve-getArea ~) (exit))",
+        ),
+    ];
+    let budget = options(it).max_steps;
+    // Queries that do not apply fail; they are skipped quietly.
+    let query = |it: &mut Interp, q: &str| {
         it.set_max_steps(budget.or(Some(10_000_000)));
-        if let Ok(r) = it.eval_source("<inspect>", &q) {
+        it.eval_source("<inspect>", &q.replace('~', slot)).ok()
+    };
+    for (label, q) in PROPERTIES {
+        if let Some(r) = query(it, q) {
             println!("  {label:<15} {}", it.prin1_string(&r));
         }
     }
+    if let Some(data) = query(it, "(entget ~)") {
+        println!("  entity");
+        for group in data.iter() {
+            println!("    {}", it.prin1_string(group));
+        }
+        for (label, q) in ENTITY_CURVE {
+            if let Some(r) = query(it, q) {
+                println!("  {label:<15} {}", it.prin1_string(&r));
+            }
+        }
+    }
     it.set_global(slot, Value::Nil);
-    let budget = options(it).max_steps;
     it.set_max_steps(budget);
 }
 

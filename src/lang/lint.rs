@@ -4,7 +4,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::error::Span;
-use super::reader::Parsed;
+use super::reader::{Parsed, SpanMap};
 use super::symbols::*;
 use super::value::{Sym, Value};
 use super::Interp;
@@ -22,15 +22,42 @@ pub struct Lint {
     pub span: Option<Span>,
 }
 
-struct Ctx<'a> {
-    it: &'a Interp,
-    parsed: &'a Parsed,
-    defined: HashSet<Sym>,
-    /// Parameter counts of the file's defuns; None when a name is defined with two counts.
-    arity: HashMap<Sym, Option<usize>>,
-    /// (function, symbol) leaks already reported: one warning per symbol per defun.
-    leaked: HashSet<(Sym, Sym)>,
-    out: Vec<Lint>,
+/// A function a form defines, in source order: `defun` with its parameter count, or `setq` of
+/// a lambda (whose arity is not tracked: the name may be set to other lambdas).
+#[derive(Clone, Debug)]
+struct Def {
+    name: Sym,
+    params: Option<usize>,
+}
+
+/// A finding-to-be of one form, decided once the whole file's functions are known.
+#[derive(Clone, Debug)]
+enum Event {
+    /// A call of `f` with `n` arguments; `in_scope` when `f` is a parameter or local there.
+    Call {
+        f: Sym,
+        n: usize,
+        in_scope: bool,
+        span: Option<Span>,
+    },
+    /// A `setq` of `sym` inside `defun` that binds it nowhere.
+    Leak {
+        defun: Sym,
+        sym: Sym,
+        span: Option<Span>,
+    },
+}
+
+/// What the lints need to know of one top-level form, read on its own: the functions it
+/// defines, its calls and leaking `setq`s in walk order, the files it loads. The whole-file
+/// lints (undefined functions, arities, one leak warning per symbol and function) are decided
+/// by `resolve` from these, so an editor re-reads and re-walks only the forms an edit touched.
+#[derive(Clone, Debug, Default)]
+pub struct FormFacts {
+    defs: Vec<Def>,
+    events: Vec<Event>,
+    /// Literal file names of `(load "name" ...)` forms in it.
+    pub loads: Vec<String>,
 }
 
 /// Lints every form of a parsed source, against the builtins of `it`.
@@ -38,48 +65,89 @@ pub fn lint(it: &Interp, parsed: &Parsed) -> Vec<Lint> {
     lint_with(it, parsed, &HashSet::new())
 }
 
+/// The facts of each form of a parsed source, in order.
+fn all_facts(it: &Interp, parsed: &Parsed) -> Vec<FormFacts> {
+    parsed
+        .forms
+        .iter()
+        .map(|(f, span)| form_facts(it, &parsed.spans, f, *span))
+        .collect()
+}
+
 /// The functions a source defines (`defun`, `defun-q`, `setq` of a lambda), for linting the
 /// files that use them.
 pub fn defined_functions(parsed: &Parsed) -> HashSet<Sym> {
-    let mut defined = HashSet::new();
-    let mut arity = HashMap::new();
+    let mut defs = Vec::new();
     for (f, _) in &parsed.forms {
-        collect_defuns(f, &mut defined, &mut arity, 0);
+        collect_defuns(f, &mut defs, 0);
     }
-    defined
+    defs.into_iter().map(|d| d.name).collect()
 }
 
 /// The literal file names of `(load "name" ...)` forms anywhere in a source.
 pub fn loaded_files(parsed: &Parsed, syms: &super::symbols::SymbolTable) -> Vec<String> {
-    fn walk(v: &Value, load: Option<Sym>, out: &mut Vec<String>, depth: usize) {
-        let Value::Cons(c) = v else { return };
-        if depth > 200 {
-            return;
-        }
-        if load.is_some() && c.car.as_sym() == load {
-            if let Some(name) = c.cdr.car().as_str() {
-                out.push(name.to_string());
-            }
-        }
-        for x in v.iter() {
-            walk(x, load, out, depth + 1);
-        }
-    }
     let load = syms.lookup("LOAD");
     let mut out = Vec::new();
     for (f, _) in &parsed.forms {
-        walk(f, load, &mut out, 0);
+        collect_loads(f, load, &mut out, 0);
     }
     out
+}
+
+fn collect_loads(v: &Value, load: Option<Sym>, out: &mut Vec<String>, depth: usize) {
+    let Value::Cons(c) = v else { return };
+    if depth > 200 {
+        return;
+    }
+    if load.is_some() && c.car.as_sym() == load {
+        if let Some(name) = c.cdr.car().as_str() {
+            out.push(name.to_string());
+        }
+    }
+    for x in v.iter() {
+        collect_loads(x, load, out, depth + 1);
+    }
 }
 
 /// Lints a source knowing that `known` functions are defined elsewhere (files checked together,
 /// files it loads).
 pub fn lint_with(it: &Interp, parsed: &Parsed, known: &HashSet<Sym>) -> Vec<Lint> {
+    let facts = all_facts(it, parsed);
+    let forms: Vec<(u32, &FormFacts)> = facts.iter().map(|f| (0, f)).collect();
+    resolve(it, &forms, known)
+}
+
+/// The facts of one top-level form; `spans` holds the spans of its lists, `span` its own.
+pub fn form_facts(it: &Interp, spans: &SpanMap, form: &Value, span: Span) -> FormFacts {
+    let mut cx = Walk {
+        it,
+        spans,
+        facts: FormFacts::default(),
+    };
+    collect_defuns(form, &mut cx.facts.defs, 0);
+    collect_loads(form, it.syms.lookup("LOAD"), &mut cx.facts.loads, 0);
+    cx.walk(form, &mut Vec::new(), None, Some(span), 0);
+    cx.facts
+}
+
+/// The lints of a file from the facts of its forms, in order, each with the byte offset to add
+/// to its spans (where that form was read from); `known` as in `lint_with`.
+pub fn resolve(it: &Interp, forms: &[(u32, &FormFacts)], known: &HashSet<Sym>) -> Vec<Lint> {
     let mut defined = known.clone();
-    let mut arity = HashMap::new();
-    for (f, _) in &parsed.forms {
-        collect_defuns(f, &mut defined, &mut arity, 0);
+    let mut arity: HashMap<Sym, Option<usize>> = HashMap::new();
+    for d in forms.iter().flat_map(|(_, f)| &f.defs) {
+        defined.insert(d.name);
+        match d.params {
+            Some(p) => {
+                let e = arity.entry(d.name).or_insert(Some(p));
+                if *e != Some(p) {
+                    *e = None;
+                }
+            }
+            None => {
+                arity.insert(d.name, None);
+            }
+        }
     }
     // A function also defined in another file may have another parameter list there.
     for s in known {
@@ -87,33 +155,43 @@ pub fn lint_with(it: &Interp, parsed: &Parsed, known: &HashSet<Sym>) -> Vec<Lint
             arity.insert(*s, None);
         }
     }
-    let mut cx = Ctx {
+    let mut cx = Resolve {
         it,
-        parsed,
         defined,
         arity,
         leaked: HashSet::new(),
         out: Vec::new(),
     };
-    for (f, span) in &parsed.forms {
-        cx.walk(f, &mut Vec::new(), None, Some(*span), 0);
+    for (shift, f) in forms {
+        let at = |span: &Option<Span>| {
+            span.map(|s| Span {
+                src: s.src,
+                start: s.start + shift,
+                end: s.end + shift,
+            })
+        };
+        for e in &f.events {
+            match e {
+                Event::Call {
+                    f,
+                    n,
+                    in_scope,
+                    span,
+                } => cx.check_call(*f, *n, *in_scope, at(span)),
+                Event::Leak { defun, sym, span } => cx.leak(*defun, *sym, at(span)),
+            }
+        }
     }
     cx.out
 }
 
-fn collect_defuns(
-    f: &Value,
-    out: &mut HashSet<Sym>,
-    arity: &mut HashMap<Sym, Option<usize>>,
-    depth: usize,
-) {
+fn collect_defuns(f: &Value, out: &mut Vec<Def>, depth: usize) {
     if depth > 200 {
         return;
     }
     if let Value::Cons(c) = f {
         if matches!(c.car.as_sym(), Some(S_DEFUN | S_DEFUN_Q)) {
             if let Some(n) = c.cdr.car().as_sym() {
-                out.insert(n);
                 let params = c
                     .cdr
                     .cdr()
@@ -121,10 +199,10 @@ fn collect_defuns(
                     .iter()
                     .take_while(|p| p.as_sym() != Some(S_SLASH))
                     .count();
-                let e = arity.entry(n).or_insert(Some(params));
-                if *e != Some(params) {
-                    *e = None;
-                }
+                out.push(Def {
+                    name: n,
+                    params: Some(params),
+                });
             }
         }
         // (setq name (lambda ...)) or (setq name (function (lambda ...))) defines name too.
@@ -137,9 +215,10 @@ fn collect_defuns(
                         || head == Some(S_FUNCTION)
                             && v.cdr().car().car().as_sym() == Some(S_LAMBDA);
                     if is_fn {
-                        out.insert(*n);
-                        // Its arity is not tracked: the name may be set to other lambdas.
-                        arity.insert(*n, None);
+                        out.push(Def {
+                            name: *n,
+                            params: None,
+                        });
                     }
                 }
             }
@@ -148,7 +227,7 @@ fn collect_defuns(
             return;
         }
         for x in f.iter() {
-            collect_defuns(x, out, arity, depth + 1);
+            collect_defuns(x, out, depth + 1);
         }
     }
 }
@@ -166,21 +245,14 @@ fn arglist_syms(v: &Value) -> Vec<Sym> {
         .collect()
 }
 
-impl Ctx<'_> {
-    /// The function name nearest to a misspelt one: the file's defuns and the builtins.
-    fn suggest(&self, name: &str) -> Option<String> {
-        let own = self.defined.iter().map(|s| self.it.syms.name(*s));
-        nearest(name, own.chain(function_names(self.it))).map(str::to_uppercase)
-    }
+/// The walk of one form, recording its events.
+struct Walk<'a> {
+    it: &'a Interp,
+    spans: &'a SpanMap,
+    facts: FormFacts,
+}
 
-    fn push(&mut self, severity: Severity, message: String, span: Option<Span>) {
-        self.out.push(Lint {
-            severity,
-            message,
-            span,
-        });
-    }
-
+impl Walk<'_> {
     fn walk(
         &mut self,
         form: &Value,
@@ -193,7 +265,7 @@ impl Ctx<'_> {
         if depth > 500 {
             return;
         }
-        let span = self.parsed.spans.get(form).or(outer);
+        let span = self.spans.get(form).or(outer);
         let args: Vec<&Value> = c.cdr.iter().collect();
         let Some(head) = c.car.as_sym() else {
             for x in form.iter() {
@@ -220,16 +292,12 @@ impl Ctx<'_> {
                 for (i, x) in args.iter().enumerate() {
                     if i % 2 == 0 {
                         if let (Some(s), Some(f)) = (x.as_sym(), defun) {
-                            if !scope.contains(&s)
-                                && !is_earmuffed(self.it.syms.name(s))
-                                && self.leaked.insert((f, s))
-                            {
-                                let (sn, fname) = (self.it.syms.name(s), self.it.syms.name(f));
-                                self.push(
-                                    Severity::Warning,
-                                    format!("setq of {sn} in {fname}: {sn} is neither a parameter nor a declared local, so it leaks into the global scope (add it after / in the argument list)"),
+                            if !scope.contains(&s) && !is_earmuffed(self.it.syms.name(s)) {
+                                self.facts.events.push(Event::Leak {
+                                    defun: f,
+                                    sym: s,
                                     span,
-                                );
+                                });
                             }
                         }
                     } else {
@@ -260,15 +328,58 @@ impl Ctx<'_> {
                 }
             }
             _ => {
-                self.check_call(head, args.len(), scope, span);
+                self.facts.events.push(Event::Call {
+                    f: head,
+                    n: args.len(),
+                    in_scope: scope.contains(&head),
+                    span,
+                });
                 for x in &args {
                     self.walk(x, scope, defun, span, depth + 1);
                 }
             }
         }
     }
+}
 
-    fn check_call(&mut self, f: Sym, n: usize, scope: &[Sym], span: Option<Span>) {
+/// The whole-file state the events are decided against.
+struct Resolve<'a> {
+    it: &'a Interp,
+    defined: HashSet<Sym>,
+    /// Parameter counts of the file's defuns; None when a name is defined with two counts.
+    arity: HashMap<Sym, Option<usize>>,
+    /// (function, symbol) leaks already reported: one warning per symbol per defun.
+    leaked: HashSet<(Sym, Sym)>,
+    out: Vec<Lint>,
+}
+
+impl Resolve<'_> {
+    /// The function name nearest to a misspelt one: the file's defuns and the builtins.
+    fn suggest(&self, name: &str) -> Option<String> {
+        let own = self.defined.iter().map(|s| self.it.syms.name(*s));
+        nearest(name, own.chain(function_names(self.it))).map(str::to_uppercase)
+    }
+
+    fn push(&mut self, severity: Severity, message: String, span: Option<Span>) {
+        self.out.push(Lint {
+            severity,
+            message,
+            span,
+        });
+    }
+
+    fn leak(&mut self, f: Sym, s: Sym, span: Option<Span>) {
+        if self.leaked.insert((f, s)) {
+            let (sn, fname) = (self.it.syms.name(s), self.it.syms.name(f));
+            self.push(
+                Severity::Warning,
+                format!("setq of {sn} in {fname}: {sn} is neither a parameter nor a declared local, so it leaks into the global scope (add it after / in the argument list)"),
+                span,
+            );
+        }
+    }
+
+    fn check_call(&mut self, f: Sym, n: usize, in_scope: bool, span: Option<Span>) {
         let name = self.it.syms.name(f).to_string();
         match &self.it.values.get(f.idx()) {
             Some(Value::Subr(b)) if !self.defined.contains(&f) => {
@@ -306,7 +417,7 @@ impl Ctx<'_> {
                 }
             }
             _ => {
-                if !self.defined.contains(&f) && !scope.contains(&f) {
+                if !in_scope {
                     let hint = self
                         .suggest(&name)
                         .map(|s| format!("; did you mean {s}?"))

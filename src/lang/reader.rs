@@ -195,13 +195,17 @@ pub fn read_one(text: &str, syms: &mut SymbolTable) -> Result<Option<(Value, usi
     }
 }
 
+/// The message of a text the grammar does not match. `read_source` matches the whole text
+/// before building values, so this error wins over any found while building.
+pub const GRAMMAR_ERROR: &str = "malformed input";
+
 fn pest_error(e: pest::error::Error<Rule>) -> ReadError {
     let (start, end) = match e.location {
         pest::error::InputLocation::Pos(p) => (p, p + 1),
         pest::error::InputLocation::Span((a, b)) => (a, b.max(a + 1)),
     };
     ReadError {
-        message: "malformed input".into(),
+        message: GRAMMAR_ERROR.into(),
         start,
         end,
     }

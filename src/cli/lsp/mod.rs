@@ -2,7 +2,10 @@
 //! messages, a dispatcher by method name, and the pure functions of `features` computing each
 //! answer from the latest snapshot of a document.
 
+pub mod document;
 pub mod features;
+mod lex;
+mod vars;
 
 use std::collections::HashMap;
 
@@ -23,7 +26,7 @@ use lsp_types::{
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
-use features::Snapshot;
+use document::Document;
 
 use crate::lang::Interp;
 
@@ -41,7 +44,9 @@ pub fn lsp() -> i32 {
 
 pub fn capabilities() -> ServerCapabilities {
     ServerCapabilities {
-        text_document_sync: Some(TextDocumentSyncCapability::Kind(TextDocumentSyncKind::FULL)),
+        text_document_sync: Some(TextDocumentSyncCapability::Kind(
+            TextDocumentSyncKind::INCREMENTAL,
+        )),
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
             trigger_characters: Some(vec!["(".into()]),
@@ -75,7 +80,7 @@ fn serve() -> Result<(), Error> {
 /// The open documents and the interpreter whose symbol table and builtins the analyses use.
 struct State {
     it: Interp,
-    docs: HashMap<String, Snapshot>,
+    docs: HashMap<String, Document>,
 }
 
 fn main_loop(conn: &Connection) -> Result<(), Error> {
@@ -113,28 +118,27 @@ fn main_loop(conn: &Connection) -> Result<(), Error> {
     Ok(())
 }
 
-fn snapshot(uri: &Uri, text: String) -> Snapshot {
-    Snapshot::new(text, features::uri_to_path(uri))
-}
-
 /// Applies a document notification; the URI whose diagnostics are to be published.
 fn handle_notification(st: &mut State, n: Notification) -> Result<Option<Uri>, Error> {
     match n.method.as_str() {
         DidOpenTextDocument::METHOD => {
             let p: lsp_types::DidOpenTextDocumentParams = serde_json::from_value(n.params)?;
             let uri = p.text_document.uri;
-            st.docs
-                .insert(uri.to_string(), snapshot(&uri, p.text_document.text));
+            let doc = Document::new(
+                &mut st.it,
+                p.text_document.text,
+                features::uri_to_path(&uri),
+            );
+            st.docs.insert(uri.to_string(), doc);
             Ok(Some(uri))
         }
         DidChangeTextDocument::METHOD => {
             let p: lsp_types::DidChangeTextDocumentParams = serde_json::from_value(n.params)?;
             let uri = p.text_document.uri;
-            // Full sync: the last change holds the whole text.
-            let Some(change) = p.content_changes.into_iter().last() else {
+            let Some(doc) = st.docs.get_mut(uri.as_str()) else {
                 return Ok(None);
             };
-            st.docs.insert(uri.to_string(), snapshot(&uri, change.text));
+            doc.apply(&mut st.it, p.content_changes);
             Ok(Some(uri))
         }
         // A saved file may be one another document loads: recheck on save.
@@ -152,10 +156,10 @@ fn handle_notification(st: &mut State, n: Notification) -> Result<Option<Uri>, E
 }
 
 fn publish(conn: &Connection, st: &mut State, uri: Uri) -> Result<(), Error> {
-    let Some(snap) = st.docs.get(uri.as_str()) else {
+    let Some(doc) = st.docs.get(uri.as_str()) else {
         return Ok(());
     };
-    let diagnostics = features::diagnostics(&mut st.it, snap);
+    let diagnostics = features::diagnostics(&mut st.it, doc);
     let params = PublishDiagnosticsParams {
         uri,
         diagnostics,
@@ -194,11 +198,11 @@ fn handle_request(st: &mut State, req: Request) -> Response {
                 DocumentSymbolResponse::Nested(features::document_symbols(it, s))
             },
         ),
-        FoldingRangeRequest::METHOD => on::<FoldingRangeRequest, _, _>(
-            st,
-            req,
-            |it, s, _, _: lsp_types::FoldingRangeParams| features::folding_ranges(it, s),
-        ),
+        FoldingRangeRequest::METHOD => {
+            on::<FoldingRangeRequest, _, _>(st, req, |_, s, _, _: lsp_types::FoldingRangeParams| {
+                features::folding_ranges(s)
+            })
+        }
         m => Err((ErrorCode::MethodNotFound, format!("unhandled method {m}"))),
     };
     match result {
@@ -212,7 +216,7 @@ fn on<R, T, F>(st: &mut State, req: Request, f: F) -> Result<serde_json::Value, 
 where
     R: lsp_types::request::Request,
     T: Serialize,
-    F: FnOnce(&mut Interp, &Snapshot, &Uri, R::Params) -> T,
+    F: FnOnce(&mut Interp, &Document, &Uri, R::Params) -> T,
     R::Params: DeserializeOwned + HasDocument,
 {
     let params: R::Params = serde_json::from_value(req.params)
