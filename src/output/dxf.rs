@@ -7,6 +7,8 @@
 //! `FIRST_HANDLE`; entities keep their drawing handles; records the drawing does not number
 //! (layers, vertices, extra mesh faces) get handles above the drawing's last one.
 
+use std::sync::OnceLock;
+
 use glam::{DVec2, DVec3};
 
 use super::drawing::{is_flat, Drawing, Entity, EntityKind};
@@ -141,42 +143,11 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.int(70, insunits as i64);
     w.str(0, "ENDSEC");
 
-    // ---- CLASSES: the class-defined objects used in OBJECTS ----
-    w.str(0, "SECTION");
-    w.str(2, "CLASSES");
-    for (dxf_name, cpp_name) in [
-        ("ACDBDICTIONARYWDFLT", "AcDbDictionaryWithDefault"),
-        ("ACDBPLACEHOLDER", "AcDbPlaceHolder"),
-        ("LAYOUT", "AcDbLayout"),
-    ] {
-        w.str(0, "CLASS");
-        w.str(1, dxf_name);
-        w.str(2, cpp_name);
-        w.str(3, "ObjectDBX Classes");
-        w.int(90, 0);
-        w.int(280, 0);
-        w.int(281, 0);
-    }
-    w.str(0, "ENDSEC");
+    w.out.push_str(prepared(&CLASSES, write_classes));
 
     // ---- TABLES ----
     w.str(0, "SECTION");
     w.str(2, "TABLES");
-    let table = |w: &mut DxfWriter, name: &str, h: u64, count: usize| {
-        w.str(0, "TABLE");
-        w.str(2, name);
-        w.handle(5, h);
-        w.handle(330, 0);
-        w.str(100, "AcDbSymbolTable");
-        w.int(70, count as i64);
-    };
-    let record = |w: &mut DxfWriter, kind: &str, h: u64, owner: u64, subclass: &str| {
-        w.str(0, kind);
-        w.handle(5, h);
-        w.handle(330, owner);
-        w.str(100, "AcDbSymbolTableRecord");
-        w.str(100, subclass);
-    };
 
     table(&mut w, "VPORT", H_VPORT_TABLE, 1);
     record(
@@ -266,14 +237,75 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.str(0, "ENDTAB");
 
-    table(&mut w, "VIEW", H_VIEW_TABLE, 0);
+    w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
+    w.out.push_str(&ents.out);
+    w.out.push_str(prepared(&OBJECTS, write_objects));
+    w.out
+}
+
+fn table(w: &mut DxfWriter, name: &str, h: u64, count: usize) {
+    w.str(0, "TABLE");
+    w.str(2, name);
+    w.handle(5, h);
+    w.handle(330, 0);
+    w.str(100, "AcDbSymbolTable");
+    w.int(70, count as i64);
+}
+
+fn record(w: &mut DxfWriter, kind: &str, h: u64, owner: u64, subclass: &str) {
+    w.str(0, kind);
+    w.handle(5, h);
+    w.handle(330, owner);
+    w.str(100, "AcDbSymbolTableRecord");
+    w.str(100, subclass);
+}
+
+/// The parts of the file no drawing changes, written once per process and copied into every
+/// file after (a batch writes thousands of files with the same boilerplate). Each is written by
+/// the same group calls as the rest, so the bytes are the same as writing it in place.
+static CLASSES: OnceLock<String> = OnceLock::new();
+static TABLES_TAIL: OnceLock<String> = OnceLock::new();
+static OBJECTS: OnceLock<String> = OnceLock::new();
+
+fn prepared(cell: &'static OnceLock<String>, write: fn(&mut DxfWriter)) -> &'static str {
+    cell.get_or_init(|| {
+        let mut w = DxfWriter::new();
+        write(&mut w);
+        w.out
+    })
+}
+
+fn write_classes(w: &mut DxfWriter) {
+    // ---- CLASSES: the class-defined objects used in OBJECTS ----
+    w.str(0, "SECTION");
+    w.str(2, "CLASSES");
+    for (dxf_name, cpp_name) in [
+        ("ACDBDICTIONARYWDFLT", "AcDbDictionaryWithDefault"),
+        ("ACDBPLACEHOLDER", "AcDbPlaceHolder"),
+        ("LAYOUT", "AcDbLayout"),
+    ] {
+        w.str(0, "CLASS");
+        w.str(1, dxf_name);
+        w.str(2, cpp_name);
+        w.str(3, "ObjectDBX Classes");
+        w.int(90, 0);
+        w.int(280, 0);
+        w.int(281, 0);
+    }
+    w.str(0, "ENDSEC");
+}
+
+/// The tables after STYLE (none depends on the drawing), the BLOCKS section, and the head of
+/// the ENTITIES section.
+fn write_tables_tail(w: &mut DxfWriter) {
+    table(w, "VIEW", H_VIEW_TABLE, 0);
     w.str(0, "ENDTAB");
-    table(&mut w, "UCS", H_UCS_TABLE, 0);
+    table(w, "UCS", H_UCS_TABLE, 0);
     w.str(0, "ENDTAB");
 
-    table(&mut w, "APPID", H_APPID_TABLE, 1);
+    table(w, "APPID", H_APPID_TABLE, 1);
     record(
-        &mut w,
+        w,
         "APPID",
         H_APPID_ACAD,
         H_APPID_TABLE,
@@ -283,7 +315,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.int(70, 0);
     w.str(0, "ENDTAB");
 
-    table(&mut w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
+    table(w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
     w.str(100, "AcDbDimStyleTable");
     w.str(0, "DIMSTYLE");
     w.handle(105, H_DIMSTYLE_STANDARD);
@@ -307,13 +339,13 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.handle(340, H_STYLE_STANDARD);
     w.str(0, "ENDTAB");
 
-    table(&mut w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
+    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
     for (h, name, layout) in [
         (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
         (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
     ] {
         record(
-            &mut w,
+            w,
             "BLOCK_RECORD",
             h,
             H_BLOCK_RECORD_TABLE,
@@ -371,7 +403,10 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     // ---- ENTITIES ----
     w.str(0, "SECTION");
     w.str(2, "ENTITIES");
-    w.out.push_str(&ents.out);
+}
+
+/// The end of the ENTITIES section, the OBJECTS section and EOF.
+fn write_objects(w: &mut DxfWriter) {
     w.str(0, "ENDSEC");
 
     // ---- OBJECTS ----
@@ -389,7 +424,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         }
     };
     dict(
-        &mut w,
+        w,
         H_ROOT_DICT,
         0,
         &[
@@ -399,15 +434,15 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             ("ACAD_PLOTSTYLENAME", H_PLOTSTYLE_DICT),
         ],
     );
-    dict(&mut w, H_GROUP_DICT, H_ROOT_DICT, &[]);
+    dict(w, H_GROUP_DICT, H_ROOT_DICT, &[]);
     dict(
-        &mut w,
+        w,
         H_LAYOUT_DICT,
         H_ROOT_DICT,
         &[("Layout1", H_PAPER_LAYOUT), ("Model", H_MODEL_LAYOUT)],
     );
     dict(
-        &mut w,
+        w,
         H_MLINESTYLE_DICT,
         H_ROOT_DICT,
         &[("Standard", H_MLINESTYLE_STANDARD)],
@@ -445,11 +480,10 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         (H_MODEL_LAYOUT, "Model", 1024, 0, H_MODEL_RECORD),
         (H_PAPER_LAYOUT, "Layout1", 0, 1, H_PAPER_RECORD),
     ] {
-        write_layout(&mut w, h, name, flag, order, rec);
+        write_layout(w, h, name, flag, order, rec);
     }
     w.str(0, "ENDSEC");
     w.str(0, "EOF");
-    w.out
 }
 
 fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i64, rec: u64) {
