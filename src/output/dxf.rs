@@ -7,6 +7,8 @@
 //! `FIRST_HANDLE`; entities keep their drawing handles; records the drawing does not number
 //! (layers, vertices, extra mesh faces) get handles above the drawing's last one.
 
+use std::sync::OnceLock;
+
 use glam::{DVec2, DVec3};
 
 use super::drawing::{is_flat, Drawing, Entity, EntityKind};
@@ -151,42 +153,11 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.int(70, insunits as i64);
     w.str(0, "ENDSEC");
 
-    // ---- CLASSES: the class-defined objects used in OBJECTS ----
-    w.str(0, "SECTION");
-    w.str(2, "CLASSES");
-    for (dxf_name, cpp_name) in [
-        ("ACDBDICTIONARYWDFLT", "AcDbDictionaryWithDefault"),
-        ("ACDBPLACEHOLDER", "AcDbPlaceHolder"),
-        ("LAYOUT", "AcDbLayout"),
-    ] {
-        w.str(0, "CLASS");
-        w.str(1, dxf_name);
-        w.str(2, cpp_name);
-        w.str(3, "ObjectDBX Classes");
-        w.int(90, 0);
-        w.int(280, 0);
-        w.int(281, 0);
-    }
-    w.str(0, "ENDSEC");
+    w.out.push_str(prepared(&CLASSES, write_classes));
 
     // ---- TABLES ----
     w.str(0, "SECTION");
     w.str(2, "TABLES");
-    let table = |w: &mut DxfWriter, name: &str, h: u64, count: usize| {
-        w.str(0, "TABLE");
-        w.str(2, name);
-        w.handle(5, h);
-        w.handle(330, 0);
-        w.str(100, "AcDbSymbolTable");
-        w.int(70, count as i64);
-    };
-    let record = |w: &mut DxfWriter, kind: &str, h: u64, owner: u64, subclass: &str| {
-        w.str(0, kind);
-        w.handle(5, h);
-        w.handle(330, owner);
-        w.str(100, "AcDbSymbolTableRecord");
-        w.str(100, subclass);
-    };
 
     table(&mut w, "VPORT", H_VPORT_TABLE, 1);
     record(
@@ -276,11 +247,8 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.str(0, "ENDTAB");
 
-    table(&mut w, "VIEW", H_VIEW_TABLE, 0);
-    w.str(0, "ENDTAB");
-    table(&mut w, "UCS", H_UCS_TABLE, 0);
-    w.str(0, "ENDTAB");
-
+    w.out.push_str(prepared(&VIEW_UCS, write_view_ucs));
+    // Scripts register applications (regapp), so APPID is the drawing's own.
     table(&mut w, "APPID", H_APPID_TABLE, appids.len());
     for (name, h) in appids
         .iter()
@@ -291,8 +259,99 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         w.int(70, 0);
     }
     w.str(0, "ENDTAB");
+    w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
+    w.out.push_str(&ents.out);
 
-    table(&mut w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
+    w.str(0, "ENDSEC");
+    // ---- OBJECTS ----
+    w.str(0, "SECTION");
+    w.str(2, "OBJECTS");
+    // The root and group dictionaries are the ones scripts can add to (dictadd).
+    for h in [H_ROOT_DICT, H_GROUP_DICT] {
+        if let Some(t) = d.object(h) {
+            for (c, v) in t.iter() {
+                w.str(c as u16, v);
+            }
+        }
+    }
+    for t in d.owned_new_objects() {
+        if t.handle()
+            .is_some_and(|h| h != H_ROOT_DICT && h != H_GROUP_DICT)
+        {
+            for (c, v) in t.iter() {
+                w.str(c as u16, v);
+            }
+        }
+    }
+    w.out.push_str(prepared(&OBJECTS, write_objects));
+    w.out
+}
+
+fn table(w: &mut DxfWriter, name: &str, h: u64, count: usize) {
+    w.str(0, "TABLE");
+    w.str(2, name);
+    w.handle(5, h);
+    w.handle(330, 0);
+    w.str(100, "AcDbSymbolTable");
+    w.int(70, count as i64);
+}
+
+fn record(w: &mut DxfWriter, kind: &str, h: u64, owner: u64, subclass: &str) {
+    w.str(0, kind);
+    w.handle(5, h);
+    w.handle(330, owner);
+    w.str(100, "AcDbSymbolTableRecord");
+    w.str(100, subclass);
+}
+
+/// The parts of the file no drawing changes, written once per process and copied into every
+/// file after (a batch writes thousands of files with the same boilerplate). Each is written by
+/// the same group calls as the rest, so the bytes are the same as writing it in place.
+static CLASSES: OnceLock<String> = OnceLock::new();
+static VIEW_UCS: OnceLock<String> = OnceLock::new();
+static TABLES_TAIL: OnceLock<String> = OnceLock::new();
+static OBJECTS: OnceLock<String> = OnceLock::new();
+
+fn prepared(cell: &'static OnceLock<String>, write: fn(&mut DxfWriter)) -> &'static str {
+    cell.get_or_init(|| {
+        let mut w = DxfWriter::new();
+        write(&mut w);
+        w.out
+    })
+}
+
+fn write_classes(w: &mut DxfWriter) {
+    // ---- CLASSES: the class-defined objects used in OBJECTS ----
+    w.str(0, "SECTION");
+    w.str(2, "CLASSES");
+    for (dxf_name, cpp_name) in [
+        ("ACDBDICTIONARYWDFLT", "AcDbDictionaryWithDefault"),
+        ("ACDBPLACEHOLDER", "AcDbPlaceHolder"),
+        ("LAYOUT", "AcDbLayout"),
+    ] {
+        w.str(0, "CLASS");
+        w.str(1, dxf_name);
+        w.str(2, cpp_name);
+        w.str(3, "ObjectDBX Classes");
+        w.int(90, 0);
+        w.int(280, 0);
+        w.int(281, 0);
+    }
+    w.str(0, "ENDSEC");
+}
+
+/// The empty VIEW and UCS tables, between STYLE and APPID.
+fn write_view_ucs(w: &mut DxfWriter) {
+    table(w, "VIEW", H_VIEW_TABLE, 0);
+    w.str(0, "ENDTAB");
+    table(w, "UCS", H_UCS_TABLE, 0);
+    w.str(0, "ENDTAB");
+}
+
+/// The tables after APPID (none depends on the drawing), the BLOCKS section, and the head of
+/// the ENTITIES section.
+fn write_tables_tail(w: &mut DxfWriter) {
+    table(w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
     w.str(100, "AcDbDimStyleTable");
     w.str(0, "DIMSTYLE");
     w.handle(105, H_DIMSTYLE_STANDARD);
@@ -316,13 +375,13 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.handle(340, H_STYLE_STANDARD);
     w.str(0, "ENDTAB");
 
-    table(&mut w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
+    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
     for (h, name, layout) in [
         (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
         (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
     ] {
         record(
-            &mut w,
+            w,
             "BLOCK_RECORD",
             h,
             H_BLOCK_RECORD_TABLE,
@@ -380,12 +439,10 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     // ---- ENTITIES ----
     w.str(0, "SECTION");
     w.str(2, "ENTITIES");
-    w.out.push_str(&ents.out);
-    w.str(0, "ENDSEC");
+}
 
-    // ---- OBJECTS ----
-    w.str(0, "SECTION");
-    w.str(2, "OBJECTS");
+/// The OBJECTS section after the dictionaries scripts can change, and EOF.
+fn write_objects(w: &mut DxfWriter) {
     let dict = |w: &mut DxfWriter, h: u64, owner: u64, entries: &[(&str, u64)]| {
         w.str(0, "DICTIONARY");
         w.handle(5, h);
@@ -397,31 +454,14 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             w.handle(350, *v);
         }
     };
-    // The root and group dictionaries are the ones scripts can add to (dictadd).
-    for h in [H_ROOT_DICT, H_GROUP_DICT] {
-        if let Some(t) = d.object(h) {
-            for (c, v) in t.iter() {
-                w.str(c as u16, v);
-            }
-        }
-    }
-    for t in d.owned_new_objects() {
-        if t.handle()
-            .is_some_and(|h| h != H_ROOT_DICT && h != H_GROUP_DICT)
-        {
-            for (c, v) in t.iter() {
-                w.str(c as u16, v);
-            }
-        }
-    }
     dict(
-        &mut w,
+        w,
         H_LAYOUT_DICT,
         H_ROOT_DICT,
         &[("Layout1", H_PAPER_LAYOUT), ("Model", H_MODEL_LAYOUT)],
     );
     dict(
-        &mut w,
+        w,
         H_MLINESTYLE_DICT,
         H_ROOT_DICT,
         &[("Standard", H_MLINESTYLE_STANDARD)],
@@ -459,11 +499,10 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         (H_MODEL_LAYOUT, "Model", 1024, 0, H_MODEL_RECORD),
         (H_PAPER_LAYOUT, "Layout1", 0, 1, H_PAPER_RECORD),
     ] {
-        write_layout(&mut w, h, name, flag, order, rec);
+        write_layout(w, h, name, flag, order, rec);
     }
     w.str(0, "ENDSEC");
     w.str(0, "EOF");
-    w.out
 }
 
 fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i64, rec: u64) {

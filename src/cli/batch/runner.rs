@@ -1,8 +1,12 @@
-//! One row: a fresh interpreter, the script's forms, the row's bindings, then the sinks.
+//! One row: the worker's interpreter reset to its state after compiling the script, the row's
+//! bindings, the compiled forms run, then the sinks.
 //!
-//! Each worker thread parses the script once and keeps the forms (values are reference
-//! counted, so they cannot cross threads); every row then compiles and runs those forms in a
-//! new interpreter whose symbol table starts as a copy of the parse's.
+//! Each worker thread reads and compiles the script once, into an interpreter it keeps (values
+//! are reference counted, so neither the interpreter nor the compiled code can cross threads),
+//! and snapshots the global environment there. Every row restores that snapshot — a copy of
+//! the value cells and a truncation of the symbol table, which also drops the previous row's
+//! drawing and library state — instead of building a new interpreter and compiling again, as a
+//! Lua host loads a chunk once and runs it per job.
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
@@ -11,15 +15,25 @@ use std::sync::{Arc, Mutex};
 
 use super::sink::Sink;
 use super::source::{Cell, Row};
+use crate::builtins::input::InputState;
 use crate::cli::{diag, Common};
-use crate::lang::compile::Compiler;
-use crate::lang::reader::{parse_number, read_one, read_source, Parsed};
-use crate::lang::symbols::SymbolTable;
+use crate::lang::program::{Globals, Program};
+use crate::lang::reader::{parse_number, read_one};
 use crate::lang::{ErrorKind, Interp, Value};
 
+/// A worker's interpreter with the script compiled in it, and what a row resets it to.
+struct Worker {
+    it: Interp,
+    program: Program,
+    globals: Globals,
+    /// Sources registered at the snapshot (the script's); later ones came from a row's `load`.
+    sources: usize,
+    /// The `--answers` file's text, read once per worker (each row consumes it afresh).
+    answers: Result<Option<String>, String>,
+}
+
 thread_local! {
-    /// This worker's parse of the script: the symbol table after reading, and the forms.
-    static PARSED: RefCell<Option<(SymbolTable, Parsed)>> = const { RefCell::new(None) };
+    static WORKER: RefCell<Option<Worker>> = const { RefCell::new(None) };
 }
 
 /// What one row did.
@@ -55,25 +69,24 @@ impl Runner<'_> {
                 Err(m) => return Outcome::Failed(m),
             }
         }
-        PARSED.with(|cell| {
+        WORKER.with(|cell| {
             let mut slot = cell.borrow_mut();
             if slot.is_none() {
-                let mut tmpl = crate::builtins::new_interp();
-                match read_source(self.text, 0, &mut tmpl.syms) {
-                    Ok(p) => *slot = Some((tmpl.syms.clone(), p)),
-                    Err(e) => return Outcome::Failed(e.message),
+                match self.worker() {
+                    Ok(w) => *slot = Some(w),
+                    Err(m) => return Outcome::Failed(m),
                 }
             }
-            let (syms, parsed) = slot.as_ref().expect("parsed above");
-            let mut it = match self.interp(syms, row, &paths) {
-                Ok(it) => it,
-                Err(m) => return Outcome::Failed(m),
-            };
+            let w = slot.as_mut().expect("made above");
+            if let Err(m) = self.reset(w, row, &paths) {
+                return Outcome::Failed(m);
+            }
+            let it = &mut w.it;
             let flag = it.interrupt.clone();
             self.interrupts.lock().expect("lock").push(flag.clone());
-            let r = self.run_forms(&mut it, parsed).and_then(|()| {
+            let r = self.run_program(it, &w.program).and_then(|()| {
                 for (s, p) in self.sinks.iter().zip(&per_sink) {
-                    s.row_done(&mut it, row, p, self.common)?;
+                    s.row_done(it, row, p, self.common)?;
                 }
                 Ok(())
             });
@@ -88,51 +101,77 @@ impl Runner<'_> {
         })
     }
 
-    /// A fresh interpreter for `row`: options, write roots, `--set` and the row's bindings.
-    fn interp(&self, syms: &SymbolTable, row: &Row, paths: &[PathBuf]) -> Result<Interp, String> {
+    /// This worker's interpreter: the library installed, the script read and compiled.
+    fn worker(&self) -> Result<Worker, String> {
+        let mut it = crate::builtins::new_interp();
+        let program = it
+            .compile_program(self.name, self.text)
+            .map_err(|e| diag::render_error(&it, &e))?;
+        // Rows run in parallel and print nothing: none of them may wait on the terminal.
+        it.out = Box::new(std::io::sink());
+        let answers = match &self.common.answers {
+            None => Ok(None),
+            Some(path) => std::fs::read_to_string(path)
+                .map(Some)
+                .map_err(|e| format!("cannot read the answers file {}: {e}", path.display())),
+        };
+        Ok(Worker {
+            globals: it.save_globals(),
+            sources: it.sources.len(),
+            it,
+            program,
+            answers,
+        })
+    }
+
+    /// The worker's interpreter as a fresh one for `row`: the globals as after compiling, the
+    /// options, write roots, `--set` and the row's bindings.
+    fn reset(&self, w: &mut Worker, row: &Row, paths: &[PathBuf]) -> Result<(), String> {
+        let it = &mut w.it;
+        // Frees the previous row's drawing and values before this row's budget is set.
+        it.restore_globals(&w.globals);
+        it.sources.truncate(w.sources);
+        it.loaded_files.clear();
+        it.base_dir = Some(self.script_dir.clone());
+        it.interrupt.store(false, Ordering::Relaxed);
+        crate::lang::memory::set_budget(Some(
+            self.common
+                .max_memory
+                .unwrap_or_else(crate::lang::memory::default_budget),
+        ));
+        it.set_max_steps(self.common.max_steps);
         // A drawings source names each row's drawing; otherwise `--open` is every row's.
         let open = row.open.as_ref().or(self.common.open.as_ref());
         let named: Vec<PathBuf> = open.into_iter().cloned().collect();
-        let policy = crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &named);
-        let mut it = crate::cli::run::configured_interp(self.common, policy)?;
+        *it.ext::<crate::builtins::io::FsPolicy>() =
+            crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &named);
+        if let Some(text) = w.answers.clone()? {
+            it.ext::<InputState>().load_answers(&text);
+        }
         if let Some(p) = open {
-            if let Some(note) =
-                crate::builtins::drawing::open_into(&mut it, p, self.common.recover)?
-            {
+            if let Some(note) = crate::builtins::drawing::open_into(it, p, self.common.recover)? {
                 eprintln!("{}: {note}", p.display());
             }
         }
-        // Rows run in parallel: none of them may wait on the terminal.
-        it.ext::<crate::builtins::input::InputState>().no_terminal = true;
-        it.syms = syms.clone();
-        it.sync_cells();
-        it.add_source(self.name, self.text);
-        it.base_dir = Some(self.script_dir.clone());
-        it.out = Box::new(std::io::sink());
-        crate::cli::run::apply_sets(&mut it, self.sets)?;
+        it.ext::<InputState>().no_terminal = true;
+        crate::cli::run::apply_sets(it, self.sets)?;
         for (k, c) in &row.values {
-            let v = cell_value(&mut it, c);
+            let v = cell_value(it, c);
             it.set_global(k, v);
         }
-        Ok(it)
+        Ok(())
     }
 
-    fn run_forms(&self, it: &mut Interp, parsed: &Parsed) -> Result<(), String> {
-        for (form, _) in &parsed.forms {
-            if self.stop.load(Ordering::Relaxed) {
-                return Err("interrupted".into());
-            }
-            let code = Compiler::new(Some(&parsed.spans), &it.syms).compile(form);
-            match it.run_toplevel(&code) {
-                Ok(_) => {}
-                Err(e) if e.kind == ErrorKind::Exit => break,
-                Err(e) => return Err(diag::render_error(it, &e)),
-            }
-        }
+    fn run_program(&self, it: &mut Interp, program: &Program) -> Result<(), String> {
+        let r = it.run_program_until(program, || self.stop.load(Ordering::Relaxed));
         if self.stop.load(Ordering::Relaxed) {
             return Err("interrupted".into());
         }
-        Ok(())
+        match r {
+            Ok(_) => Ok(()),
+            Err(e) if e.kind == ErrorKind::Exit => Ok(()),
+            Err(e) => Err(diag::render_error(it, &e)),
+        }
     }
 }
 
