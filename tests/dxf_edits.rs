@@ -120,6 +120,57 @@ fn dxf_import_brings_the_block_definitions_its_inserts_need() {
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
 }
 
+/// Into a drawing made from scratch, an import of INSERTs with ATTRIBs, DIMENSIONs and the
+/// blocks, styles and line types they name is written whole (the R2000 writer of new drawings
+/// used to drop them); a drawing that already has entities of its own refuses instead.
+#[test]
+fn dxf_import_into_a_new_drawing_keeps_its_inserts() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
+    let o = Command::new(python())
+        .arg(&script)
+        .arg("import-make")
+        .args([&target, &other])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    std::fs::write(
+        d.join("import.lsp"),
+        "(dxf-import \"o.dxf\")\n(entmake '((0 . \"LINE\") (8 . \"NEW\") (10 1.0 2.0 0.0) (11 7.0 8.0 0.0)))",
+    )
+    .unwrap();
+    let o = lispcad(d, &["run", "import.lsp", "-o", result.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = Command::new(python())
+        .arg(&script)
+        .arg("scratch-check")
+        .args([&other, &result])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+
+    let late = d.join("late.dxf");
+    std::fs::write(
+        d.join("late.lsp"),
+        "(entmake '((0 . \"LINE\") (10 0.0 0.0 0.0) (11 1.0 1.0 0.0)))\n(dxf-import \"o.dxf\")",
+    )
+    .unwrap();
+    let o = lispcad(d, &["run", "late.lsp", "-o", late.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        msg.contains("dxf-import") && msg.contains("cannot write"),
+        "{msg}"
+    );
+    assert!(!late.exists());
+}
+
 /// A group of the wrong type is an error, more of a repeated code than the entity has gives
 /// nil, and neither changes the entity.
 #[test]

@@ -317,7 +317,24 @@ fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
     let name = it.string(&a[0])?.to_string();
     let path = script_path(it, &name);
     let other = read_drawing(it, &path)?;
-    let added = drawing(it).import(&other);
+    let d = drawing(it);
+    // Entities kept as their groups (INSERT, HATCH...) can only be written with the document
+    // they came from: the R2000 writer of new drawings would drop them. An untouched drawing
+    // takes the file whole (with its handles, which nothing yet refers to); any other
+    // drawing made from scratch refuses rather than lose them at save.
+    let added = if d.document().is_some() || !other.has_kept_entities() {
+        d.import(&other)
+    } else if d.is_untouched() && other.document().is_some() {
+        *d = other;
+        d.entities().map(|e| e.handle).collect()
+    } else {
+        return Err(err(format!(
+            "dxf-import: {} has entities lispcad keeps only as read (INSERT, HATCH, MTEXT, \
+             DIMENSION...), which a drawing made from scratch cannot write; import it first \
+             into an empty drawing, or dxf-open a drawing and import into that",
+            path.display()
+        )));
+    };
     if added.is_empty() {
         return Ok(Value::Nil);
     }

@@ -51,6 +51,24 @@ impl Drawing {
         }
         added
     }
+
+    /// Whether some live entity is kept only as the groups it was read from (INSERT, HATCH,
+    /// MTEXT, DIMENSION...): only a drawing with a document can write those.
+    pub fn has_kept_entities(&self) -> bool {
+        self.entities_with_sources()
+            .any(|(e, s)| s.is_some() && matches!(e.kind, EntityKind::Unmodelled { .. }))
+    }
+
+    /// A drawing made from scratch that nothing has been done to yet: no handle given out
+    /// (so no script holds an ename it could confuse with a file's), no layer but a default
+    /// "0", no extended data, application or object.
+    pub fn is_untouched(&self) -> bool {
+        self.document().is_none()
+            && self.next_handle() == super::drawing::FIRST_HANDLE
+            && self.layers() == [super::drawing::Layer::new("0")]
+            && self.current_layer() == "0"
+            && self.extras.is_empty()
+    }
 }
 
 /// The block a record refers to by name, if it is an INSERT or a DIMENSION.

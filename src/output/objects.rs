@@ -34,6 +34,15 @@ pub struct Extras {
     table_handles: Vec<(String, String, u64)>,
 }
 
+impl Extras {
+    pub fn is_empty(&self) -> bool {
+        self.xdata.is_empty()
+            && self.appids.is_empty()
+            && self.objects.is_empty()
+            && self.table_handles.is_empty()
+    }
+}
+
 /// The extended data of an entity's group list: its first record's groups from the first
 /// 1001 on.
 pub fn xdata_of(tags: &TagList) -> TagList {

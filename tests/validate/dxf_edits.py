@@ -232,9 +232,39 @@ def import_check(target, other, result):
     }))
 
 
+def scratch_check(other, result):
+    """OTHER imported into a drawing made from scratch, then a LINE added by the script."""
+    b, r = ezdxf.readfile(other), ezdxf.readfile(result)
+    auditor = r.audit()
+    diffs = []
+    for name in ["TAG", "INNER", "SAME"]:
+        if name not in r.blocks or block_content(r, name) != block_content(b, name):
+            diffs.append(f"block {name} not kept as it was")
+    for s, table in [("Mono", r.styles), ("DASHED", r.linetypes)]:
+        if s not in table:
+            diffs.append(f"{s} missing")
+    msp = r.modelspace()
+    tags = [(x.dxf.tag, x.dxf.text) for e in msp.query("INSERT") for x in e.attribs]
+    if tags != [("NAME", "value")]:
+        diffs.append(f"attribs {tags}")
+    want = sorted(e.dxftype() for e in b.modelspace()) + ["LINE"]
+    if sorted(e.dxftype() for e in msp) != sorted(want):
+        diffs.append(f"model space {sorted(e.dxftype() for e in msp)} want {want}")
+    lines = [e for e in msp.query("LINE") if e.dxf.layer == "NEW"]
+    if len(lines) != 1 or tuple(lines[0].dxf.end) != (7.0, 8.0, 0.0):
+        diffs.append("the script's LINE is missing")
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+    }))
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "import-make":
         import_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "scratch-check":
+        scratch_check(sys.argv[2], sys.argv[3])
     elif sys.argv[1] == "import-check":
         import_check(sys.argv[2], sys.argv[3], sys.argv[4])
     elif sys.argv[1] == "make":
