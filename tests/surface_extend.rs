@@ -181,14 +181,101 @@ fn a_ring_extended_by_3_never_overlaps_itself() {
     assert!((inner - 1.0).abs() < 0.01, "{inner}");
 }
 
+fn shoelace(p: &[(f64, f64)]) -> f64 {
+    let n = p.len();
+    (0..n)
+        .map(|i| p[i].0 * p[(i + 1) % n].1 - p[(i + 1) % n].0 * p[i].1)
+        .sum::<f64>()
+        / 2.0
+}
+
+/// The outline the L's extension by `d` should have, built here from first principles: the
+/// convex corners rounded by chords every 15° (6 per right angle), the notch corner (1, 1)
+/// mitred at (1 + d, 1 + d) when that lies within the notch edges (d ≤ 1), else the two corner
+/// arcs of (2, 1) and (1, 2) cut where they cross the bisector y = x.
+fn l_extension_outline(d: f64) -> Vec<(f64, f64)> {
+    let fan = |c: (f64, f64), start_deg: f64| -> Vec<(f64, f64)> {
+        (0..=6)
+            .map(|k| {
+                let a = (start_deg + 15.0 * k as f64).to_radians();
+                (c.0 + d * a.cos(), c.1 + d * a.sin())
+            })
+            .collect()
+    };
+    let mut out = Vec::new();
+    out.extend(fan((0.0, 0.0), 180.0));
+    out.extend(fan((2.0, 0.0), 270.0));
+    let a = fan((2.0, 1.0), 0.0);
+    let b = fan((1.0, 2.0), 0.0);
+    if d <= 1.0 {
+        out.extend(a);
+        out.push((1.0 + d, 1.0 + d));
+        out.extend(b);
+    } else {
+        let k = a.iter().position(|p| p.1 > p.0).unwrap();
+        let (p, q) = (a[k - 1], a[k]);
+        let f = (p.1 - p.0) / ((p.1 - p.0) - (q.1 - q.0));
+        let x = (p.0 + (q.0 - p.0) * f, p.1 + (q.1 - p.1) * f);
+        out.extend(&a[..k]);
+        out.push(x);
+        // By symmetry the arc of (1, 2) crosses y = x at the mirror image of the same point.
+        out.extend(b.iter().filter(|p| p.1 > p.0 + 1e-12));
+    }
+    out.extend(fan((0.0, 2.0), 90.0));
+    out
+}
+
 #[test]
-fn concave_corners_are_mitred_without_overlap_or_refused() {
+fn concave_corners_are_mitred_or_trimmed_without_overlap() {
     let l = l_shape();
-    for d in [0.25, 0.5, 0.9] {
+    for d in [0.25, 0.5, 0.9, 1.5, 2.5] {
         let e = extend(&l, d, FRAC_PI_6).unwrap();
         assert_eq!(overlap_area(&e, 300), 0.0, "distance {d}");
+        // The triangles' areas sum to the area of the expected outline, so they cover it
+        // exactly once; and the two sides of the cut meet vertex to vertex (one boundary).
+        let exact = shoelace(&l_extension_outline(d));
+        assert!(
+            (e.area() - exact).abs() < 1e-9,
+            "{d}: {} vs {exact}",
+            e.area()
+        );
+        assert_eq!(e.boundary().len(), 1, "distance {d}");
+        for t in 0..e.len() {
+            let [a, b, c] = e.corners_of(t);
+            assert!((b - a).cross(c - a).z > 0.0, "distance {d}");
+        }
     }
-    // Past the notch's edges (length 1) the mitred strips would fold over: an error.
-    let e = extend(&l, 1.5, FRAC_PI_6).unwrap_err().to_string();
-    assert!(e.contains("folds"), "{e}");
+    // Past the notch the arcs meet on the bisector: no point beyond it on either side.
+    let e = extend(&l, 1.5, FRAC_PI_6).unwrap();
+    assert!(e
+        .vertices()
+        .iter()
+        .any(|p| (p.x - p.y).abs() < 1e-12 && p.x > 2.4));
+}
+
+#[test]
+fn a_slot_too_narrow_for_the_distance_is_an_error() {
+    // [0, 3]² with the slot [1, 2] × [1, 3] cut out: the slot's walls are not adjacent, and
+    // extended by more than half the slot's width their strips collide.
+    let outline = [
+        (0.0, 0.0),
+        (3.0, 0.0),
+        (3.0, 3.0),
+        (2.0, 3.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 3.0),
+        (0.0, 3.0),
+    ]
+    .map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    let e = extend(&m, 0.4, FRAC_PI_6).unwrap();
+    assert_eq!(overlap_area(&e, 300), 0.0);
+    for d in [0.8, 1.5] {
+        let e = extend(&m, d, FRAC_PI_6).unwrap_err().to_string();
+        assert!(
+            e.contains("extend-surface") && e.contains("folds"),
+            "{d}: {e}"
+        );
+    }
 }

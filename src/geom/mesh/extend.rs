@@ -11,7 +11,10 @@
 //! directions meeting at a vertex are mitred into one, so the strips of one run share their
 //! outer vertices. At a convex corner the gap between the two runs' strips is filled by a fan
 //! (a rounded corner, ≤ 15° per triangle); at a reflex corner the two strips share one mitred
-//! vertex. The strips reuse the boundary vertices, so there are no cracks.
+//! vertex when it lies within both strips; otherwise (a short edge, a sharp notch) each side's
+//! strip and corner fan are trimmed at the bisector plane, the two sides sharing their cut
+//! vertices. The strips reuse the boundary vertices, so there are no cracks; whatever still
+//! overlaps (strips of non-adjacent edges meeting) is an error.
 
 use super::{Mesh, MeshError};
 use glam::DVec3;
@@ -140,9 +143,10 @@ fn is_hole(mesh: &Mesh, l: &Loop) -> bool {
 }
 
 /// [`extend`], with `holes` false leaving the holes' boundaries as they are. The strips are
-/// mitred exactly at concave vertices and fanned at convex corners; an extension whose strips
-/// would overlap themselves or the surface (a concave run or a hole too small for `distance`)
-/// is an error naming the place, never a folded result.
+/// mitred exactly at concave vertices (trimmed at the bisector where the mitre would fall past
+/// the adjacent edges) and fanned at convex corners; an extension whose strips would still
+/// overlap themselves or the surface (a slot or a hole too small for `distance`) is an error
+/// naming the place, never a folded result.
 pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Result<Mesh, MeshError> {
     let angle = check_angle(angle)?;
     if !(distance.is_finite() && distance > 0.0) {
@@ -174,6 +178,10 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
         // For each boundary vertex: the offset vertex its incoming edge uses, and its outgoing.
         let mut q_in = vec![0u32; n];
         let mut q_out = vec![0u32; n];
+        let first_tri = tris.len();
+        // What made each new triangle: the strip of an edge or the fan at a vertex.
+        let mut tags: Vec<Piece> = Vec::new();
+        let mut trims: Vec<Trim> = Vec::new();
         for i in 0..n {
             let o_in = outward[(i + n - 1) % n];
             let o_out = outward[i];
@@ -200,23 +208,35 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
                 }
                 for s in 0..k as u32 {
                     tris.push([l.verts[i], first + s, first + s + 1]);
+                    tags.push(Piece::Fan(i));
                 }
                 q_in[i] = first;
                 q_out[i] = first + k as u32;
             } else {
-                // The exact mitre: where the two edges' offset lines meet.
+                // The exact mitre (where the two edges' offset lines meet) when it lies within
+                // both strips; otherwise each strip is cut at the bisector after the fact.
                 let m = (o_in + o_out).normalize_or(o_out);
                 let c = m.dot(o_out);
-                if c < 0.05 {
-                    return Err(MeshError::Invalid(format!(
-                        "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
-                         extension there",
-                        b.x, b.y, b.z
-                    )));
+                let mitre = m * (distance / c.max(1e-300));
+                let fits = c >= 0.05
+                    && mitre.dot(-a_dir) <= a_dir.length_squared()
+                    && mitre.dot(b_dir) <= b_dir.length_squared();
+                if fits || o_in.dot(o_out) > 1.0 - 1e-12 {
+                    verts.push(b + mitre);
+                    q_in[i] = (verts.len() - 1) as u32;
+                    q_out[i] = q_in[i];
+                } else {
+                    verts.push(b + o_in * distance);
+                    verts.push(b + o_out * distance);
+                    q_in[i] = (verts.len() - 2) as u32;
+                    q_out[i] = (verts.len() - 1) as u32;
+                    trims.push(Trim {
+                        at: i,
+                        apex: l.verts[i],
+                        normal: (o_out - o_in).normalize_or_zero(),
+                        cuts_from: 0,
+                    });
                 }
-                verts.push(b + m * (distance / c));
-                q_in[i] = (verts.len() - 1) as u32;
-                q_out[i] = q_in[i];
             }
         }
         for e in 0..n {
@@ -224,6 +244,38 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
             let (qv, qw) = (q_out[e], q_in[(e + 1) % n]);
             tris.push([w, v, qv]);
             tris.push([w, qv, qw]);
+            tags.extend([Piece::Strip(e), Piece::Strip(e)]);
+        }
+        if !trims.is_empty() {
+            let mut new_tris = tris.split_off(first_tri);
+            let cuts_from = verts.len();
+            for t in &mut trims {
+                t.cuts_from = cuts_from;
+            }
+            for t in &trims {
+                let (mut kept, mut kept_tags) = (Vec::new(), Vec::new());
+                for (tri, tag) in new_tris.iter().zip(&tags) {
+                    // The strip and fan before the corner keep the side along the incoming
+                    // edge, those after it the other side; the bisector is where they meet.
+                    let sign = match *tag {
+                        Piece::Strip(e) | Piece::Fan(e) if e == (t.at + n - 1) % n => 1.0,
+                        Piece::Strip(e) if e == t.at => -1.0,
+                        Piece::Fan(e) if e == (t.at + 1) % n => -1.0,
+                        _ => 0.0,
+                    };
+                    let before = kept.len();
+                    if sign == 0.0 {
+                        kept.push(*tri);
+                    } else {
+                        clip(&mut verts, *tri, t, sign, &mut kept);
+                    }
+                    kept_tags.extend(std::iter::repeat_n(*tag, kept.len() - before));
+                }
+                new_tris = split_on_seam(&verts, kept, t);
+                tags = kept_tags;
+                tags.resize(new_tris.len(), Piece::Seam);
+            }
+            tris.extend(new_tris);
         }
     }
     if verts.iter().any(|v| !v.is_finite()) {
@@ -248,6 +300,120 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
         )));
     }
     Ok(out)
+}
+
+#[derive(Clone, Copy)]
+enum Piece {
+    Strip(usize),
+    Fan(usize),
+    Seam,
+}
+
+/// A concave boundary vertex whose mitre would fall outside its strips: the strips on either
+/// side are cut by the plane through the vertex with this normal (from o_in towards o_out).
+struct Trim {
+    at: usize,
+    apex: u32,
+    normal: DVec3,
+    /// Vertices from here on are cut points, which the two sides share.
+    cuts_from: usize,
+}
+
+/// Keeps the part of `tri` where `sign · normal · (p − apex) ≥ 0`, in the same orientation.
+fn clip(verts: &mut Vec<DVec3>, tri: [u32; 3], t: &Trim, sign: f64, out: &mut Vec<[u32; 3]>) {
+    let apex = verts[t.apex as usize];
+    let scale = tri
+        .iter()
+        .map(|&v| (verts[v as usize] - apex).length())
+        .fold(0.0, f64::max);
+    let eps = 1e-12 * scale.max(1e-300);
+    let dist = tri.map(|v| sign * t.normal.dot(verts[v as usize] - apex));
+    if dist.iter().all(|&d| d >= -eps) {
+        out.push(tri);
+        return;
+    }
+    if dist.iter().all(|&d| d <= eps) {
+        return;
+    }
+    let mut poly = Vec::with_capacity(4);
+    for k in 0..3 {
+        let (a, b) = (tri[k], tri[(k + 1) % 3]);
+        let (da, db) = (dist[k], dist[(k + 1) % 3]);
+        if da >= -eps {
+            poly.push(a);
+        }
+        if (da > eps && db < -eps) || (da < -eps && db > eps) {
+            let (pa, pb) = (verts[a as usize], verts[b as usize]);
+            let x = pa + (pb - pa) * (da / (da - db));
+            // Both triangles sharing this edge cut it at one shared vertex.
+            let id = verts[t.cuts_from..]
+                .iter()
+                .position(|q| (*q - x).length() <= eps)
+                .map(|j| (t.cuts_from + j) as u32)
+                .unwrap_or_else(|| {
+                    verts.push(x);
+                    (verts.len() - 1) as u32
+                });
+            poly.push(id);
+        }
+    }
+    for k in 1..poly.len().saturating_sub(1) {
+        let tri = [poly[0], poly[k], poly[k + 1]];
+        let [a, b, c] = tri.map(|v| verts[v as usize]);
+        if (b - a).cross(c - a).length() > eps * eps {
+            out.push(tri);
+        }
+    }
+}
+
+/// Splits the triangles whose edges run along the cut plane at the cut vertices of the other
+/// side lying inside those edges, so the two sides meet vertex to vertex (no T-junctions).
+fn split_on_seam(verts: &[DVec3], tris: Vec<[u32; 3]>, t: &Trim) -> Vec<[u32; 3]> {
+    let apex = verts[t.apex as usize];
+    let on = |v: u32| {
+        let p = verts[v as usize];
+        t.normal.dot(p - apex).abs() <= 1e-9 * (p - apex).length().max(1e-300)
+    };
+    let mut seam: Vec<u32> = tris.iter().flatten().copied().filter(|&v| on(v)).collect();
+    seam.sort_unstable();
+    seam.dedup();
+    let mut out = Vec::with_capacity(tris.len());
+    for tri in tris {
+        let mut done = false;
+        for k in 0..3 {
+            let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+            if !(on(u) && on(v)) {
+                continue;
+            }
+            let (pu, pv) = (verts[u as usize], verts[v as usize]);
+            let len2 = (pv - pu).length_squared();
+            let mut inner: Vec<(f64, u32)> = seam
+                .iter()
+                .filter(|&&s| s != u && s != v)
+                .filter_map(|&s| {
+                    let f = (verts[s as usize] - pu).dot(pv - pu) / len2;
+                    let off = (pu + (pv - pu) * f - verts[s as usize]).length();
+                    (f > 1e-12 && f < 1.0 - 1e-12 && off <= 1e-9 * len2.sqrt()).then_some((f, s))
+                })
+                .collect();
+            if inner.is_empty() {
+                continue;
+            }
+            inner.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut prev = u;
+            for (_, s) in inner {
+                out.push([prev, s, w]);
+                prev = s;
+            }
+            out.push([prev, v, w]);
+            done = true;
+            break;
+        }
+        if !done {
+            out.push(tri);
+        }
+    }
+    out
 }
 
 /// A point where a strip triangle (index ≥ `first_new`) overlaps another triangle with positive
