@@ -253,6 +253,109 @@ fn concave_corners_are_mitred_or_trimmed_without_overlap() {
         .any(|p| (p.x - p.y).abs() < 1e-12 && p.x > 2.4));
 }
 
+/// The outline of a rectilinear polygon (counter-clockwise, unit edges next to each notch)
+/// extended by `d`: 15° chords at convex corners; at a notch corner the mitre when d ≤ 1, else
+/// the neighbouring corners' chord polylines cut where they cross the notch's bisector.
+fn rectilinear_extension_outline(poly: &[(f64, f64)], d: f64) -> Vec<(f64, f64)> {
+    let n = poly.len();
+    let sub = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0, a.1 - b.1);
+    let out_dir = |e: (f64, f64)| (e.1, -e.0);
+    // Per vertex: its chord points, or for a notch the corner and its bisector's normal.
+    let mut parts: Vec<Result<Vec<(f64, f64)>, ((f64, f64), (f64, f64))>> = Vec::new();
+    for i in 0..n {
+        let (p, c, q) = (poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n]);
+        let (a, b) = (sub(c, p), sub(q, c));
+        let (oi, oo) = (out_dir(a), out_dir(b));
+        if a.0 * b.1 - a.1 * b.0 > 0.0 {
+            let start = oi.1.atan2(oi.0).to_degrees();
+            parts.push(Ok((0..=6)
+                .map(|k| {
+                    let t = (start + 15.0 * k as f64).to_radians();
+                    (c.0 + d * t.cos(), c.1 + d * t.sin())
+                })
+                .collect()));
+        } else if d <= 1.0 {
+            parts.push(Ok(vec![(c.0 + d * (oi.0 + oo.0), c.1 + d * (oi.1 + oo.1))]));
+        } else {
+            parts.push(Err((c, (oo.0 - oi.0, oo.1 - oi.1))));
+        }
+    }
+    let side = |p: (f64, f64), c: (f64, f64), k: (f64, f64)| (p.0 - c.0) * k.0 + (p.1 - c.1) * k.1;
+    let cross = |p: (f64, f64), q: (f64, f64), c, k| {
+        let (sp, sq) = (side(p, c, k), side(q, c, k));
+        let f = sp / (sp - sq);
+        (p.0 + (q.0 - p.0) * f, p.1 + (q.1 - p.1) * f)
+    };
+    let mut pts: Vec<Vec<(f64, f64)>> = parts
+        .iter()
+        .map(|p| p.clone().unwrap_or_default())
+        .collect();
+    for i in 0..n {
+        if let Err((c, k)) = parts[i] {
+            let (ia, ib) = ((i + n - 1) % n, (i + 1) % n);
+            let a = &pts[ia];
+            let j = a.iter().position(|&p| side(p, c, k) < 0.0).unwrap();
+            let x = cross(a[j - 1], a[j], c, k);
+            pts[ia].truncate(j);
+            pts[i] = vec![x];
+            let b = &pts[ib];
+            let j = b.iter().position(|&p| side(p, c, k) < 0.0).unwrap();
+            let y = cross(b[j - 1], b[j], c, k);
+            assert!((x.0 - y.0).hypot(x.1 - y.1) < 1e-12, "symmetric notch");
+            pts[ib].drain(..j);
+        }
+    }
+    pts.concat()
+}
+
+#[test]
+fn a_cross_trims_all_four_notches() {
+    // Five unit squares in a plus sign: four notch corners, each between two unit edges.
+    let poly = [
+        (1.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (3.0, 1.0),
+        (3.0, 2.0),
+        (2.0, 2.0),
+        (2.0, 3.0),
+        (1.0, 3.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+        (0.0, 1.0),
+        (1.0, 1.0),
+    ];
+    let outline = poly.map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    for d in [0.5, 1.5] {
+        let e = extend(&m, d, FRAC_PI_6).unwrap();
+        assert_eq!(overlap_area(&e, 300), 0.0, "distance {d}");
+        let exact = shoelace(&rectilinear_extension_outline(&poly, d));
+        assert!(
+            (e.area() - exact).abs() < 1e-9,
+            "{d}: {} vs {exact}",
+            e.area()
+        );
+        assert_eq!(e.boundary().len(), 1, "distance {d}");
+    }
+    // The generic outline agrees with the L's own.
+    let l = [
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+    ];
+    for d in [0.5, 1.5] {
+        let (a, b) = (
+            shoelace(&rectilinear_extension_outline(&l, d)),
+            shoelace(&l_extension_outline(d)),
+        );
+        assert!((a - b).abs() < 1e-12, "{a} {b}");
+    }
+}
+
 #[test]
 fn a_slot_too_narrow_for_the_distance_is_an_error() {
     // [0, 3]² with the slot [1, 2] × [1, 3] cut out: the slot's walls are not adjacent, and

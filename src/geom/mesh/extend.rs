@@ -247,35 +247,8 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
             tags.extend([Piece::Strip(e), Piece::Strip(e)]);
         }
         if !trims.is_empty() {
-            let mut new_tris = tris.split_off(first_tri);
-            let cuts_from = verts.len();
-            for t in &mut trims {
-                t.cuts_from = cuts_from;
-            }
-            for t in &trims {
-                let (mut kept, mut kept_tags) = (Vec::new(), Vec::new());
-                for (tri, tag) in new_tris.iter().zip(&tags) {
-                    // The strip and fan before the corner keep the side along the incoming
-                    // edge, those after it the other side; the bisector is where they meet.
-                    let sign = match *tag {
-                        Piece::Strip(e) | Piece::Fan(e) if e == (t.at + n - 1) % n => 1.0,
-                        Piece::Strip(e) if e == t.at => -1.0,
-                        Piece::Fan(e) if e == (t.at + 1) % n => -1.0,
-                        _ => 0.0,
-                    };
-                    let before = kept.len();
-                    if sign == 0.0 {
-                        kept.push(*tri);
-                    } else {
-                        clip(&mut verts, *tri, t, sign, &mut kept);
-                    }
-                    kept_tags.extend(std::iter::repeat_n(*tag, kept.len() - before));
-                }
-                new_tris = split_on_seam(&verts, kept, t);
-                tags = kept_tags;
-                tags.resize(new_tris.len(), Piece::Seam);
-            }
-            tris.extend(new_tris);
+            let new_tris = tris.split_off(first_tri);
+            tris.extend(trim_corners(&mut verts, new_tris, tags, &mut trims, n));
         }
     }
     if verts.iter().any(|v| !v.is_finite()) {
@@ -306,7 +279,6 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
 enum Piece {
     Strip(usize),
     Fan(usize),
-    Seam,
 }
 
 /// A concave boundary vertex whose mitre would fall outside its strips: the strips on either
@@ -317,6 +289,43 @@ struct Trim {
     normal: DVec3,
     /// Vertices from here on are cut points, which the two sides share.
     cuts_from: usize,
+}
+
+/// Cuts the new triangles of one loop (`n` boundary vertices, `tags` saying what made each) at
+/// each trimmed corner's bisector plane.
+fn trim_corners(
+    verts: &mut Vec<DVec3>,
+    mut new_tris: Vec<[u32; 3]>,
+    mut tags: Vec<Piece>,
+    trims: &mut [Trim],
+    n: usize,
+) -> Vec<[u32; 3]> {
+    let cuts_from = verts.len();
+    for t in trims.iter_mut() {
+        t.cuts_from = cuts_from;
+    }
+    for t in trims.iter() {
+        let (mut kept, mut kept_tags) = (Vec::new(), Vec::new());
+        for (tri, tag) in new_tris.iter().zip(&tags) {
+            // The strip and fan before the corner keep the side along the incoming edge,
+            // those after it the other side; the bisector is where they meet.
+            let sign = match *tag {
+                Piece::Strip(e) | Piece::Fan(e) if e == (t.at + n - 1) % n => 1.0,
+                Piece::Strip(e) if e == t.at => -1.0,
+                Piece::Fan(e) if e == (t.at + 1) % n => -1.0,
+                _ => 0.0,
+            };
+            let before = kept.len();
+            if sign == 0.0 {
+                kept.push(*tri);
+            } else {
+                clip(verts, *tri, t, sign, &mut kept);
+            }
+            kept_tags.extend(std::iter::repeat_n(*tag, kept.len() - before));
+        }
+        (new_tris, tags) = split_on_seam(verts, kept, kept_tags, t);
+    }
+    new_tris
 }
 
 /// Keeps the part of `tri` where `sign · normal · (p − apex) ≥ 0`, in the same orientation.
@@ -368,7 +377,12 @@ fn clip(verts: &mut Vec<DVec3>, tri: [u32; 3], t: &Trim, sign: f64, out: &mut Ve
 
 /// Splits the triangles whose edges run along the cut plane at the cut vertices of the other
 /// side lying inside those edges, so the two sides meet vertex to vertex (no T-junctions).
-fn split_on_seam(verts: &[DVec3], tris: Vec<[u32; 3]>, t: &Trim) -> Vec<[u32; 3]> {
+fn split_on_seam(
+    verts: &[DVec3],
+    tris: Vec<[u32; 3]>,
+    tags: Vec<Piece>,
+    t: &Trim,
+) -> (Vec<[u32; 3]>, Vec<Piece>) {
     let apex = verts[t.apex as usize];
     let on = |v: u32| {
         let p = verts[v as usize];
@@ -378,7 +392,8 @@ fn split_on_seam(verts: &[DVec3], tris: Vec<[u32; 3]>, t: &Trim) -> Vec<[u32; 3]
     seam.sort_unstable();
     seam.dedup();
     let mut out = Vec::with_capacity(tris.len());
-    for tri in tris {
+    let mut out_tags = Vec::with_capacity(tris.len());
+    for (tri, tag) in tris.into_iter().zip(tags) {
         let mut done = false;
         for k in 0..3 {
             let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
@@ -403,17 +418,20 @@ fn split_on_seam(verts: &[DVec3], tris: Vec<[u32; 3]>, t: &Trim) -> Vec<[u32; 3]
             let mut prev = u;
             for (_, s) in inner {
                 out.push([prev, s, w]);
+                out_tags.push(tag);
                 prev = s;
             }
             out.push([prev, v, w]);
+            out_tags.push(tag);
             done = true;
             break;
         }
         if !done {
             out.push(tri);
+            out_tags.push(tag);
         }
     }
-    out
+    (out, out_tags)
 }
 
 /// A point where a strip triangle (index ≥ `first_new`) overlaps another triangle with positive
