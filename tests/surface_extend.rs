@@ -253,6 +253,8 @@ fn concave_corners_are_mitred_or_trimmed_without_overlap() {
         .any(|p| (p.x - p.y).abs() < 1e-12 && p.x > 2.4));
 }
 
+type P2 = (f64, f64);
+
 /// The outline of a rectilinear polygon (counter-clockwise, unit edges next to each notch)
 /// extended by `d`: 15° chords at convex corners; at a notch corner the mitre when d ≤ 1, else
 /// the neighbouring corners' chord polylines cut where they cross the notch's bisector.
@@ -261,7 +263,7 @@ fn rectilinear_extension_outline(poly: &[(f64, f64)], d: f64) -> Vec<(f64, f64)>
     let sub = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0, a.1 - b.1);
     let out_dir = |e: (f64, f64)| (e.1, -e.0);
     // Per vertex: its chord points, or for a notch the corner and its bisector's normal.
-    let mut parts: Vec<Result<Vec<(f64, f64)>, ((f64, f64), (f64, f64))>> = Vec::new();
+    let mut parts: Vec<Result<Vec<P2>, (P2, P2)>> = Vec::new();
     for i in 0..n {
         let (p, c, q) = (poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n]);
         let (a, b) = (sub(c, p), sub(q, c));
