@@ -192,20 +192,10 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
             let nrm = (y - x).cross(z - x);
             let convex = a_dir.cross(b_dir).dot(nrm) > 0.0;
             if flags[i] && convex {
-                let turn = turn_angle(o_in, o_out);
-                let k = ((turn / (15f64).to_radians()).ceil() as usize).max(1);
                 let first = verts.len() as u32;
-                let axis = o_in.cross(o_out).normalize_or(nrm.normalize_or(DVec3::Z));
-                for s in 0..=k {
-                    let f = s as f64 / k as f64;
-                    // Equal angular steps from o_in to o_out (the last exactly o_out).
-                    let dir = if s == k {
-                        o_out
-                    } else {
-                        glam::DQuat::from_axis_angle(axis, f * turn) * o_in
-                    };
-                    verts.push(b + dir * distance);
-                }
+                let dirs = fan_dirs(o_in, o_out, nrm);
+                let k = dirs.len() - 1;
+                verts.extend(dirs.iter().map(|&dir| b + dir * distance));
                 for s in 0..k as u32 {
                     tris.push([l.verts[i], first + s, first + s + 1]);
                     tags.push(Piece::Fan(i));
@@ -213,18 +203,20 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
                 q_in[i] = first;
                 q_out[i] = first + k as u32;
             } else {
-                // The exact mitre (where the two edges' offset lines meet) when it lies within
-                // both strips; otherwise each strip is cut at the bisector after the fact.
-                let m = (o_in + o_out).normalize_or(o_out);
-                let c = m.dot(o_out);
-                let mitre = m * (distance / c.max(1e-300));
-                let fits = c >= 0.05
-                    && mitre.dot(-a_dir) <= a_dir.length_squared()
-                    && mitre.dot(b_dir) <= b_dir.length_squared();
-                if fits || o_in.dot(o_out) > 1.0 - 1e-12 {
+                // The exact mitre when it lies within both strips; otherwise each strip is cut
+                // at the bisector after the fact.
+                let mitre = mitre_within(o_in, o_out, a_dir, b_dir, distance);
+                if let Some(mitre) = mitre {
                     verts.push(b + mitre);
                     q_in[i] = (verts.len() - 1) as u32;
                     q_out[i] = q_in[i];
+                } else if convex {
+                    // A smooth-run vertex turning nearly back on itself (angle near π).
+                    return Err(MeshError::Invalid(format!(
+                        "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
+                         extension there",
+                        b.x, b.y, b.z
+                    )));
                 } else {
                     verts.push(b + o_in * distance);
                     verts.push(b + o_out * distance);
@@ -258,21 +250,54 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
     }
     let out = Mesh::new(verts, tris)?;
     if let Some(p) = first_overlap(&out, mesh.len()) {
-        return Err(MeshError::Invalid(format!(
-            "extend-surface: extending by {distance} folds the strips over each other or the \
-             surface near ({:.6}, {:.6}, {:.6}) (a concave boundary or a hole too small for \
-             that distance){}",
-            p.x,
-            p.y,
-            p.z,
-            if holes {
-                "; pass nil as the fourth argument to leave holes alone"
-            } else {
-                ""
-            }
-        )));
+        return Err(overlap_error(distance, holes, p));
     }
     Ok(out)
+}
+
+/// Directions from `o_in` to `o_out` (both included) in equal steps of at most 15° about the
+/// normal `nrm`: a convex corner's rounded fan.
+fn fan_dirs(o_in: DVec3, o_out: DVec3, nrm: DVec3) -> Vec<DVec3> {
+    let turn = turn_angle(o_in, o_out);
+    let k = ((turn / (15f64).to_radians()).ceil() as usize).max(1);
+    let axis = o_in.cross(o_out).normalize_or(nrm.normalize_or(DVec3::Z));
+    (0..=k)
+        .map(|s| {
+            if s == k {
+                o_out
+            } else {
+                glam::DQuat::from_axis_angle(axis, s as f64 / k as f64 * turn) * o_in
+            }
+        })
+        .collect()
+}
+
+/// The mitre offset at a concave vertex (where the two edges' offset lines meet), when it lies
+/// within both strips: not past the far end of the incoming edge `a_dir` or outgoing `b_dir`.
+fn mitre_within(o_in: DVec3, o_out: DVec3, a_dir: DVec3, b_dir: DVec3, d: f64) -> Option<DVec3> {
+    let m = (o_in + o_out).normalize_or(o_out);
+    let c = m.dot(o_out);
+    let mitre = m * (d / c.max(1e-300));
+    let fits = c >= 0.05
+        && mitre.dot(-a_dir) <= a_dir.length_squared()
+        && mitre.dot(b_dir) <= b_dir.length_squared();
+    (fits || o_in.dot(o_out) > 1.0 - 1e-12).then_some(mitre)
+}
+
+fn overlap_error(distance: f64, holes: bool, p: DVec3) -> MeshError {
+    MeshError::Invalid(format!(
+        "extend-surface: extending by {distance} folds the strips over each other or the \
+         surface near ({:.6}, {:.6}, {:.6}) (a concave boundary or a hole too small for \
+         that distance){}",
+        p.x,
+        p.y,
+        p.z,
+        if holes {
+            "; pass nil as the fourth argument to leave holes alone"
+        } else {
+            ""
+        }
+    ))
 }
 
 #[derive(Clone, Copy)]
