@@ -162,86 +162,7 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
         if !holes && is_hole(mesh, &l) {
             continue;
         }
-        let n = l.verts.len();
-        let mv = mesh.vertices();
-        let p = |i: usize| mv[l.verts[i % n] as usize];
-        let flags = corner_flags(mesh, &l, angle);
-        // Outward direction of each boundary edge, in its facet's plane.
-        let outward: Vec<DVec3> = (0..n)
-            .map(|e| {
-                let d = p(e + 1) - p(e);
-                let [a, b, c] = mesh.corners_of(l.facets[e] as usize);
-                let nrm = (b - a).cross(c - a);
-                d.cross(nrm).normalize_or_zero()
-            })
-            .collect();
-        // For each boundary vertex: the offset vertex its incoming edge uses, and its outgoing.
-        let mut q_in = vec![0u32; n];
-        let mut q_out = vec![0u32; n];
-        let first_tri = tris.len();
-        // What made each new triangle: the strip of an edge or the fan at a vertex.
-        let mut tags: Vec<Piece> = Vec::new();
-        let mut trims: Vec<Trim> = Vec::new();
-        for i in 0..n {
-            let o_in = outward[(i + n - 1) % n];
-            let o_out = outward[i];
-            let b = p(i);
-            let a_dir = b - p(i + n - 1);
-            let b_dir = p(i + 1) - b;
-            let [x, y, z] = mesh.corners_of(l.facets[i] as usize);
-            let nrm = (y - x).cross(z - x);
-            let convex = a_dir.cross(b_dir).dot(nrm) > 0.0;
-            if flags[i] && convex {
-                let first = verts.len() as u32;
-                let dirs = fan_dirs(o_in, o_out, nrm);
-                let k = dirs.len() - 1;
-                verts.extend(dirs.iter().map(|&dir| b + dir * distance));
-                for s in 0..k as u32 {
-                    tris.push([l.verts[i], first + s, first + s + 1]);
-                    tags.push(Piece::Fan(i));
-                }
-                q_in[i] = first;
-                q_out[i] = first + k as u32;
-            } else {
-                // The exact mitre when it lies within both strips; otherwise each strip is cut
-                // at the bisector after the fact.
-                let mitre = mitre_within(o_in, o_out, a_dir, b_dir, distance);
-                if let Some(mitre) = mitre {
-                    verts.push(b + mitre);
-                    q_in[i] = (verts.len() - 1) as u32;
-                    q_out[i] = q_in[i];
-                } else if convex {
-                    // A smooth-run vertex turning nearly back on itself (angle near π).
-                    return Err(MeshError::Invalid(format!(
-                        "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
-                         extension there",
-                        b.x, b.y, b.z
-                    )));
-                } else {
-                    verts.push(b + o_in * distance);
-                    verts.push(b + o_out * distance);
-                    q_in[i] = (verts.len() - 2) as u32;
-                    q_out[i] = (verts.len() - 1) as u32;
-                    trims.push(Trim {
-                        at: i,
-                        apex: l.verts[i],
-                        normal: (o_out - o_in).normalize_or_zero(),
-                        cuts_from: 0,
-                    });
-                }
-            }
-        }
-        for e in 0..n {
-            let (v, w) = (l.verts[e], l.verts[(e + 1) % n]);
-            let (qv, qw) = (q_out[e], q_in[(e + 1) % n]);
-            tris.push([w, v, qv]);
-            tris.push([w, qv, qw]);
-            tags.extend([Piece::Strip(e), Piece::Strip(e)]);
-        }
-        if !trims.is_empty() {
-            let new_tris = tris.split_off(first_tri);
-            tris.extend(trim_corners(&mut verts, new_tris, tags, &mut trims, n));
-        }
+        extend_loop(mesh, &l, distance, angle, &mut verts, &mut tris)?;
     }
     if verts.iter().any(|v| !v.is_finite()) {
         return Err(MeshError::Invalid(
@@ -253,6 +174,98 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
         return Err(overlap_error(distance, holes, p));
     }
     Ok(out)
+}
+
+/// Appends the strips (and corner fans) of one boundary loop to `verts` and `tris`.
+fn extend_loop(
+    mesh: &Mesh,
+    l: &Loop,
+    distance: f64,
+    angle: f64,
+    verts: &mut Vec<DVec3>,
+    tris: &mut Vec<[u32; 3]>,
+) -> Result<(), MeshError> {
+    let n = l.verts.len();
+    let mv = mesh.vertices();
+    let p = |i: usize| mv[l.verts[i % n] as usize];
+    let flags = corner_flags(mesh, l, angle);
+    // Outward direction of each boundary edge, in its facet's plane.
+    let outward: Vec<DVec3> = (0..n)
+        .map(|e| {
+            let d = p(e + 1) - p(e);
+            let [a, b, c] = mesh.corners_of(l.facets[e] as usize);
+            let nrm = (b - a).cross(c - a);
+            d.cross(nrm).normalize_or_zero()
+        })
+        .collect();
+    // For each boundary vertex: the offset vertex its incoming edge uses, and its outgoing.
+    let mut q_in = vec![0u32; n];
+    let mut q_out = vec![0u32; n];
+    let first_tri = tris.len();
+    // What made each new triangle: the strip of an edge or the fan at a vertex.
+    let mut tags: Vec<Piece> = Vec::new();
+    let mut trims: Vec<Trim> = Vec::new();
+    for i in 0..n {
+        let o_in = outward[(i + n - 1) % n];
+        let o_out = outward[i];
+        let b = p(i);
+        let a_dir = b - p(i + n - 1);
+        let b_dir = p(i + 1) - b;
+        let [x, y, z] = mesh.corners_of(l.facets[i] as usize);
+        let nrm = (y - x).cross(z - x);
+        let convex = a_dir.cross(b_dir).dot(nrm) > 0.0;
+        if flags[i] && convex {
+            let first = verts.len() as u32;
+            let dirs = fan_dirs(o_in, o_out, nrm);
+            let k = dirs.len() - 1;
+            verts.extend(dirs.iter().map(|&dir| b + dir * distance));
+            for s in 0..k as u32 {
+                tris.push([l.verts[i], first + s, first + s + 1]);
+                tags.push(Piece::Fan(i));
+            }
+            q_in[i] = first;
+            q_out[i] = first + k as u32;
+        } else {
+            // The exact mitre when it lies within both strips; otherwise each strip is cut
+            // at the bisector after the fact.
+            let mitre = mitre_within(o_in, o_out, a_dir, b_dir, distance);
+            if let Some(mitre) = mitre {
+                verts.push(b + mitre);
+                q_in[i] = (verts.len() - 1) as u32;
+                q_out[i] = q_in[i];
+            } else if convex {
+                // A smooth-run vertex turning nearly back on itself (angle near π).
+                return Err(MeshError::Invalid(format!(
+                    "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
+                     extension there",
+                    b.x, b.y, b.z
+                )));
+            } else {
+                verts.push(b + o_in * distance);
+                verts.push(b + o_out * distance);
+                q_in[i] = (verts.len() - 2) as u32;
+                q_out[i] = (verts.len() - 1) as u32;
+                trims.push(Trim {
+                    at: i,
+                    apex: l.verts[i],
+                    normal: (o_out - o_in).normalize_or_zero(),
+                    cuts_from: 0,
+                });
+            }
+        }
+    }
+    for e in 0..n {
+        let (v, w) = (l.verts[e], l.verts[(e + 1) % n]);
+        let (qv, qw) = (q_out[e], q_in[(e + 1) % n]);
+        tris.push([w, v, qv]);
+        tris.push([w, qv, qw]);
+        tags.extend([Piece::Strip(e), Piece::Strip(e)]);
+    }
+    if !trims.is_empty() {
+        let new_tris = tris.split_off(first_tri);
+        tris.extend(trim_corners(verts, new_tris, tags, &mut trims, n));
+    }
+    Ok(())
 }
 
 /// Directions from `o_in` to `o_out` (both included) in equal steps of at most 15° about the
