@@ -384,3 +384,48 @@ fn a_slot_too_narrow_for_the_distance_is_an_error() {
         );
     }
 }
+
+#[test]
+fn a_needle_notch_is_trimmed_not_refused() {
+    // [0, 4]² with a notch 0.2 wide at the top coming to a point at (2, 1): its two walls turn
+    // by about 176°, so their mitre would lie 15 d away; trimmed at the bisector x = 2 instead.
+    let outline = [
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 4.0),
+        (2.1, 4.0),
+        (2.0, 1.0),
+        (1.9, 4.0),
+        (0.0, 4.0),
+    ]
+    .map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    let d = 0.5;
+    let e = extend(&m, d, FRAC_PI_6).unwrap();
+    assert_eq!(overlap_area(&e, 400), 0.0);
+    assert_eq!(e.boundary().len(), 1);
+    for t in 0..e.len() {
+        let [a, b, c] = e.corners_of(t);
+        assert!((b - a).cross(c - a).z > 0.0);
+    }
+    // The notch is filled: the square [0, 4]² grown by d with its four corners on 15° chords,
+    // less the small dip where the notch's corner arcs are cut below y = 4 + d (< 0.01).
+    let fans = 4.0 * 6.0 * 0.5 * d * d * (15f64).to_radians().sin();
+    let filled = 16.0 + 4.0 * 4.0 * d + fans;
+    assert!(
+        e.area() < filled && e.area() > filled - 0.01,
+        "{} vs {filled}",
+        e.area()
+    );
+    // Nothing lies beyond the bisector's reach: every new point is within d of the outline.
+    let seg = |p: DVec3, a: DVec3, b: DVec3| {
+        let f = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        (a + (b - a) * f - p).length()
+    };
+    for p in &e.vertices()[m.vertices().len()..] {
+        let dist = (0..outline.len())
+            .map(|i| seg(*p, outline[i], outline[(i + 1) % outline.len()]))
+            .fold(f64::MAX, f64::min);
+        assert!(dist <= d + 1e-9, "{p} at {dist}");
+    }
+}
