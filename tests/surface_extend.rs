@@ -181,14 +181,251 @@ fn a_ring_extended_by_3_never_overlaps_itself() {
     assert!((inner - 1.0).abs() < 0.01, "{inner}");
 }
 
+fn shoelace(p: &[(f64, f64)]) -> f64 {
+    let n = p.len();
+    (0..n)
+        .map(|i| p[i].0 * p[(i + 1) % n].1 - p[(i + 1) % n].0 * p[i].1)
+        .sum::<f64>()
+        / 2.0
+}
+
+/// The outline the L's extension by `d` should have, built here from first principles: the
+/// convex corners rounded by chords every 15° (6 per right angle), the notch corner (1, 1)
+/// mitred at (1 + d, 1 + d) when that lies within the notch edges (d ≤ 1), else the two corner
+/// arcs of (2, 1) and (1, 2) cut where they cross the bisector y = x.
+fn l_extension_outline(d: f64) -> Vec<(f64, f64)> {
+    let fan = |c: (f64, f64), start_deg: f64| -> Vec<(f64, f64)> {
+        (0..=6)
+            .map(|k| {
+                let a = (start_deg + 15.0 * k as f64).to_radians();
+                (c.0 + d * a.cos(), c.1 + d * a.sin())
+            })
+            .collect()
+    };
+    let mut out = Vec::new();
+    out.extend(fan((0.0, 0.0), 180.0));
+    out.extend(fan((2.0, 0.0), 270.0));
+    let a = fan((2.0, 1.0), 0.0);
+    let b = fan((1.0, 2.0), 0.0);
+    if d <= 1.0 {
+        out.extend(a);
+        out.push((1.0 + d, 1.0 + d));
+        out.extend(b);
+    } else {
+        let k = a.iter().position(|p| p.1 > p.0).unwrap();
+        let (p, q) = (a[k - 1], a[k]);
+        let f = (p.1 - p.0) / ((p.1 - p.0) - (q.1 - q.0));
+        let x = (p.0 + (q.0 - p.0) * f, p.1 + (q.1 - p.1) * f);
+        out.extend(&a[..k]);
+        out.push(x);
+        // By symmetry the arc of (1, 2) crosses y = x at the mirror image of the same point.
+        out.extend(b.iter().filter(|p| p.1 > p.0 + 1e-12));
+    }
+    out.extend(fan((0.0, 2.0), 90.0));
+    out
+}
+
 #[test]
-fn concave_corners_are_mitred_without_overlap_or_refused() {
+fn concave_corners_are_mitred_or_trimmed_without_overlap() {
     let l = l_shape();
-    for d in [0.25, 0.5, 0.9] {
+    for d in [0.25, 0.5, 0.9, 1.5, 2.5] {
         let e = extend(&l, d, FRAC_PI_6).unwrap();
         assert_eq!(overlap_area(&e, 300), 0.0, "distance {d}");
+        // The triangles' areas sum to the area of the expected outline, so they cover it
+        // exactly once; and the two sides of the cut meet vertex to vertex (one boundary).
+        let exact = shoelace(&l_extension_outline(d));
+        assert!(
+            (e.area() - exact).abs() < 1e-9,
+            "{d}: {} vs {exact}",
+            e.area()
+        );
+        assert_eq!(e.boundary().len(), 1, "distance {d}");
+        for t in 0..e.len() {
+            let [a, b, c] = e.corners_of(t);
+            assert!((b - a).cross(c - a).z > 0.0, "distance {d}");
+        }
     }
-    // Past the notch's edges (length 1) the mitred strips would fold over: an error.
-    let e = extend(&l, 1.5, FRAC_PI_6).unwrap_err().to_string();
-    assert!(e.contains("folds"), "{e}");
+    // Past the notch the arcs meet on the bisector: no point beyond it on either side.
+    let e = extend(&l, 1.5, FRAC_PI_6).unwrap();
+    assert!(e
+        .vertices()
+        .iter()
+        .any(|p| (p.x - p.y).abs() < 1e-12 && p.x > 2.4));
+}
+
+type P2 = (f64, f64);
+
+/// The outline of a rectilinear polygon (counter-clockwise, unit edges next to each notch)
+/// extended by `d`: 15° chords at convex corners; at a notch corner the mitre when d ≤ 1, else
+/// the neighbouring corners' chord polylines cut where they cross the notch's bisector.
+fn rectilinear_extension_outline(poly: &[(f64, f64)], d: f64) -> Vec<(f64, f64)> {
+    let n = poly.len();
+    let sub = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0, a.1 - b.1);
+    let out_dir = |e: (f64, f64)| (e.1, -e.0);
+    // Per vertex: its chord points, or for a notch the corner and its bisector's normal.
+    let mut parts: Vec<Result<Vec<P2>, (P2, P2)>> = Vec::new();
+    for i in 0..n {
+        let (p, c, q) = (poly[(i + n - 1) % n], poly[i], poly[(i + 1) % n]);
+        let (a, b) = (sub(c, p), sub(q, c));
+        let (oi, oo) = (out_dir(a), out_dir(b));
+        if a.0 * b.1 - a.1 * b.0 > 0.0 {
+            let start = oi.1.atan2(oi.0).to_degrees();
+            parts.push(Ok((0..=6)
+                .map(|k| {
+                    let t = (start + 15.0 * k as f64).to_radians();
+                    (c.0 + d * t.cos(), c.1 + d * t.sin())
+                })
+                .collect()));
+        } else if d <= 1.0 {
+            parts.push(Ok(vec![(c.0 + d * (oi.0 + oo.0), c.1 + d * (oi.1 + oo.1))]));
+        } else {
+            parts.push(Err((c, (oo.0 - oi.0, oo.1 - oi.1))));
+        }
+    }
+    let side = |p: (f64, f64), c: (f64, f64), k: (f64, f64)| (p.0 - c.0) * k.0 + (p.1 - c.1) * k.1;
+    let cross = |p: (f64, f64), q: (f64, f64), c, k| {
+        let (sp, sq) = (side(p, c, k), side(q, c, k));
+        let f = sp / (sp - sq);
+        (p.0 + (q.0 - p.0) * f, p.1 + (q.1 - p.1) * f)
+    };
+    let mut pts: Vec<Vec<(f64, f64)>> = parts
+        .iter()
+        .map(|p| p.clone().unwrap_or_default())
+        .collect();
+    for i in 0..n {
+        if let Err((c, k)) = parts[i] {
+            let (ia, ib) = ((i + n - 1) % n, (i + 1) % n);
+            let a = &pts[ia];
+            let j = a.iter().position(|&p| side(p, c, k) < 0.0).unwrap();
+            let x = cross(a[j - 1], a[j], c, k);
+            pts[ia].truncate(j);
+            pts[i] = vec![x];
+            let b = &pts[ib];
+            let j = b.iter().position(|&p| side(p, c, k) < 0.0).unwrap();
+            let y = cross(b[j - 1], b[j], c, k);
+            assert!((x.0 - y.0).hypot(x.1 - y.1) < 1e-12, "symmetric notch");
+            pts[ib].drain(..j);
+        }
+    }
+    pts.concat()
+}
+
+#[test]
+fn a_cross_trims_all_four_notches() {
+    // Five unit squares in a plus sign: four notch corners, each between two unit edges.
+    let poly = [
+        (1.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (3.0, 1.0),
+        (3.0, 2.0),
+        (2.0, 2.0),
+        (2.0, 3.0),
+        (1.0, 3.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+        (0.0, 1.0),
+        (1.0, 1.0),
+    ];
+    let outline = poly.map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    for d in [0.5, 1.5] {
+        let e = extend(&m, d, FRAC_PI_6).unwrap();
+        assert_eq!(overlap_area(&e, 300), 0.0, "distance {d}");
+        let exact = shoelace(&rectilinear_extension_outline(&poly, d));
+        assert!(
+            (e.area() - exact).abs() < 1e-9,
+            "{d}: {} vs {exact}",
+            e.area()
+        );
+        assert_eq!(e.boundary().len(), 1, "distance {d}");
+    }
+    // The generic outline agrees with the L's own.
+    let l = [
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+    ];
+    for d in [0.5, 1.5] {
+        let (a, b) = (
+            shoelace(&rectilinear_extension_outline(&l, d)),
+            shoelace(&l_extension_outline(d)),
+        );
+        assert!((a - b).abs() < 1e-12, "{a} {b}");
+    }
+}
+
+#[test]
+fn a_slot_too_narrow_for_the_distance_is_an_error() {
+    // [0, 3]² with the slot [1, 2] × [1, 3] cut out: the slot's walls are not adjacent, and
+    // extended by more than half the slot's width their strips collide.
+    let outline = [
+        (0.0, 0.0),
+        (3.0, 0.0),
+        (3.0, 3.0),
+        (2.0, 3.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 3.0),
+        (0.0, 3.0),
+    ]
+    .map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    let e = extend(&m, 0.4, FRAC_PI_6).unwrap();
+    assert_eq!(overlap_area(&e, 300), 0.0);
+    for d in [0.8, 1.5] {
+        let e = extend(&m, d, FRAC_PI_6).unwrap_err().to_string();
+        assert!(
+            e.contains("extend-surface") && e.contains("folds"),
+            "{d}: {e}"
+        );
+    }
+}
+
+#[test]
+fn a_needle_notch_is_trimmed_not_refused() {
+    // [0, 4]² with a notch 0.2 wide at the top coming to a point at (2, 1): its two walls turn
+    // by about 176°, so their mitre would lie 15 d away; trimmed at the bisector x = 2 instead.
+    let outline = [
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 4.0),
+        (2.1, 4.0),
+        (2.0, 1.0),
+        (1.9, 4.0),
+        (0.0, 4.0),
+    ]
+    .map(|(x, y)| DVec3::new(x, y, 0.0));
+    let m = mesh_surface(&Surface::plane(outline.to_vec()).unwrap(), 1e-3).unwrap();
+    let d = 0.5;
+    let e = extend(&m, d, FRAC_PI_6).unwrap();
+    assert_eq!(overlap_area(&e, 400), 0.0);
+    assert_eq!(e.boundary().len(), 1);
+    for t in 0..e.len() {
+        let [a, b, c] = e.corners_of(t);
+        assert!((b - a).cross(c - a).z > 0.0);
+    }
+    // The notch is filled: the square [0, 4]² grown by d with its four corners on 15° chords,
+    // less the small dip where the notch's corner arcs are cut below y = 4 + d (< 0.01).
+    let fans = 4.0 * 6.0 * 0.5 * d * d * (15f64).to_radians().sin();
+    let filled = 16.0 + 4.0 * 4.0 * d + fans;
+    assert!(
+        e.area() < filled && e.area() > filled - 0.01,
+        "{} vs {filled}",
+        e.area()
+    );
+    // Nothing lies beyond the bisector's reach: every new point is within d of the outline.
+    let seg = |p: DVec3, a: DVec3, b: DVec3| {
+        let f = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
+        (a + (b - a) * f - p).length()
+    };
+    for p in &e.vertices()[m.vertices().len()..] {
+        let dist = (0..outline.len())
+            .map(|i| seg(*p, outline[i], outline[(i + 1) % outline.len()]))
+            .fold(f64::MAX, f64::min);
+        assert!(dist <= d + 1e-9, "{p} at {dist}");
+    }
 }

@@ -11,7 +11,10 @@
 //! directions meeting at a vertex are mitred into one, so the strips of one run share their
 //! outer vertices. At a convex corner the gap between the two runs' strips is filled by a fan
 //! (a rounded corner, ≤ 15° per triangle); at a reflex corner the two strips share one mitred
-//! vertex. The strips reuse the boundary vertices, so there are no cracks.
+//! vertex when it lies within both strips; otherwise (a short edge, a sharp notch) each side's
+//! strip and corner fan are trimmed at the bisector plane, the two sides sharing their cut
+//! vertices. The strips reuse the boundary vertices, so there are no cracks; whatever still
+//! overlaps (strips of non-adjacent edges meeting) is an error.
 
 use super::{Mesh, MeshError};
 use glam::DVec3;
@@ -140,9 +143,10 @@ fn is_hole(mesh: &Mesh, l: &Loop) -> bool {
 }
 
 /// [`extend`], with `holes` false leaving the holes' boundaries as they are. The strips are
-/// mitred exactly at concave vertices and fanned at convex corners; an extension whose strips
-/// would overlap themselves or the surface (a concave run or a hole too small for `distance`)
-/// is an error naming the place, never a folded result.
+/// mitred exactly at concave vertices (trimmed at the bisector where the mitre would fall past
+/// the adjacent edges) and fanned at convex corners; an extension whose strips would still
+/// overlap themselves or the surface (a slot or a hole too small for `distance`) is an error
+/// naming the place, never a folded result.
 pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Result<Mesh, MeshError> {
     let angle = check_angle(angle)?;
     if !(distance.is_finite() && distance > 0.0) {
@@ -158,73 +162,7 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
         if !holes && is_hole(mesh, &l) {
             continue;
         }
-        let n = l.verts.len();
-        let mv = mesh.vertices();
-        let p = |i: usize| mv[l.verts[i % n] as usize];
-        let flags = corner_flags(mesh, &l, angle);
-        // Outward direction of each boundary edge, in its facet's plane.
-        let outward: Vec<DVec3> = (0..n)
-            .map(|e| {
-                let d = p(e + 1) - p(e);
-                let [a, b, c] = mesh.corners_of(l.facets[e] as usize);
-                let nrm = (b - a).cross(c - a);
-                d.cross(nrm).normalize_or_zero()
-            })
-            .collect();
-        // For each boundary vertex: the offset vertex its incoming edge uses, and its outgoing.
-        let mut q_in = vec![0u32; n];
-        let mut q_out = vec![0u32; n];
-        for i in 0..n {
-            let o_in = outward[(i + n - 1) % n];
-            let o_out = outward[i];
-            let b = p(i);
-            let a_dir = b - p(i + n - 1);
-            let b_dir = p(i + 1) - b;
-            let [x, y, z] = mesh.corners_of(l.facets[i] as usize);
-            let nrm = (y - x).cross(z - x);
-            let convex = a_dir.cross(b_dir).dot(nrm) > 0.0;
-            if flags[i] && convex {
-                let turn = turn_angle(o_in, o_out);
-                let k = ((turn / (15f64).to_radians()).ceil() as usize).max(1);
-                let first = verts.len() as u32;
-                let axis = o_in.cross(o_out).normalize_or(nrm.normalize_or(DVec3::Z));
-                for s in 0..=k {
-                    let f = s as f64 / k as f64;
-                    // Equal angular steps from o_in to o_out (the last exactly o_out).
-                    let dir = if s == k {
-                        o_out
-                    } else {
-                        glam::DQuat::from_axis_angle(axis, f * turn) * o_in
-                    };
-                    verts.push(b + dir * distance);
-                }
-                for s in 0..k as u32 {
-                    tris.push([l.verts[i], first + s, first + s + 1]);
-                }
-                q_in[i] = first;
-                q_out[i] = first + k as u32;
-            } else {
-                // The exact mitre: where the two edges' offset lines meet.
-                let m = (o_in + o_out).normalize_or(o_out);
-                let c = m.dot(o_out);
-                if c < 0.05 {
-                    return Err(MeshError::Invalid(format!(
-                        "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
-                         extension there",
-                        b.x, b.y, b.z
-                    )));
-                }
-                verts.push(b + m * (distance / c));
-                q_in[i] = (verts.len() - 1) as u32;
-                q_out[i] = q_in[i];
-            }
-        }
-        for e in 0..n {
-            let (v, w) = (l.verts[e], l.verts[(e + 1) % n]);
-            let (qv, qw) = (q_out[e], q_in[(e + 1) % n]);
-            tris.push([w, v, qv]);
-            tris.push([w, qv, qw]);
-        }
+        extend_loop(mesh, &l, distance, angle, &mut verts, &mut tris)?;
     }
     if verts.iter().any(|v| !v.is_finite()) {
         return Err(MeshError::Invalid(
@@ -233,21 +171,305 @@ pub fn extend_with(mesh: &Mesh, distance: f64, angle: f64, holes: bool) -> Resul
     }
     let out = Mesh::new(verts, tris)?;
     if let Some(p) = first_overlap(&out, mesh.len()) {
-        return Err(MeshError::Invalid(format!(
-            "extend-surface: extending by {distance} folds the strips over each other or the \
-             surface near ({:.6}, {:.6}, {:.6}) (a concave boundary or a hole too small for \
-             that distance){}",
-            p.x,
-            p.y,
-            p.z,
-            if holes {
-                "; pass nil as the fourth argument to leave holes alone"
-            } else {
-                ""
-            }
-        )));
+        return Err(overlap_error(distance, holes, p));
     }
     Ok(out)
+}
+
+/// Appends the strips (and corner fans) of one boundary loop to `verts` and `tris`.
+fn extend_loop(
+    mesh: &Mesh,
+    l: &Loop,
+    distance: f64,
+    angle: f64,
+    verts: &mut Vec<DVec3>,
+    tris: &mut Vec<[u32; 3]>,
+) -> Result<(), MeshError> {
+    let n = l.verts.len();
+    let mv = mesh.vertices();
+    let p = |i: usize| mv[l.verts[i % n] as usize];
+    let flags = corner_flags(mesh, l, angle);
+    // Outward direction of each boundary edge, in its facet's plane.
+    let outward: Vec<DVec3> = (0..n)
+        .map(|e| {
+            let d = p(e + 1) - p(e);
+            let [a, b, c] = mesh.corners_of(l.facets[e] as usize);
+            let nrm = (b - a).cross(c - a);
+            d.cross(nrm).normalize_or_zero()
+        })
+        .collect();
+    // For each boundary vertex: the offset vertex its incoming edge uses, and its outgoing.
+    let mut q_in = vec![0u32; n];
+    let mut q_out = vec![0u32; n];
+    let first_tri = tris.len();
+    // What made each new triangle: the strip of an edge or the fan at a vertex.
+    let mut tags: Vec<Piece> = Vec::new();
+    let mut trims: Vec<Trim> = Vec::new();
+    for i in 0..n {
+        let o_in = outward[(i + n - 1) % n];
+        let o_out = outward[i];
+        let b = p(i);
+        let a_dir = b - p(i + n - 1);
+        let b_dir = p(i + 1) - b;
+        let [x, y, z] = mesh.corners_of(l.facets[i] as usize);
+        let nrm = (y - x).cross(z - x);
+        let convex = a_dir.cross(b_dir).dot(nrm) > 0.0;
+        if flags[i] && convex {
+            let first = verts.len() as u32;
+            let dirs = fan_dirs(o_in, o_out, nrm);
+            let k = dirs.len() - 1;
+            verts.extend(dirs.iter().map(|&dir| b + dir * distance));
+            for s in 0..k as u32 {
+                tris.push([l.verts[i], first + s, first + s + 1]);
+                tags.push(Piece::Fan(i));
+            }
+            q_in[i] = first;
+            q_out[i] = first + k as u32;
+        } else {
+            // The exact mitre when it lies within both strips; otherwise each strip is cut
+            // at the bisector after the fact.
+            let mitre = mitre_within(o_in, o_out, a_dir, b_dir, distance);
+            if let Some(mitre) = mitre {
+                verts.push(b + mitre);
+                q_in[i] = (verts.len() - 1) as u32;
+                q_out[i] = q_in[i];
+            } else if convex {
+                // A smooth-run vertex turning nearly back on itself (angle near π).
+                return Err(MeshError::Invalid(format!(
+                    "extend-surface: the boundary folds back at ({}, {}, {}): no clean \
+                     extension there",
+                    b.x, b.y, b.z
+                )));
+            } else {
+                verts.push(b + o_in * distance);
+                verts.push(b + o_out * distance);
+                q_in[i] = (verts.len() - 2) as u32;
+                q_out[i] = (verts.len() - 1) as u32;
+                trims.push(Trim {
+                    at: i,
+                    apex: l.verts[i],
+                    normal: (o_out - o_in).normalize_or_zero(),
+                    cuts_from: 0,
+                });
+            }
+        }
+    }
+    for e in 0..n {
+        let (v, w) = (l.verts[e], l.verts[(e + 1) % n]);
+        let (qv, qw) = (q_out[e], q_in[(e + 1) % n]);
+        tris.push([w, v, qv]);
+        tris.push([w, qv, qw]);
+        tags.extend([Piece::Strip(e), Piece::Strip(e)]);
+    }
+    if !trims.is_empty() {
+        let new_tris = tris.split_off(first_tri);
+        tris.extend(trim_corners(verts, new_tris, tags, &mut trims, n));
+    }
+    Ok(())
+}
+
+/// Directions from `o_in` to `o_out` (both included) in equal steps of at most 15° about the
+/// normal `nrm`: a convex corner's rounded fan.
+fn fan_dirs(o_in: DVec3, o_out: DVec3, nrm: DVec3) -> Vec<DVec3> {
+    let turn = turn_angle(o_in, o_out);
+    let k = ((turn / (15f64).to_radians()).ceil() as usize).max(1);
+    let axis = o_in.cross(o_out).normalize_or(nrm.normalize_or(DVec3::Z));
+    (0..=k)
+        .map(|s| {
+            if s == k {
+                o_out
+            } else {
+                glam::DQuat::from_axis_angle(axis, s as f64 / k as f64 * turn) * o_in
+            }
+        })
+        .collect()
+}
+
+/// The mitre offset at a concave vertex (where the two edges' offset lines meet), when it lies
+/// within both strips: not past the far end of the incoming edge `a_dir` or outgoing `b_dir`.
+fn mitre_within(o_in: DVec3, o_out: DVec3, a_dir: DVec3, b_dir: DVec3, d: f64) -> Option<DVec3> {
+    let m = (o_in + o_out).normalize_or(o_out);
+    let c = m.dot(o_out);
+    let mitre = m * (d / c.max(1e-300));
+    let fits = c >= 0.05
+        && mitre.dot(-a_dir) <= a_dir.length_squared()
+        && mitre.dot(b_dir) <= b_dir.length_squared();
+    (fits || o_in.dot(o_out) > 1.0 - 1e-12).then_some(mitre)
+}
+
+fn overlap_error(distance: f64, holes: bool, p: DVec3) -> MeshError {
+    MeshError::Invalid(format!(
+        "extend-surface: extending by {distance} folds the strips over each other or the \
+         surface near ({:.6}, {:.6}, {:.6}) (a concave boundary or a hole too small for \
+         that distance){}",
+        p.x,
+        p.y,
+        p.z,
+        if holes {
+            "; pass nil as the fourth argument to leave holes alone"
+        } else {
+            ""
+        }
+    ))
+}
+
+#[derive(Clone, Copy)]
+enum Piece {
+    Strip(usize),
+    Fan(usize),
+}
+
+/// A concave boundary vertex whose mitre would fall outside its strips: the strips on either
+/// side are cut by the plane through the vertex with this normal (from o_in towards o_out).
+struct Trim {
+    at: usize,
+    apex: u32,
+    normal: DVec3,
+    /// Vertices from here on are cut points, which the two sides share.
+    cuts_from: usize,
+}
+
+/// Cuts the new triangles of one loop (`n` boundary vertices, `tags` saying what made each) at
+/// each trimmed corner's bisector plane.
+fn trim_corners(
+    verts: &mut Vec<DVec3>,
+    mut new_tris: Vec<[u32; 3]>,
+    mut tags: Vec<Piece>,
+    trims: &mut [Trim],
+    n: usize,
+) -> Vec<[u32; 3]> {
+    let cuts_from = verts.len();
+    for t in trims.iter_mut() {
+        t.cuts_from = cuts_from;
+    }
+    for t in trims.iter() {
+        let (mut kept, mut kept_tags) = (Vec::new(), Vec::new());
+        for (tri, tag) in new_tris.iter().zip(&tags) {
+            // The strip and fan before the corner keep the side along the incoming edge,
+            // those after it the other side; the bisector is where they meet.
+            let sign = match *tag {
+                Piece::Strip(e) | Piece::Fan(e) if e == (t.at + n - 1) % n => 1.0,
+                Piece::Strip(e) if e == t.at => -1.0,
+                Piece::Fan(e) if e == (t.at + 1) % n => -1.0,
+                _ => 0.0,
+            };
+            let before = kept.len();
+            if sign == 0.0 {
+                kept.push(*tri);
+            } else {
+                clip(verts, *tri, t, sign, &mut kept);
+            }
+            kept_tags.extend(std::iter::repeat_n(*tag, kept.len() - before));
+        }
+        (new_tris, tags) = split_on_seam(verts, kept, kept_tags, t);
+    }
+    new_tris
+}
+
+/// Keeps the part of `tri` where `sign · normal · (p − apex) ≥ 0`, in the same orientation.
+fn clip(verts: &mut Vec<DVec3>, tri: [u32; 3], t: &Trim, sign: f64, out: &mut Vec<[u32; 3]>) {
+    let apex = verts[t.apex as usize];
+    let scale = tri
+        .iter()
+        .map(|&v| (verts[v as usize] - apex).length())
+        .fold(0.0, f64::max);
+    let eps = 1e-12 * scale.max(1e-300);
+    let dist = tri.map(|v| sign * t.normal.dot(verts[v as usize] - apex));
+    if dist.iter().all(|&d| d >= -eps) {
+        out.push(tri);
+        return;
+    }
+    if dist.iter().all(|&d| d <= eps) {
+        return;
+    }
+    let mut poly = Vec::with_capacity(4);
+    for k in 0..3 {
+        let (a, b) = (tri[k], tri[(k + 1) % 3]);
+        let (da, db) = (dist[k], dist[(k + 1) % 3]);
+        if da >= -eps {
+            poly.push(a);
+        }
+        if (da > eps && db < -eps) || (da < -eps && db > eps) {
+            let (pa, pb) = (verts[a as usize], verts[b as usize]);
+            let x = pa + (pb - pa) * (da / (da - db));
+            // Both triangles sharing this edge cut it at one shared vertex.
+            let id = verts[t.cuts_from..]
+                .iter()
+                .position(|q| (*q - x).length() <= eps)
+                .map(|j| (t.cuts_from + j) as u32)
+                .unwrap_or_else(|| {
+                    verts.push(x);
+                    (verts.len() - 1) as u32
+                });
+            poly.push(id);
+        }
+    }
+    for k in 1..poly.len().saturating_sub(1) {
+        let tri = [poly[0], poly[k], poly[k + 1]];
+        let [a, b, c] = tri.map(|v| verts[v as usize]);
+        if (b - a).cross(c - a).length() > eps * eps {
+            out.push(tri);
+        }
+    }
+}
+
+/// Splits the triangles whose edges run along the cut plane at the cut vertices of the other
+/// side lying inside those edges, so the two sides meet vertex to vertex (no T-junctions).
+fn split_on_seam(
+    verts: &[DVec3],
+    tris: Vec<[u32; 3]>,
+    tags: Vec<Piece>,
+    t: &Trim,
+) -> (Vec<[u32; 3]>, Vec<Piece>) {
+    let apex = verts[t.apex as usize];
+    let on = |v: u32| {
+        let p = verts[v as usize];
+        t.normal.dot(p - apex).abs() <= 1e-9 * (p - apex).length().max(1e-300)
+    };
+    let mut seam: Vec<u32> = tris.iter().flatten().copied().filter(|&v| on(v)).collect();
+    seam.sort_unstable();
+    seam.dedup();
+    let mut out = Vec::with_capacity(tris.len());
+    let mut out_tags = Vec::with_capacity(tris.len());
+    for (tri, tag) in tris.into_iter().zip(tags) {
+        let mut done = false;
+        for k in 0..3 {
+            let (u, v, w) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+            if !(on(u) && on(v)) {
+                continue;
+            }
+            let (pu, pv) = (verts[u as usize], verts[v as usize]);
+            let len2 = (pv - pu).length_squared();
+            let mut inner: Vec<(f64, u32)> = seam
+                .iter()
+                .filter(|&&s| s != u && s != v)
+                .filter_map(|&s| {
+                    let f = (verts[s as usize] - pu).dot(pv - pu) / len2;
+                    let off = (pu + (pv - pu) * f - verts[s as usize]).length();
+                    (f > 1e-12 && f < 1.0 - 1e-12 && off <= 1e-9 * len2.sqrt()).then_some((f, s))
+                })
+                .collect();
+            if inner.is_empty() {
+                continue;
+            }
+            inner.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut prev = u;
+            for (_, s) in inner {
+                out.push([prev, s, w]);
+                out_tags.push(tag);
+                prev = s;
+            }
+            out.push([prev, v, w]);
+            out_tags.push(tag);
+            done = true;
+            break;
+        }
+        if !done {
+            out.push(tri);
+            out_tags.push(tag);
+        }
+    }
+    (out, out_tags)
 }
 
 /// A point where a strip triangle (index ≥ `first_new`) overlaps another triangle with positive
