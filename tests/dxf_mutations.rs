@@ -112,3 +112,25 @@ fn a_block_name_with_a_wide_character_at_byte_12_reads() {
     // The whole input the fuzzer saved.
     check(include_bytes!("dxf_support/fuzz-block-name.dxf"));
 }
+
+/// Found by the release fuzz run (fuzz_inputs, seed 23): the group code ` 40142857` in a SPLINE
+/// was kept, written back as -30711 (16 bits), and the copy did not read. A code outside DXF's
+/// range is now an error with its line, and `--recover` skips the pair.
+#[test]
+fn a_group_code_out_of_range_is_an_error_not_a_wrapped_code() {
+    let data = include_bytes!("dxf_support/fuzz-group-code.dxf");
+    let e = read_dxf(data, false).expect_err("strict read refuses the damaged code");
+    let msg = e.to_string();
+    assert!(
+        msg.contains("group code 40142857 is out of range") && msg.contains("line 739"),
+        "{msg}"
+    );
+    let d = read_dxf(data, true).expect("reads with --recover");
+    let bytes = render(&d, Format::Dxf, &OutputOptions::default()).unwrap();
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(
+        !text.lines().any(|l| l.trim() == "-30711"),
+        "wrapped code written"
+    );
+    check(data);
+}

@@ -51,6 +51,9 @@ pub enum ValueType {
     Binary,
 }
 
+/// The group codes a DXF file can hold (AutoLISP's negative codes -5..-1 included).
+const VALID_CODES: std::ops::RangeInclusive<i32> = -5..=1071;
+
 pub fn value_type(code: i32) -> ValueType {
     match code {
         10..=59 | 110..=149 | 210..=239 | 460..=469 | 1010..=1059 => ValueType::Float,
@@ -304,9 +307,12 @@ impl<'a> Tagger<'a> {
             if text.is_empty() && self.at >= self.data.len() {
                 return None;
             }
-            let code = std::str::from_utf8(text)
+            let parsed = std::str::from_utf8(text)
                 .ok()
                 .and_then(|s| s.parse::<i32>().ok());
+            // A number outside DXF's codes is damage, not a code: kept, it would be written
+            // back as another (codes are stored in 16 bits) and the copy would not read.
+            let code = parsed.filter(|c| VALID_CODES.contains(c));
             let (value_at, value_line) = (self.at, self.line);
             let Some(value) = self.line() else {
                 if self.recover {
@@ -333,13 +339,18 @@ impl<'a> Tagger<'a> {
                     self.line = value_line;
                 }
                 None => {
-                    return Some(Err(DxfReadError::at(
-                        Some(pos),
-                        format!(
+                    let message = match parsed {
+                        Some(c) => format!(
+                            "group code {c} is out of range (DXF codes run from {} to {})",
+                            VALID_CODES.start(),
+                            VALID_CODES.end()
+                        ),
+                        None => format!(
                             "expected a group code (an integer), found {:?}",
                             String::from_utf8_lossy(&code_line[..code_line.len().min(40)])
                         ),
-                    )))
+                    };
+                    return Some(Err(DxfReadError::at(Some(pos), message)));
                 }
             }
         }
