@@ -298,20 +298,32 @@ pub(super) fn fillet_curves(
         EntityKind::Arc { center, .. } => center.z,
         _ => 0.0,
     };
+    let (c1, c2) = (rebuilt(&e1, sol.c1), rebuilt(&e2, sol.c2));
+    let arc = sol.arc.map(|(c, start, end)| (c.extend(z), start, end));
+    replace_and_add_arc(d, (h1, e1, c1), (h2, e2, c2), arc, r)
+}
+
+/// Puts the trimmed pair in place of the picked objects and adds the fillet arc (center,
+/// start, end; CCW about +Z), on their layer when they share one, else on the current layer.
+pub(super) fn replace_and_add_arc(
+    d: &mut Drawing,
+    (h1, e1, t1): (u64, Entity, Entity),
+    (h2, e2, t2): (u64, Entity, Entity),
+    arc: Option<(DVec3, f64, f64)>,
+    r: f64,
+) -> Result<(), Exn> {
     let (layer, color) = if e1.layer == e2.layer {
         (e1.layer.clone(), e1.color)
     } else {
         (d.current_layer().to_string(), None)
     };
-    d.replace(h1, rebuilt(&e1, sol.c1))
-        .map_err(|x| cmd_err("FILLET", x))?;
-    d.replace(h2, rebuilt(&e2, sol.c2))
-        .map_err(|x| cmd_err("FILLET", x))?;
-    if let Some((c, start, end)) = sol.arc {
+    d.replace(h1, t1).map_err(|x| cmd_err("FILLET", x))?;
+    d.replace(h2, t2).map_err(|x| cmd_err("FILLET", x))?;
+    if let Some((center, start, end)) = arc {
         let mut n = Entity::new(
             &layer,
             EntityKind::Arc {
-                center: c.extend(z),
+                center,
                 radius: r,
                 start: norm(start),
                 end: norm(end),

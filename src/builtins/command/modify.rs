@@ -492,16 +492,11 @@ fn fillet_lines(
         };
         Entity { kind, ..e }
     };
-    let (layer, color) = if e1.layer == e2.layer {
-        (e1.layer.clone(), e1.color)
-    } else {
-        (d.current_layer().to_string(), None)
-    };
-    d.replace(h1, trim(e1, a1, b1, k1, t1))
-        .map_err(|x| cmd_err("FILLET", x))?;
-    d.replace(h2, trim(e2, a2, b2, k2, t2))
-        .map_err(|x| cmd_err("FILLET", x))?;
-    if r > 0.0 {
+    let (c1, c2) = (
+        trim(e1.clone(), a1, b1, k1, t1),
+        trim(e2.clone(), a2, b2, k2, t2),
+    );
+    let arc = (r > 0.0).then(|| {
         let c = corner + (d1 + d2).normalize() * (r / (theta / 2.0).sin());
         let (s1, s2) = ((t1 - c).to_angle(), (t2 - c).to_angle());
         // The fillet is the short arc between the tangent points.
@@ -510,28 +505,7 @@ fn fillet_lines(
         } else {
             (s2, s1)
         };
-        let tau = std::f64::consts::TAU;
-        // atan2 rounding leaves 2e-16 where the angle is 0.
-        let norm = |a: f64| {
-            let a = a.rem_euclid(tau);
-            if a < 1e-12 || tau - a < 1e-12 {
-                0.0
-            } else {
-                a
-            }
-        };
-        let mut n = Entity::new(
-            &layer,
-            EntityKind::Arc {
-                center: c.extend(z),
-                radius: r,
-                start: norm(start),
-                end: norm(end),
-                normal: DVec3::Z,
-            },
-        );
-        n.color = color;
-        d.add(n).map_err(|x| cmd_err("FILLET", x))?;
-    }
-    Ok(())
+        (c.extend(z), start, end)
+    });
+    super::fillet::replace_and_add_arc(d, (h1, e1, c1), (h2, e2, c2), arc, r)
 }
