@@ -25,19 +25,25 @@ pub(crate) enum LayerCmd {
     Names(&'static str),
 }
 
+/// The colour numbers AutoCAD's prompts accept by name (ACI 1 to 7).
+pub(super) fn named_color(name: &str) -> Option<i64> {
+    let c = match name.trim().to_uppercase().as_str() {
+        "RED" => 1,
+        "YELLOW" => 2,
+        "GREEN" => 3,
+        "CYAN" => 4,
+        "BLUE" => 5,
+        "MAGENTA" => 6,
+        "WHITE" => 7,
+        _ => return None,
+    };
+    Some(c)
+}
+
 fn color_number(input: &Input, raw: &Value) -> Option<i16> {
     let c = match input {
         Input::Number(x) if x.fract() == 0.0 => *x as i64,
-        _ => match input.name(raw)?.trim().to_uppercase().as_str() {
-            "RED" => 1,
-            "YELLOW" => 2,
-            "GREEN" => 3,
-            "CYAN" => 4,
-            "BLUE" => 5,
-            "MAGENTA" => 6,
-            "WHITE" => 7,
-            _ => return None,
-        },
+        _ => named_color(&input.name(raw)?)?,
     };
     (1..=255).contains(&c).then_some(c as i16)
 }

@@ -134,18 +134,14 @@ impl ChpropCmd {
 fn color_of(input: &Input, raw: &Value) -> Option<Option<i16>> {
     let c = match input {
         Input::Number(x) if x.fract() == 0.0 => *x as i64,
-        _ => match input.name(raw)?.trim().to_uppercase().as_str() {
-            "BYLAYER" => 256,
-            "BYBLOCK" => 0,
-            "RED" => 1,
-            "YELLOW" => 2,
-            "GREEN" => 3,
-            "CYAN" => 4,
-            "BLUE" => 5,
-            "MAGENTA" => 6,
-            "WHITE" => 7,
-            _ => return None,
-        },
+        _ => {
+            let name = input.name(raw)?;
+            match name.trim().to_uppercase().as_str() {
+                "BYLAYER" => 256,
+                "BYBLOCK" => 0,
+                _ => super::layer::named_color(&name)?,
+            }
+        }
     };
     match c {
         256 => Some(None),
