@@ -134,3 +134,25 @@ fn a_group_code_out_of_range_is_an_error_not_a_wrapped_code() {
     );
     check(data);
 }
+
+/// Found by the release fuzz run (fuzz_inputs, seed 29, after 328,447 inputs): a NUL byte in a
+/// layer name past the first 4 KiB was read as text, written back nearer the start, and the
+/// copy was then taken for a binary file. A NUL in an ASCII value is now an error with its line;
+/// `--recover` cuts the value there, as C readers do.
+#[test]
+fn a_nul_byte_in_a_value_is_an_error_and_never_written() {
+    let data = include_bytes!("dxf_support/fuzz-nul-value.dxf");
+    // Past the first 4 KiB, where a NUL no longer marks the whole file as binary.
+    let mut clean = format!("999\n{}\n", "x".repeat(5000)).into_bytes();
+    clean.extend_from_slice(b"  0\nSECTION\n  2\nENTITIES\n  0\nLINE\n  8\nA");
+    clean.extend_from_slice(b"\0B\n 10\n0\n 20\n0\n 11\n1\n 21\n1\n  0\nENDSEC\n  0\nEOF\n");
+    let e = read_dxf(&clean, false).expect_err("strict read refuses it");
+    let msg = e.to_string();
+    assert!(msg.contains("NUL byte") && msg.contains("line 10"), "{msg}");
+    for d in [&data[..], &clean[..]] {
+        let read = read_dxf(d, true).expect("reads with --recover");
+        let bytes = render(&read, Format::Dxf, &OutputOptions::default()).unwrap();
+        assert!(!bytes.contains(&0), "a NUL written");
+        check(d);
+    }
+}

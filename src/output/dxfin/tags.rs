@@ -324,6 +324,21 @@ impl<'a> Tagger<'a> {
                     "the file ends after a group code, without its value (odd number of lines: truncated file?)",
                 )));
             };
+            // A NUL ends a string for the C readers; kept, it would make the saved copy look
+            // binary to every reader (this one's included), so it is damage here too.
+            let value = match memchr(0, value) {
+                None => value,
+                Some(_) if !self.recover => {
+                    return Some(Err(DxfReadError::at(
+                        Some(Pos::Line(value_line)),
+                        "a NUL byte in a value: binary content in an ASCII DXF",
+                    )))
+                }
+                Some(i) => {
+                    self.recovered += 1;
+                    &value[..i]
+                }
+            };
             match code {
                 Some(code) => {
                     return Some(Ok(Raw {
