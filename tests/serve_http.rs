@@ -8,7 +8,7 @@ use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 mod cli_support;
 
@@ -89,8 +89,11 @@ fn status(port: u16) -> serde_json::Value {
 
 /// The next `run` event of an open /events stream, as JSON.
 fn next_event(r: &mut impl BufRead) -> serde_json::Value {
+    // The server's keep-alive comments would otherwise let a missed re-run hang the test.
+    let end = Instant::now() + Duration::from_secs(60);
     let mut line = String::new();
     loop {
+        assert!(Instant::now() < end, "no event within 60 s");
         line.clear();
         assert!(r.read_line(&mut line).unwrap() > 0, "event stream ended");
         if let Some(data) = line.strip_prefix("data: ") {

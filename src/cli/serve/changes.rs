@@ -1,10 +1,10 @@
 //! Waiting for a save of any of a run's files. Directories are watched, not files: editors
 //! often replace a file by renaming a new one over it.
-// `watch` has the same loop inline; the lead may fold it onto this at merge.
+// `watch` has the same loop inline; it should move onto this one.
 
 use std::path::PathBuf;
 use std::sync::mpsc;
-use std::time::Duration;
+use std::time::{Duration, SystemTime};
 
 use notify::{RecommendedWatcher, RecursiveMode, Watcher};
 
@@ -31,9 +31,10 @@ impl Changes {
         })
     }
 
-    /// Blocks until one of `files` changes, then lets a burst of events settle (an editor's
-    /// save is several). False when the watcher has stopped.
-    pub fn wait(&mut self, files: &[PathBuf]) -> bool {
+    /// Blocks until one of `files` changes after `since` (when the run that read them
+    /// started), then lets a burst of events settle (an editor's save is several). False when
+    /// the watcher has stopped.
+    pub fn wait(&mut self, files: &[PathBuf], since: SystemTime) -> bool {
         let files: Vec<PathBuf> = files.iter().filter_map(|f| f.canonicalize().ok()).collect();
         for f in &files {
             if let Some(d) = f.parent() {
@@ -45,16 +46,27 @@ impl Changes {
                 }
             }
         }
-        loop {
-            let Ok(paths) = self.rx.recv() else {
-                return false;
-            };
-            let hit = paths.iter().any(|p| {
-                let p = p.canonicalize().unwrap_or_else(|_| p.clone());
-                files.contains(&p)
-            });
-            if hit {
-                break;
+        // A directory is only watched from here on: a save during the run, or before the
+        // watch was added, shows in the file's time alone. A time ahead of the clock (a file
+        // from an archive) is not a save, or it would re-run forever.
+        let now = SystemTime::now();
+        let saved_meanwhile = files.iter().any(|f| {
+            std::fs::metadata(f)
+                .and_then(|m| m.modified())
+                .is_ok_and(|t| t > since && t <= now)
+        });
+        if !saved_meanwhile {
+            loop {
+                let Ok(paths) = self.rx.recv() else {
+                    return false;
+                };
+                let hit = paths.iter().any(|p| {
+                    let p = p.canonicalize().unwrap_or_else(|_| p.clone());
+                    files.contains(&p)
+                });
+                if hit {
+                    break;
+                }
             }
         }
         // A short settle: the page's latency budget is 100 ms from save to update.

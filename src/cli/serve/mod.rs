@@ -197,9 +197,11 @@ pub fn serve(args: &ServeArgs, common: &Common) -> i32 {
         }
     };
     // Announced after the first run: whoever reads the address finds a drawing (or error).
+    let mut started = std::time::SystemTime::now();
     let mut read = run_once(args, common, &shared);
     eprintln!("serving http://{addr}/ (Ctrl-C stops)");
-    while watch.wait(&read) {
+    while watch.wait(&read, started) {
+        started = std::time::SystemTime::now();
         read = run_once(args, common, &shared);
     }
     EXIT_OK
