@@ -244,7 +244,10 @@ fn profile_implicit(ax: &Axis, r: &Revolve, mer: &Meridian, tol: f64) -> Vec<Cro
         let (lo, hi) = (i.saturating_sub(1), (i + 1).min(ts.len() - 1));
         let same = fs[lo] * fs[i] > 0.0 && fs[i] * fs[hi] > 0.0;
         if same && fs[i].abs() <= fs[lo].abs() && fs[i].abs() <= fs[hi].abs() {
-            let t = golden_min(&|t| g(t).abs(), ts[lo], ts[hi]);
+            let (a, b) = (ts[lo], ts[hi]);
+            // Down to the last representable step of the bracket.
+            let tol = 1e-16 * (1.0 + a.abs().max(b.abs()));
+            let t = crate::geom::minimize::golden_section_min(|t| g(t).abs(), a, b, 200, tol);
             if g(t).abs() <= tol {
                 roots.push(t);
             } else if fs[i].abs() <= tol {
@@ -289,32 +292,6 @@ fn bisect(g: &impl Fn(f64) -> f64, mut a: f64, mut b: f64, ga: f64) -> f64 {
     } else {
         b
     }
-}
-
-/// The minimiser of a unimodal `h` on `[a, b]` by golden-section search.
-fn golden_min(h: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let k = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (b - k * (b - a), a + k * (b - a));
-    let (mut hc, mut hd) = (h(c), h(d));
-    for _ in 0..200 {
-        if b - a <= 1e-16 * (1.0 + a.abs()) {
-            break;
-        }
-        if hc < hd {
-            b = d;
-            d = c;
-            hd = hc;
-            c = b - k * (b - a);
-            hc = h(c);
-        } else {
-            a = c;
-            c = d;
-            hc = hd;
-            d = a + k * (b - a);
-            hd = h(d);
-        }
-    }
-    0.5 * (a + b)
 }
 
 /// Two profiles about one axis: crossings of their sampled meridian curves, refined by Newton
