@@ -4,9 +4,16 @@
 //
 // Wrapped in a counter of each thread's net allocation: the memory budget (--max-memory)
 // is checked against it (lang/memory.rs).
+#[cfg(not(feature = "uncounted"))]
 #[global_allocator]
 static GLOBAL: lispcad::lang::memory::Counting<mimalloc::MiMalloc> =
     lispcad::lang::memory::Counting(mimalloc::MiMalloc);
+
+// For measuring what the accounting costs (bench/run-alloc-cost.sh) only: with no counter the
+// thread's total never moves, so every budget check passes and --max-memory is no bound.
+#[cfg(feature = "uncounted")]
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 #[cfg(target_os = "linux")]
 extern "C" {

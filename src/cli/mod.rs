@@ -7,6 +7,7 @@ use clap::{Args, Parser, Subcommand};
 
 pub mod analysis;
 pub mod batch;
+mod changes;
 pub mod check;
 pub mod completions;
 pub mod convert;

@@ -3,11 +3,9 @@
 //! and happen only after a successful run).
 
 use std::path::PathBuf;
-use std::sync::mpsc;
-use std::time::Duration;
+use std::time::{Duration, SystemTime};
 
 use clap::Args;
-use notify::{RecursiveMode, Watcher};
 
 use super::{diag, Common, EXIT_USAGE};
 use crate::lang::ErrorKind;
@@ -81,46 +79,18 @@ pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
         eprintln!("error: {m}");
         return EXIT_USAGE;
     }
-    let (tx, rx) = mpsc::channel();
-    let mut watcher = match notify::recommended_watcher(move |ev: notify::Result<notify::Event>| {
-        if let Ok(ev) = ev {
-            if ev.kind.is_modify() || ev.kind.is_create() || ev.kind.is_remove() {
-                let _ = tx.send(ev.paths);
-            }
-        }
-    }) {
-        Ok(w) => w,
+    let mut changes = match super::changes::Changes::new() {
+        Ok(c) => c,
         Err(e) => {
             eprintln!("error: cannot watch files: {e}");
             return EXIT_USAGE;
         }
     };
-    // Watch directories, not files: editors often replace a file by renaming a new one over it.
-    let mut dirs: Vec<PathBuf> = Vec::new();
     loop {
+        let started = SystemTime::now();
         let read = run_once(args, common);
-        let files: Vec<PathBuf> = read.iter().filter_map(|f| f.canonicalize().ok()).collect();
-        for f in &files {
-            if let Some(d) = f.parent() {
-                if !dirs.iter().any(|x| x == d) {
-                    if let Err(e) = watcher.watch(d, RecursiveMode::NonRecursive) {
-                        eprintln!("warning: cannot watch {}: {e}", d.display());
-                    }
-                    dirs.push(d.to_path_buf());
-                }
-            }
+        if !changes.wait(&read, started, Duration::from_millis(100)) {
+            return 0;
         }
-        // Wait for a change to one of the files, then let a burst of events settle.
-        loop {
-            let Ok(paths) = rx.recv() else { return 0 };
-            let hit = paths.iter().any(|p| {
-                let p = p.canonicalize().unwrap_or_else(|_| p.clone());
-                files.contains(&p)
-            });
-            if hit {
-                break;
-            }
-        }
-        while rx.recv_timeout(Duration::from_millis(100)).is_ok() {}
     }
 }

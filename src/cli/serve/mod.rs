@@ -4,11 +4,11 @@
 //! publishes each result into a `Shared` slot; the HTTP handlers, on their own threads, only
 //! read the latest one. `/events` streams one Server-Sent Event per publication.
 
-mod changes;
 mod http;
 
 use std::path::PathBuf;
 use std::sync::{Arc, Condvar, Mutex};
+use std::time::Duration;
 
 use clap::Args;
 
@@ -189,7 +189,7 @@ pub fn serve(args: &ServeArgs, common: &Common) -> i32 {
             return EXIT_USAGE;
         }
     };
-    let mut watch = match changes::Changes::new() {
+    let mut watch = match super::changes::Changes::new() {
         Ok(w) => w,
         Err(e) => {
             eprintln!("error: cannot watch files: {e}");
@@ -200,7 +200,8 @@ pub fn serve(args: &ServeArgs, common: &Common) -> i32 {
     let mut started = std::time::SystemTime::now();
     let mut read = run_once(args, common, &shared);
     eprintln!("serving http://{addr}/ (Ctrl-C stops)");
-    while watch.wait(&read, started) {
+    // A short settle: the page's latency budget is 100 ms from save to update.
+    while watch.wait(&read, started, Duration::from_millis(20)) {
         started = std::time::SystemTime::now();
         read = run_once(args, common, &shared);
     }

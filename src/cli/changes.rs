@@ -1,6 +1,5 @@
 //! Waiting for a save of any of a run's files. Directories are watched, not files: editors
-//! often replace a file by renaming a new one over it.
-// `watch` has the same loop inline; it should move onto this one.
+//! often replace a file by renaming a new one over it. Used by `watch` and `serve`.
 
 use std::path::PathBuf;
 use std::sync::mpsc;
@@ -33,8 +32,8 @@ impl Changes {
 
     /// Blocks until one of `files` changes after `since` (when the run that read them
     /// started), then lets a burst of events settle (an editor's save is several). False when
-    /// the watcher has stopped.
-    pub fn wait(&mut self, files: &[PathBuf], since: SystemTime) -> bool {
+    /// the watcher has stopped. `settle`: how long the events must pause.
+    pub fn wait(&mut self, files: &[PathBuf], since: SystemTime, settle: Duration) -> bool {
         let files: Vec<PathBuf> = files.iter().filter_map(|f| f.canonicalize().ok()).collect();
         for f in &files {
             if let Some(d) = f.parent() {
@@ -69,8 +68,7 @@ impl Changes {
                 }
             }
         }
-        // A short settle: the page's latency budget is 100 ms from save to update.
-        while self.rx.recv_timeout(Duration::from_millis(20)).is_ok() {}
+        while self.rx.recv_timeout(settle).is_ok() {}
         true
     }
 }
