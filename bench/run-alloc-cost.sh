@@ -6,7 +6,10 @@
 #   - bench/run-lang.sh's programs, with the uncounted binary as the "before" column
 #     (ratios lispcad/before > 1 mean the accounting costs time);
 #   - the temple batch (scripts/temple.lsp over bench/temple/variants.csv to DXF + SVG, -j 1),
-#     REPS times each, median CPU and wall, paired ratio, and the outputs' digests compared.
+#     REPS times each, median CPU and wall, paired ratio, and the outputs' digests compared;
+#   - when valgrind is installed, the instructions each binary executes on the same programs
+#     and on the first 100 temple rows (cachegrind, no cache simulation): a count that does not
+#     depend on the machine's load, so a cost of a few per cent shows even on a busy machine.
 #
 #   bench/run-alloc-cost.sh [REPS]      (default 9; PROGS as for run-lang.sh; NOBUILD=1 reuses
 #                                        target/release/lispcad{,-uncounted} as they are)
@@ -23,10 +26,10 @@ BEFORE=target/release/lispcad-uncounted bash bench/run-lang.sh "$reps"
 
 echo
 echo "## temple batch, 1000 variants to DXF + SVG, -j 1"
-exec python3 - "$reps" <<'PY'
-import hashlib, os, shutil, statistics, subprocess, sys, tempfile, time
+exec python3 - "$reps" "${PROGS:-fib loop list strings alist empty}" <<'PY'
+import hashlib, os, re, shutil, statistics, subprocess, sys, tempfile, time
 
-reps = int(sys.argv[1])
+reps, progs = int(sys.argv[1]), sys.argv[2].split()
 bins = {"counted": "target/release/lispcad", "uncounted": "target/release/lispcad-uncounted"}
 table = "bench/temple/variants.csv"
 
@@ -67,4 +70,26 @@ with tempfile.TemporaryDirectory() as tmp:
               f"{statistics.median(ratios):.3f}")
     print("outputs:", "identical" if digests["counted"] == digests["uncounted"] else "DIFFERENT")
     print("load average after:", " ".join(f"{x:.2f}" for x in os.getloadavg()))
+
+    if shutil.which("valgrind"):
+        with open(table) as f:
+            head = f.readlines()[:101]
+        short = os.path.join(tmp, "rows100.csv")
+        with open(short, "w") as f:
+            f.writelines(head)
+        work = [(p, ["run", f"bench/lang/{p}.lsp"]) for p in progs]
+        work.append(("temple 100 rows", ["batch", "scripts/temple.lsp", "--vary", short, "-o",
+                                         f"{tmp}/i/t-{{row}}.dxf", "-o", f"{tmp}/i/t-{{row}}.svg",
+                                         "-j", "1"]))
+        print("\ninstructions executed (valgrind cachegrind)")
+        print("| workload | counted | uncounted | counted/uncounted |\n|---|---|---|---|")
+        for name, args in work:
+            n = {}
+            for b, binary in bins.items():
+                r = subprocess.run(["valgrind", "--tool=cachegrind", "--cache-sim=no",
+                                    "--cachegrind-out-file=/dev/null", binary] + args,
+                                   stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                n[b] = int(re.search(r"I\s+refs:\s+([\d,]+)", r.stderr).group(1).replace(",", ""))
+            print(f"| {name} | {n['counted']:,} | {n['uncounted']:,} "
+                  f"| {n['counted'] / n['uncounted']:.4f} |")
 PY

@@ -262,3 +262,31 @@ fn batch_starts_its_workers_under_a_small_address_space_limit() {
         std::fs::remove_dir_all(dir.path().join("out")).unwrap();
     }
 }
+
+#[test]
+fn a_request_the_system_refused_is_not_left_counted() {
+    // Each safearray asks for 800 MB at once, within the 8 GB budget but beyond the 600 MB
+    // address space: the system refuses it. Were the refused requests left in the thread's
+    // count, the twentieth message would name 16 GB and the list after it would be refused.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("r.lsp"),
+        "(setq msgs nil)\n\
+         (repeat 20 (setq msgs (cons (vl-catch-all-error-message (vl-catch-all-apply \
+           'vlax-make-safearray (list vlax-vbDouble '(0 . 99999999)))) msgs)))\n\
+         (princ (car msgs)) (princ \"|\") (princ (last msgs)) (princ \"|\")\n\
+         (setq l nil) (repeat 100000 (setq l (cons 1 l))) (princ (length l))\n",
+    )
+    .unwrap();
+    let o = lispcad_limited(
+        "600000000",
+        &["--max-memory", "8G", "run", "r.lsp"],
+        dir.path(),
+    );
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}{out}", err(&o));
+    let parts: Vec<&str> = out.split('|').collect();
+    assert!(parts[0].starts_with("out of memory: "), "{out}");
+    assert_eq!(parts[0], parts[1], "{out}");
+    assert_eq!(parts[2], "100000", "{out}");
+}
