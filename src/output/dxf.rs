@@ -13,6 +13,7 @@ use glam::{DVec2, DVec3};
 
 use super::drawing::{is_flat, Drawing, Entity, EntityKind};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
+use super::record::TagList;
 use crate::geom::frame::Ocs;
 
 // Fixed structural handles.
@@ -92,7 +93,12 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     // Entities first into their own buffer: they allocate handles the header's $HANDSEED
     // must exceed.
     let mut ents = DxfWriter::new();
-    for e in d.entities() {
+    for (e, src) in d.entities_with_sources() {
+        if let (EntityKind::Unmodelled { .. }, Some(s)) = (&e.kind, src) {
+            // An INSERT (with its ATTRIBs) or ATTDEF a script made: kept as its groups.
+            kept_groups(&mut ents, e, s);
+            continue;
+        }
         match d.new_entity_xdata(e.handle) {
             None => write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc),
             Some(x) => {
@@ -260,6 +266,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.str(0, "ENDTAB");
     w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
+    write_blocks(&mut w, d);
     w.out.push_str(&ents.out);
 
     w.str(0, "ENDSEC");
@@ -348,8 +355,7 @@ fn write_view_ucs(w: &mut DxfWriter) {
     w.str(0, "ENDTAB");
 }
 
-/// The tables after APPID (none depends on the drawing), the BLOCKS section, and the head of
-/// the ENTITIES section.
+/// The DIMSTYLE table, after APPID (it does not depend on the drawing).
 fn write_tables_tail(w: &mut DxfWriter) {
     table(w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
     w.str(100, "AcDbDimStyleTable");
@@ -374,8 +380,18 @@ fn write_tables_tail(w: &mut DxfWriter) {
     w.int(272, 2);
     w.handle(340, H_STYLE_STANDARD);
     w.str(0, "ENDTAB");
+}
 
-    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
+/// The BLOCK_RECORD table, the BLOCKS section (model and paper space, then the blocks a
+/// script defined) and the head of the ENTITIES section.
+fn write_blocks(w: &mut DxfWriter, d: &Drawing) {
+    let groups = |w: &mut DxfWriter, t: &TagList| {
+        for (c, v) in t.iter() {
+            w.str(c as u16, v);
+        }
+    };
+    let user = d.new_block_records();
+    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2 + user.len());
     for (h, name, layout) in [
         (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
         (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
@@ -389,6 +405,9 @@ fn write_tables_tail(w: &mut DxfWriter) {
         );
         w.str(2, name);
         w.handle(340, layout);
+    }
+    for r in user {
+        groups(w, r);
     }
     w.str(0, "ENDTAB");
     w.str(0, "ENDSEC");
@@ -433,6 +452,9 @@ fn write_tables_tail(w: &mut DxfWriter) {
         }
         w.str(8, "0");
         w.str(100, "AcDbBlockEnd");
+    }
+    for r in d.block_section() {
+        groups(w, r);
     }
     w.str(0, "ENDSEC");
 
@@ -799,6 +821,21 @@ pub(crate) fn write_entity(
             w.float(42, *end);
         }
         EntityKind::Unmodelled { .. } => {}
+    }
+}
+
+/// An entity kept as groups (INSERT with ATTRIBs, ATTDEF), with the drawing's layer and
+/// colour when a script changed them.
+fn kept_groups(w: &mut DxfWriter, e: &Entity, s: &super::drawing::SourceRecord) {
+    let mut t = s.tags.clone();
+    if e.layer != s.original.layer {
+        t = t.with(8, &e.layer, 100);
+    }
+    if e.color != s.original.color {
+        t = t.with(62, &e.color.unwrap_or(256).to_string(), 8);
+    }
+    for (c, v) in t.iter() {
+        w.str(c as u16, v);
     }
 }
 

@@ -4,6 +4,7 @@
 pub mod aci;
 pub mod atomic;
 pub mod biarc;
+pub mod blocks;
 pub mod cam;
 pub mod cam_tidy;
 pub mod document;

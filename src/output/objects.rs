@@ -32,6 +32,10 @@ pub struct Extras {
     /// Handles given to table records of a drawing made from scratch (`tblobjname`):
     /// (table, name, handle).
     table_handles: Vec<(String, String, u64)>,
+    /// Block definitions of a drawing made from scratch (`blocks.rs`): their BLOCKS
+    /// section records and their BLOCK_RECORD table records.
+    pub(super) blocks: Vec<TagList>,
+    pub(super) block_records: Vec<TagList>,
 }
 
 impl Extras {
@@ -40,6 +44,7 @@ impl Extras {
             && self.appids.is_empty()
             && self.objects.is_empty()
             && self.table_handles.is_empty()
+            && self.blocks.is_empty()
     }
 }
 

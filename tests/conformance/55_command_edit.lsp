@@ -96,7 +96,7 @@
 (command "_.offset" 0 ci)
 ;!! OFFSET: expected a positive distance or T, got the number 0
 (command "_.insert" "door" '(0 0 0) 1 1 0)
-;!! INSERT: block "door" is not defined (lispcad inserts the blocks of a drawing opened with --open, R2000 or later)
+;!! INSERT: block "door" is not defined
 (command "_.-insert" "c:/blocks/door.dwg" '(0 0 0) 1 1 0)
 ;!! INSERT: inserting a drawing file ("c:/blocks/door.dwg") is not supported; name a block of the opened drawing
 (command "_.mline")

@@ -43,13 +43,13 @@ fn num(v: Option<&str>) -> f64 {
 
 /// The block's base point and ATTDEFs, from the opened drawing's BLOCKS section.
 fn block_def(d: &Drawing, name: &str) -> Result<(String, DVec3, Vec<AttDef>), Exn> {
-    let Some(doc) = d.document().filter(|doc| !doc.is_r12()) else {
+    if d.document().is_some_and(|doc| doc.is_r12()) {
         return Err(cmd_err(
             "INSERT",
-            format!("block \"{name}\" is not defined (lispcad inserts the blocks of a drawing opened with --open, R2000 or later)"),
+            format!("block \"{name}\": lispcad inserts blocks into R2000 and later drawings only"),
         ));
-    };
-    let recs = doc.section_records("BLOCKS");
+    }
+    let recs = d.block_section();
     let start = recs
         .iter()
         .position(|r| {
@@ -177,10 +177,7 @@ impl InsertCmd {
             return Ok(());
         };
         let d = it.ext::<Drawing>();
-        let owner = d
-            .document()
-            .and_then(|doc| doc.model_space_owner())
-            .unwrap_or(0);
+        let owner = d.model_space_record();
         let layer = d.current_layer().to_string();
         let h = d.next_handle();
         let hex = |h: u64| format!("{h:X}");
@@ -297,10 +294,7 @@ pub(crate) fn explode_insert(it: &mut Interp, h: u64) -> Result<(), Exn> {
         * DMat4::from_rotation_z(num(t.get(50)).to_radians())
         * DMat4::from_scale(DVec3::splat(sx))
         * DMat4::from_translation(-base);
-    let recs = d
-        .document()
-        .map(|doc| doc.section_records("BLOCKS"))
-        .unwrap_or(&[]);
+    let recs = d.block_section();
     let start = recs
         .iter()
         .position(|r| {

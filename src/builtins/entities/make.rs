@@ -35,7 +35,6 @@ pub struct PendingPolyline {
 /// AutoCAD entity types lispcad does not model: `entmake` says so instead of returning a
 /// silent nil (which AutoCAD gives for unknown types).
 const UNSUPPORTED: &[&str] = &[
-    "INSERT",
     "MTEXT",
     "HATCH",
     "DIMENSION",
@@ -46,10 +45,6 @@ const UNSUPPORTED: &[&str] = &[
     "REGION",
     "LEADER",
     "MLEADER",
-    "BLOCK",
-    "ENDBLK",
-    "ATTDEF",
-    "ATTRIB",
     "3DSOLID",
     "MLINE",
     "IMAGE",
@@ -301,10 +296,37 @@ fn make_entity(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<u64>, Exn
     Ok(drawing(it).add(e).ok())
 }
 
+/// An entity made while a block definition is open: it goes into the block.
+fn make_in_block(
+    it: &mut Interp,
+    ty: &str,
+    g: &Groups,
+    xdata: Option<TagList>,
+) -> Result<bool, Exn> {
+    let Ok(color) = color_of(it, g)? else {
+        return Ok(false);
+    };
+    let layer = match g.string(it, 8)? {
+        Some(l) => l,
+        None => current_layer(it),
+    };
+    let Some(kind) = kind_of(it, ty, g)? else {
+        return Ok(false);
+    };
+    let e = Entity {
+        handle: 0,
+        layer,
+        color,
+        kind,
+    };
+    Ok(super::block_make::add_to_block(it, e, xdata).is_some())
+}
+
 pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(list) = a.first().filter(|v| v.truthy()) else {
-        // (entmake) cancels a POLYLINE in progress.
+        // (entmake) cancels a POLYLINE, INSERT or block definition in progress.
         it.ext::<EntityState>().pending_polyline = None;
+        super::block_make::cancel(it);
         return Ok(Value::Nil);
     };
     let g = Groups::parse(it, list)?;
@@ -316,15 +338,23 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         super::objects::XdataIn::Unregistered => return Ok(Value::Nil),
         x => x,
     };
+    let pending_insert = it.ext::<EntityState>().pending_insert.is_some();
     let made = match ty.as_str() {
         "VERTEX" if pending => vertex(it, &g)?,
         "SEQEND" if pending => seqend(it)?,
-        "VERTEX" | "SEQEND" => false,
-        _ if pending => {
-            // Any other entity abandons the unfinished polyline, as AutoCAD does.
+        "ATTRIB" if pending_insert => super::block_make::attrib(it, &g)?,
+        "SEQEND" if pending_insert => super::block_make::seqend(it)?,
+        "VERTEX" | "SEQEND" | "ATTRIB" => false,
+        _ if pending || pending_insert => {
+            // Any other entity abandons the unfinished polyline or INSERT, as AutoCAD does.
             it.ext::<EntityState>().pending_polyline = None;
+            it.ext::<EntityState>().pending_insert = None;
             false
         }
+        "BLOCK" => super::block_make::block(it, &g)?,
+        "ENDBLK" => return super::block_make::endblk(it),
+        "INSERT" => super::block_make::insert(it, &g)?,
+        "ATTDEF" => super::block_make::attdef(it, &g)?,
         "POLYLINE" => {
             let apps = match xdata {
                 super::objects::XdataIn::Apps(apps) => Some(apps),
@@ -337,8 +367,21 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         "XRECORD" | "DICTIONARY" => super::objects::make_object(it, &ty, &g)?.is_some(),
         t if UNSUPPORTED.contains(&t) => {
             return Err(err(format!(
-                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, LAYER, APPID, XRECORD and DICTIONARY are)"
+                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, BLOCK...ENDBLK, INSERT, ATTDEF, ATTRIB, LAYER, APPID, XRECORD and DICTIONARY are)"
             )))
+        }
+        t if super::block_make::in_block(it) => {
+            let xdata = match xdata {
+                super::objects::XdataIn::Apps(apps) => {
+                    let mut x = TagList::new();
+                    for (c, v) in apps.iter().flat_map(|(_, t)| t.iter()) {
+                        x.push(c, v);
+                    }
+                    Some(x)
+                }
+                _ => None,
+            };
+            make_in_block(it, t, &g, xdata)?
         }
         t => match make_entity(it, t, &g)? {
             Some(h) => {
@@ -428,6 +471,16 @@ fn seqend(it: &mut Interp) -> Result<bool, Exn> {
             closed: pl.closed,
         },
     };
+    if super::block_make::in_block(it) {
+        let x = pl.xdata.map(|apps| {
+            let mut x = TagList::new();
+            for (c, v) in apps.iter().flat_map(|(_, t)| t.iter()) {
+                x.push(c, v);
+            }
+            x
+        });
+        return Ok(super::block_make::add_to_block(it, e, x).is_some());
+    }
     let Ok(h) = drawing(it).add(e) else {
         return Ok(false);
     };

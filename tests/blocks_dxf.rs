@@ -1,0 +1,184 @@
+//! Block definitions made with `entmake` (BLOCK … ENDBLK), block references made with
+//! `entmake` and the INSERT command, and table-record handles, written to DXF and read back
+//! by ezdxf (tests/validate/blocks_dump.py): on a drawing made from scratch and on one ezdxf
+//! made, opened with `--open`. Every file loads with ezdxf's strict reader and audits with
+//! 0 errors and 0 fixes.
+
+mod output_support;
+
+use std::path::Path;
+use std::process::Command;
+
+use output_support::{manifest, python};
+use serde_json::Value;
+
+fn ezdxf(mode: &str, path: &Path) -> Value {
+    let out = Command::new(python())
+        .arg(manifest().join("tests/validate/blocks_dump.py"))
+        .arg(mode)
+        .arg(path)
+        .output()
+        .expect("running blocks_dump.py");
+    assert!(
+        out.status.success(),
+        "blocks_dump.py {mode} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    if mode == "make" {
+        return Value::Null;
+    }
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON from blocks_dump.py");
+    assert_eq!(v["audit_errors"], 0, "audit: {}", v["messages"]);
+    assert_eq!(v["audit_fixes"], 0, "audit: {}", v["messages"]);
+    v
+}
+
+fn lispcad(dir: &Path, script: &str, args: &[&str]) -> String {
+    std::fs::write(dir.join("s.lsp"), script).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir)
+        .arg("run")
+        .arg("s.lsp")
+        .args(args)
+        .output()
+        .expect("running lispcad");
+    assert!(
+        out.status.success(),
+        "lispcad failed:\n{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).to_string()
+}
+
+fn close(a: &Value, b: &[f64]) {
+    let a: Vec<f64> = a
+        .as_array()
+        .unwrap_or_else(|| panic!("not a list: {a}"))
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(a.len(), b.len(), "{a:?} vs {b:?}");
+    for (x, y) in a.iter().zip(b) {
+        assert!((x - y).abs() < 1e-9, "{a:?} vs {b:?}");
+    }
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+}
+
+/// The model-space entities of a type.
+fn of_type<'a>(doc: &'a Value, ty: &str) -> Vec<&'a Value> {
+    doc["modelspace"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["type"] == ty)
+        .collect()
+}
+
+const BLOCK_SCRIPT: &str = r#"
+(entmake '((0 . "BLOCK") (2 . "BOX") (70 . 0) (10 1.0 1.0 0.0)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 4 0 0)))
+(entmake '((0 . "CIRCLE") (10 2 2 0) (40 . 1.5) (8 . "Parts")))
+(entmake '((0 . "ATTDEF") (10 0 3 0) (40 . 0.5) (1 . "def") (2 . "TAG1") (3 . "Give tag") (70 . 0)))
+(entmake '((0 . "POLYLINE") (66 . 1) (70 . 1)))
+(entmake '((0 . "VERTEX") (10 0 0 0)))
+(entmake '((0 . "VERTEX") (10 1 0 0) (42 . 0.5)))
+(entmake '((0 . "VERTEX") (10 1 1 0)))
+(entmake '((0 . "SEQEND")))
+(princ (entmake '((0 . "ENDBLK"))))
+(entmake (list '(0 . "INSERT") '(2 . "BOX") '(66 . 1) '(10 10 10 0) '(41 . 2.0) '(42 . 2.0) '(43 . 2.0) (cons 50 (/ pi 6))))
+(entmake '((0 . "ATTRIB") (10 9 16 0) (40 . 1.0) (1 . "hello") (2 . "TAG1") (70 . 0)))
+(entmake '((0 . "SEQEND")))
+(command "_.-INSERT" "BOX" '(30 0) "" "" 0 "typed")
+(entmake '((0 . "BLOCK") (2 . "*U") (70 . 1) (10 0 0 0)))
+(entmake '((0 . "INSERT") (2 . "BOX") (10 1 1 0)))
+(princ (entmake '((0 . "ENDBLK"))))
+(entmake '((0 . "INSERT") (2 . "*U1") (10 50 0 0)))
+"#;
+
+#[test]
+fn entmake_blocks_in_a_new_drawing_read_back_by_ezdxf() {
+    let dir = tempfile::tempdir().unwrap();
+    let printed = lispcad(dir.path(), BLOCK_SCRIPT, &["-o", "out.dxf"]);
+    assert!(printed.contains("BOX*U1"), "{printed}");
+    let doc = ezdxf("check", &dir.path().join("out.dxf"));
+    let b = &doc["blocks"]["BOX"];
+    assert_eq!(b["flags"], 2, "non-constant ATTDEF: flag 2");
+    close(&b["base"], &[1.0, 1.0, 0.0]);
+    let types: Vec<&str> = b["entities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["type"].as_str().unwrap())
+        .collect();
+    assert_eq!(types, ["LINE", "CIRCLE", "ATTDEF", "POLYLINE"]);
+    let ents = b["entities"].as_array().unwrap();
+    for e in ents {
+        assert_eq!(e["owner"], b["record"], "owned by the block record");
+    }
+    close(&ents[0]["end"], &[4.0, 0.0, 0.0]);
+    assert_eq!(ents[1]["layer"], "Parts");
+    assert_eq!(ents[1]["radius"], 1.5);
+    assert_eq!(ents[2]["tag"], "TAG1");
+    assert_eq!(ents[2]["text"], "def");
+    assert_eq!(ents[3]["bulges"][1], 0.5);
+    assert_eq!(ents[3]["closed"], true);
+    let anon = &doc["blocks"]["*U1"];
+    assert_eq!(anon["flags"], 1);
+    assert_eq!(anon["entities"][0]["name"], "BOX");
+
+    let inserts = of_type(&doc, "INSERT");
+    assert_eq!(inserts.len(), 3);
+    let first = inserts[0];
+    assert_eq!(first["name"], "BOX");
+    close(&first["insert"], &[10.0, 10.0, 0.0]);
+    close(&first["scale"], &[2.0, 2.0, 2.0]);
+    assert!((num(&first["rotation"]) - 30.0).abs() < 1e-9);
+    assert_eq!(first["attribs"][0]["text"], "hello");
+    assert_eq!(first["attribs"][0]["tag"], "TAG1");
+    // The command places the attribute at the ATTDEF's point relative to the base point.
+    let typed = inserts[1];
+    close(&typed["insert"], &[30.0, 0.0, 0.0]);
+    assert_eq!(typed["attribs"][0]["text"], "typed");
+    close(&typed["attribs"][0]["insert"], &[29.0, 2.0, 0.0]);
+    assert_eq!(inserts[2]["name"], "*U1");
+}
+
+#[test]
+fn entmake_blocks_in_an_opened_drawing_read_back_by_ezdxf() {
+    let dir = tempfile::tempdir().unwrap();
+    ezdxf("make", &dir.path().join("in.dxf"));
+    let script = r#"
+(entmake '((0 . "BLOCK") (2 . "NEW") (10 0 0 0)))
+(entmake '((0 . "ARC") (10 0 0 0) (40 . 2.0) (50 . 0.0) (51 . 1.5707963267948966)))
+(entmake '((0 . "INSERT") (2 . "PY") (10 5 0 0)))
+(entmake '((0 . "ENDBLK")))
+(entmake '((0 . "INSERT") (2 . "NEW") (10 7 7 0)))
+(command "_.INSERT" "PY" '(2 2) 2 "" 90 "Ada")
+;; A redefinition replaces the block's entities and keeps its record.
+(setq rec (tblobjname "BLOCK" "NEW"))
+(entmake '((0 . "BLOCK") (2 . "NEW") (10 0 0 0)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 0 9 0)))
+(entmake '((0 . "ENDBLK")))
+(princ (eq rec (tblobjname "BLOCK" "NEW")))
+"#;
+    let printed = lispcad(dir.path(), script, &["--open", "in.dxf", "-o", "out.dxf"]);
+    assert_eq!(printed.trim(), "T");
+    let doc = ezdxf("check", &dir.path().join("out.dxf"));
+    let new = &doc["blocks"]["NEW"]["entities"];
+    assert_eq!(new.as_array().unwrap().len(), 1);
+    close(&new[0]["end"], &[0.0, 9.0, 0.0]);
+    assert_eq!(doc["blocks"]["PY"]["entities"].as_array().unwrap().len(), 2);
+    let inserts = of_type(&doc, "INSERT");
+    assert_eq!(inserts.len(), 2);
+    assert_eq!(inserts[0]["name"], "NEW");
+    let py = inserts[1];
+    assert_eq!(py["name"], "PY");
+    close(&py["scale"], &[2.0, 2.0, 2.0]);
+    assert_eq!(py["attribs"][0]["text"], "Ada");
+    // ATTDEF at (0 1), base (1 0): (-1 1) scaled by 2, turned 90° about (2 2).
+    close(&py["attribs"][0]["insert"], &[0.0, 0.0, 0.0]);
+}
