@@ -182,3 +182,48 @@ fn entmake_blocks_in_an_opened_drawing_read_back_by_ezdxf() {
     // ATTDEF at (0 1), base (1 0): (-1 1) scaled by 2, turned 90° about (2 2).
     close(&py["attribs"][0]["insert"], &[0.0, 0.0, 0.0]);
 }
+
+#[test]
+fn tblobjname_handles_are_the_ones_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = r#"
+(entmake '((0 . "LAYER") (2 . "Parts") (62 . 3) (6 . "DASHED")))
+(regapp "LCAPP")
+(entmake '((0 . "TEXT") (10 0 0 0) (40 . 1.0) (1 . "x") (7 . "Mine")))
+(entmake '((0 . "BLOCK") (2 . "BOX") (10 0 0 0)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 1 0 0)))
+(entmake '((0 . "ENDBLK")))
+(foreach r '(("LAYER" "0") ("LAYER" "Parts") ("LTYPE" "Continuous") ("LTYPE" "DASHED")
+             ("STYLE" "Standard") ("STYLE" "Mine") ("APPID" "ACAD") ("APPID" "LCAPP")
+             ("BLOCK" "BOX"))
+  (princ (strcat (car r) " " (cadr r) " " (cdr (assoc 5 (entget (apply 'tblobjname r)))) "\n")))
+;; A layer made after the query gets a handle of its own.
+(entmake '((0 . "LAYER") (2 . "Late")))
+(entmake '((0 . "LINE") (10 0 0 0) (11 1 0 0) (8 . "Late")))
+"#;
+    let printed = lispcad(dir.path(), script, &["-o", "out.dxf"]);
+    let doc = ezdxf("check", &dir.path().join("out.dxf"));
+    let mut seen = Vec::new();
+    for line in printed.lines() {
+        let parts: Vec<&str> = line.split(' ').collect();
+        let (table, name, handle) = (parts[0], parts[1], parts[2]);
+        let table = if table == "BLOCK" {
+            "BLOCK_RECORD"
+        } else {
+            table
+        };
+        assert_eq!(
+            doc["tables"][table][name], handle,
+            "{table} {name}: tblobjname gave {handle}, the file has {}",
+            doc["tables"][table]
+        );
+        seen.push(handle.to_string());
+    }
+    assert_eq!(seen.len(), 9);
+    // Fixed records keep their fixed handles; the others differ from one another.
+    assert_eq!(seen[2], "1A");
+    assert_eq!(seen[6], "1B");
+    assert_eq!(seen[4], "1D");
+    let late = doc["tables"]["LAYER"]["Late"].as_str().unwrap();
+    assert!(!seen.iter().any(|h| h == late));
+}

@@ -86,9 +86,10 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             }
         }
     }
-    let layer_handles: Vec<u64> = d.layers().iter().map(|_| alloc()).collect();
-    let ltype_handles: Vec<u64> = linetypes.iter().map(|_| alloc()).collect();
-    let style_handles: Vec<u64> = styles.iter().map(|_| alloc()).collect();
+    let layer_names = d.layers().iter().map(|l| l.name.as_str());
+    let layer_handles = record_handles(d, "LAYER", layer_names, &mut alloc);
+    let ltype_handles = record_handles(d, "LTYPE", linetypes.iter(), &mut alloc);
+    let style_handles = record_handles(d, "STYLE", styles.iter(), &mut alloc);
 
     // Entities first into their own buffer: they allocate handles the header's $HANDSEED
     // must exceed.
@@ -110,7 +111,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         }
     }
     let appids = d.appids();
-    let appid_handles: Vec<u64> = appids.iter().skip(1).map(|_| alloc()).collect();
+    let appid_handles = record_handles(d, "APPID", appids.iter().skip(1), &mut alloc);
     let handseed = alloc();
 
     // ---- HEADER ----
@@ -292,6 +293,21 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.out.push_str(prepared(&OBJECTS, write_objects));
     w.out
+}
+
+/// Handles for table records: the one `tblobjname` gave a record, else a fresh one.
+fn record_handles<S: AsRef<str>>(
+    d: &Drawing,
+    table: &str,
+    names: impl Iterator<Item = S>,
+    alloc: &mut impl FnMut() -> u64,
+) -> Vec<u64> {
+    names
+        .map(|n| {
+            d.given_table_handle(table, n.as_ref())
+                .unwrap_or_else(&mut *alloc)
+        })
+        .collect()
 }
 
 fn table(w: &mut DxfWriter, name: &str, h: u64, count: usize) {
