@@ -327,12 +327,16 @@ fn offset_toward(it: &mut Interp, h: u64, dist: Option<f64>, p: DVec3) -> Result
     Ok(())
 }
 
-/// FILLET: "R" sets FILLETRAD; two lines or arcs (entity names, or `(ename point)` lists whose
-/// point says which part of each to keep) are trimmed or extended to the tangent points of
-/// an arc of that radius (to their corner for radius 0), and the arc is added.
+/// FILLET: "R" sets FILLETRAD; two lines, arcs or circles (entity names, or `(ename point)`
+/// lists whose point says which part of each to keep) are trimmed or extended to the tangent
+/// points of an arc of that radius (to their corner for radius 0; a circle stays whole), and
+/// the arc is added; "P" and a 2D polyline fillet its every vertex, and two picked adjacent
+/// segments of one polyline the vertex they share (`fillet_pline.rs`).
 pub(crate) enum FilletCmd {
     First,
     Radius,
+    /// After the Polyline option: the polyline to fillet at every vertex.
+    Polyline,
     Second(u64, Option<DVec3>),
 }
 
@@ -361,6 +365,7 @@ impl FilletCmd {
                 Input::Enter => return Ok(Step::Done),
                 Input::Word(_) => match input.keyword().as_deref() {
                     Some("R" | "RADIUS") => FilletCmd::Radius,
+                    Some("P" | "POLYLINE") => FilletCmd::Polyline,
                     // The next command: FILLET was left waiting after its radius.
                     _ => return Ok(Step::DoneNotConsumed),
                 },
@@ -377,11 +382,26 @@ impl FilletCmd {
                 }
                 _ => return Err(unexpected("FILLET", "a radius >= 0", input)),
             },
+            FilletCmd::Polyline => match picked(input, raw) {
+                Some((h, _)) => {
+                    let r = it
+                        .ext::<crate::builtins::system::SysVars>()
+                        .real("FILLETRAD");
+                    super::fillet_pline::fillet_polyline(it, h, r)?;
+                    return Ok(Step::Done);
+                }
+                None => return Err(unexpected("FILLET", "a 2D polyline", input)),
+            },
             FilletCmd::Second(h1, p1) => match picked(input, raw) {
                 Some((h2, p2)) => {
                     let r = it
                         .ext::<crate::builtins::system::SysVars>()
                         .real("FILLETRAD");
+                    if h1 == h2 {
+                        // Two segments of one polyline.
+                        super::fillet_pline::fillet_segments(it, h1, (p1, p2), r)?;
+                        return Ok(Step::Done);
+                    }
                     let both_lines = [h1, h2].iter().all(|h| {
                         matches!(
                             it.ext::<Drawing>().get(*h).map(|e| &e.kind),
