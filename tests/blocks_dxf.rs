@@ -227,3 +227,65 @@ fn tblobjname_handles_are_the_ones_written() {
     let late = doc["tables"]["LAYER"]["Late"].as_str().unwrap();
     assert!(!seen.iter().any(|h| h == late));
 }
+
+/// The model space after ezdxf explodes the block references of `path`.
+fn ezdxf_explode(path: &Path) -> Value {
+    let out = Command::new(python())
+        .arg(manifest().join("tests/validate/blocks_dump.py"))
+        .arg("explode")
+        .arg(path)
+        .output()
+        .expect("running blocks_dump.py");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn explode_with_non_uniform_scale_matches_ezdxf_explode() {
+    let dir = tempfile::tempdir().unwrap();
+    let blocks = r#"
+(entmake '((0 . "BLOCK") (2 . "STRETCH") (10 1 0 0)))
+(entmake '((0 . "LINE") (10 0 0 0) (11 3 1 0)))
+(entmake '((0 . "CIRCLE") (10 1 0 0) (40 . 1.0)))
+(entmake (list '(0 . "ARC") '(10 3 1 0) '(40 . 1.5) '(50 . 0.5) (cons 51 2.5)))
+(entmake '((0 . "POINT") (10 2 2 0)))
+(entmake '((0 . "ENDBLK")))
+(entmake (list '(0 . "INSERT") '(2 . "STRETCH") '(10 10 10 0) '(41 . 2.0) '(42 . 0.5) '(43 . 1.0) (cons 50 (/ pi 5))))
+"#;
+    lispcad(dir.path(), blocks, &["-o", "ref.dxf"]);
+    let exploded = format!("{blocks}(command \"_.EXPLODE\" (entlast) \"\")\n");
+    lispcad(dir.path(), &exploded, &["-o", "out.dxf"]);
+    let want = ezdxf_explode(&dir.path().join("ref.dxf"));
+    let got = &ezdxf("check", &dir.path().join("out.dxf"))["modelspace"];
+    let (want, got) = (want.as_array().unwrap(), got.as_array().unwrap());
+    let types = |v: &[Value]| -> Vec<String> {
+        v.iter()
+            .map(|e| e["type"].as_str().unwrap().to_string())
+            .collect()
+    };
+    assert_eq!(types(got), types(want));
+    assert_eq!(types(got), ["LINE", "ELLIPSE", "ELLIPSE", "POINT"]);
+    for (g, w) in got.iter().zip(want) {
+        for key in [
+            "start",
+            "end",
+            "location",
+            "center",
+            "start_point",
+            "end_point",
+            "axes",
+        ] {
+            if let Some(wv) = w.get(key) {
+                let wv: Vec<f64> = wv.as_array().unwrap().iter().map(num).collect();
+                close(&g[key], &wv);
+            }
+        }
+    }
+    // The full circle stays a full ellipse.
+    let full = got[1]["end_param"].as_f64().unwrap() - got[1]["start_param"].as_f64().unwrap();
+    assert!((full - std::f64::consts::TAU).abs() < 1e-9);
+}

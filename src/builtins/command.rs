@@ -24,6 +24,8 @@ use crate::output::{Drawing, Entity, EntityKind};
 mod draw;
 #[path = "command/edit.rs"]
 mod edit;
+#[path = "command/explode.rs"]
+mod explode;
 #[path = "command/fillet.rs"]
 mod fillet;
 #[path = "command/fillet_pline.rs"]

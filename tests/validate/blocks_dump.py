@@ -4,6 +4,8 @@ tests/blocks_dxf.rs.
 Usage:
   blocks_dump.py make OUT.dxf   writes an R2010 drawing with a block "PY" (a line and an
                                 ATTDEF "NAME") for lispcad to open
+  blocks_dump.py explode IN.dxf the model-space entities (as check lists them) after ezdxf
+                                explodes every block reference in it
   blocks_dump.py check IN.dxf   reads IN with ezdxf's strict reader, audits it, and prints
                                 JSON: audit errors/fixes and messages; every block (name,
                                 flags, base point, record handle, entities); the model-space
@@ -53,6 +55,10 @@ def entity(e):
         d["start_param"] = e.dxf.start_param
         d["end_param"] = e.dxf.end_param
         d["extrusion"] = vec(e.dxf.extrusion)
+        d["start_point"] = vec(e.start_point)
+        d["end_point"] = vec(e.end_point)
+        major = Vec3(e.dxf.major_axis).magnitude
+        d["axes"] = [major, major * e.dxf.ratio]
     elif t == "POINT":
         d["location"] = vec(e.dxf.location)
     elif t == "LWPOLYLINE":
@@ -110,6 +116,15 @@ def check(path):
     print(json.dumps(out))
 
 
+def explode(path):
+    """The model space after ezdxf explodes every block reference in it (one level)."""
+    doc = ezdxf.readfile(path)
+    msp = doc.modelspace()
+    for ins in list(msp.query("INSERT")):
+        ins.explode()
+    print(json.dumps([entity(e) for e in msp]))
+
+
 def make(path):
     doc = ezdxf.new("R2010")
     b = doc.blocks.new("PY", base_point=(1, 0))
@@ -120,4 +135,4 @@ def make(path):
 
 
 if __name__ == "__main__":
-    {"check": check, "make": make}[sys.argv[1]](sys.argv[2])
+    {"check": check, "make": make, "explode": explode}[sys.argv[1]](sys.argv[2])

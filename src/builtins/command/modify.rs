@@ -172,7 +172,7 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
         return Ok(());
     };
     if matches!(&e.kind, EntityKind::Unmodelled { dxf_type } if dxf_type == "INSERT") {
-        return super::insert::explode_insert(it, h);
+        return super::explode::explode_insert(it, h);
     }
     let (pts, bulges, closed, ocs, z) = match &e.kind {
         EntityKind::LwPolyline {
