@@ -289,3 +289,63 @@ fn explode_with_non_uniform_scale_matches_ezdxf_explode() {
     let full = got[1]["end_param"].as_f64().unwrap() - got[1]["start_param"].as_f64().unwrap();
     assert!((full - std::f64::consts::TAU).abs() < 1e-9);
 }
+
+/// The entity of `ty` in the model space (exactly one).
+fn one<'a>(doc: &'a Value, ty: &str) -> &'a Value {
+    let all = of_type(doc, ty);
+    assert_eq!(all.len(), 1, "one {ty} in {}", doc["modelspace"]);
+    all[0]
+}
+
+#[test]
+fn chprop_line_type_weight_thickness_and_scale_read_back_by_ezdxf() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = r#"
+(entmake '((0 . "LINE") (10 0 0 0) (11 10 0 0) (62 . 1)))
+(command "_.CHPROP" (entlast) "" "_LT" "DASHED" "_LW" 0.3 "_T" 2.5 "_S" 0.5 "")
+(entmake '((0 . "CIRCLE") (10 0 0 0) (40 . 2.0)))
+(command "_.CHANGE" (entlast) "" "_P" "_T" -1 "_LW" "_ByBlock" "")
+(entmake '((0 . "LWPOLYLINE") (100 . "AcDbEntity") (100 . "AcDbPolyline") (90 . 2) (70 . 0) (10 0.0 0.0) (10 4.0 0.0)))
+(command "_.CHPROP" (entlast) "" "_T" 3 "_LT" "Continuous" "")
+"#;
+    lispcad(dir.path(), script, &["-o", "out.dxf"]);
+    let doc = ezdxf("check", &dir.path().join("out.dxf"));
+    let line = one(&doc, "LINE");
+    assert_eq!(line["linetype"], "DASHED");
+    assert_eq!(line["lineweight"], 30);
+    assert_eq!(line["ltscale"], 0.5);
+    assert_eq!(line["thickness"], 2.5);
+    assert_eq!(line["color"], 1);
+    assert!(doc["tables"]["LTYPE"].get("DASHED").is_some());
+    let circle = one(&doc, "CIRCLE");
+    assert_eq!(circle["thickness"], -1.0);
+    assert_eq!(circle["lineweight"], -2);
+    let pl = one(&doc, "LWPOLYLINE");
+    assert_eq!(pl["thickness"], 3.0);
+    assert_eq!(pl["linetype"], "Continuous");
+
+    // An opened drawing: the file's CIRCLE and a new LINE; a line type the file lacks is
+    // refused there.
+    ezdxf("make", &dir.path().join("in.dxf"));
+    let script = r#"
+(setq c (ssname (ssget "X" '((0 . "CIRCLE"))) 0))
+(command "_.CHPROP" c "" "_LT" "Continuous" "_LW" 0.5 "_T" 4 "_S" 3 "")
+(entmake '((0 . "LINE") (10 0 0 0) (11 10 0 0)))
+(command "_.CHPROP" (entlast) "" "_LW" 0.13 "_T" 1 "")
+(princ (vl-catch-all-error-message (vl-catch-all-apply 'command (list "_.CHPROP" c "" "_LT" "DASHDOT" ""))))
+"#;
+    let printed = lispcad(dir.path(), script, &["--open", "in.dxf", "-o", "out2.dxf"]);
+    assert_eq!(
+        printed.trim(),
+        "CHPROP: line type \"DASHDOT\" is not loaded in the drawing"
+    );
+    let doc = ezdxf("check", &dir.path().join("out2.dxf"));
+    let circle = one(&doc, "CIRCLE");
+    assert_eq!(circle["linetype"], "Continuous");
+    assert_eq!(circle["lineweight"], 50);
+    assert_eq!(circle["thickness"], 4.0);
+    assert_eq!(circle["ltscale"], 3.0);
+    let line = one(&doc, "LINE");
+    assert_eq!(line["lineweight"], 13);
+    assert_eq!(line["thickness"], 1.0);
+}

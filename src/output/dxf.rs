@@ -66,8 +66,9 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
 
     // Names the tables must define: line types and text styles used by layers and entities.
     let mut linetypes: Vec<String> = Vec::new();
-    for l in d.layers() {
-        let lt = &l.linetype;
+    let layer_types = d.layers().iter().map(|l| l.linetype.clone());
+    for lt in layer_types.chain(d.entity_linetypes()) {
+        let lt = &lt;
         let builtin = ["BYBLOCK", "BYLAYER", "CONTINUOUS"]
             .iter()
             .any(|b| lt.eq_ignore_ascii_case(b));
@@ -100,14 +101,19 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             kept_groups(&mut ents, e, s);
             continue;
         }
-        match d.new_entity_xdata(e.handle) {
-            None => write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc),
-            Some(x) => {
-                let mut one = DxfWriter::new();
-                write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
-                ents.out
-                    .push_str(&super::objects::splice_xdata(&one.out, x, false));
-            }
+        let xdata = d.new_entity_xdata(e.handle);
+        if xdata.is_none() && d.props(e.handle).is_none() {
+            write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc);
+            continue;
+        }
+        let mut one = DxfWriter::new();
+        write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
+        let text = d.with_props(e.handle, &e.kind, one.out);
+        match xdata {
+            None => ents.out.push_str(&text),
+            Some(x) => ents
+                .out
+                .push_str(&super::objects::splice_xdata(&text, x, false)),
         }
     }
     let appids = d.appids();

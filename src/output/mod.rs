@@ -19,6 +19,7 @@ pub mod entity;
 pub mod objects;
 pub mod pdf;
 pub mod png;
+pub mod props;
 pub mod record;
 pub mod sheet;
 pub mod svg;

@@ -36,6 +36,8 @@ pub struct Extras {
     /// section records and their BLOCK_RECORD table records.
     pub(super) blocks: Vec<TagList>,
     pub(super) block_records: Vec<TagList>,
+    /// Line types, weights, thicknesses and scales CHPROP set (`props.rs`).
+    pub(super) props: super::props::PropsMap,
 }
 
 impl Extras {
@@ -45,6 +47,7 @@ impl Extras {
             && self.objects.is_empty()
             && self.table_handles.is_empty()
             && self.blocks.is_empty()
+            && self.props.is_empty()
     }
 }
 

@@ -59,8 +59,8 @@
 ;=> nil
 (command "_.chprop" cl "" "_LA" "NoSuchLayer")
 ;!! CHPROP: cannot find layer "NoSuchLayer"
-(command "_.chprop" cl "" "_LT" "DASHED")
-;!! CHPROP: per-entity line types are not modelled by lispcad (only BYLAYER; set the layer's with -LAYER LType), got "DASHED"
+(command "_.chprop" cl "" "_TR" 50)
+;!! CHPROP: the TR property is not modelled by lispcad (Color, LAyer, LType, ltScale, LWeight and Thickness are)
 (command "_.change" cl "" '(5 5 0))
 ;!! CHANGE: only the Properties option ("P") is supported by lispcad, got the point (5 5 0)
 ;; EXPLODE: a polyline becomes its lines and arcs, on its layer and colour.

@@ -93,9 +93,11 @@ pub(super) fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
             .collect(),
         "LTYPE" => {
             let mut names: Vec<String> = vec!["Continuous".to_string()];
-            for l in d.layers() {
-                if !names.iter().any(|n| n.eq_ignore_ascii_case(&l.linetype)) {
-                    names.push(l.linetype.clone());
+            let layer_types = d.layers().iter().map(|l| l.linetype.clone());
+            // And those CHPROP gave entities (written solid, as layers' are).
+            for lt in layer_types.chain(d.entity_linetypes()) {
+                if !names.iter().any(|n| n.eq_ignore_ascii_case(&lt)) {
+                    names.push(lt);
                 }
             }
             names
