@@ -133,8 +133,8 @@ fn fillet_vertices(p: &Plane2d, r: f64, which: Option<usize>) -> (Plane2d, Count
         bulges: Vec::with_capacity(n + counts.filleted),
         closed: p.closed,
     };
-    for i in 0..n {
-        match fillet[i] {
+    for (i, f) in fillet.iter().enumerate() {
+        match *f {
             Some((t1, t2, bulge)) => {
                 out.points.extend([t1, t2]);
                 out.bulges.extend([bulge, p.bulges[i]]);
