@@ -128,6 +128,13 @@ impl Drawing {
         self.extras.props.insert(handle, p);
     }
 
+    /// Give entity `to` (a copy, or a piece of `from`) the properties of `from`.
+    pub fn copy_props(&mut self, from: u64, to: u64) {
+        if let Some(p) = self.props(from).cloned() {
+            self.set_props(to, p);
+        }
+    }
+
     /// A new entity's groups as written, with the properties CHPROP set on it.
     pub fn with_props(&self, handle: u64, kind: &EntityKind, text: String) -> String {
         match self.props(handle) {

@@ -38,3 +38,32 @@
 ;!! CHPROP: expected a positive line-type scale, got the number 0
 (command "_.CHPROP" l "" "_LT" "A*B")
 ;!! CHPROP: invalid line type name "A*B"
+;; entmake and entmod take the same groups; a value out of range gives nil.
+(entmake '((0 . "LINE") (10 0 0 0) (11 5 0 0) (6 . "HIDDEN") (370 . 50) (48 . 2.0) (39 . 1.0)))
+(setq m (entlast))
+(list (g m 6) (g m 370) (g m 48) (g m 39))
+;=> ("HIDDEN" 50 2.0 1.0)
+(entmake '((0 . "LINE") (10 0 0 0) (11 5 0 0) (370 . 999)))
+;=> nil
+(entmake '((0 . "LINE") (10 0 0 0) (11 5 0 0) (48 . 0.0)))
+;=> nil
+(entmod (subst '(370 . 25) '(370 . 50) (entget m)))
+(list (g m 6) (g m 370) (g m 48) (g m 39))
+;=> ("HIDDEN" 25 2.0 1.0)
+(entmod (vl-remove-if '(lambda (x) (member (car x) '(6 370 48 39))) (entget m)))
+(list (g m 6) (g m 370) (g m 48) (g m 39))
+;=> ("HIDDEN" 25 2.0 1.0)
+(setq el (entget m))
+(foreach pr '((6 . "ByLayer") (370 . -1) (48 . 1.0) (39 . 0.0))
+  (setq el (subst pr (assoc (car pr) el) el)))
+(entmod el)
+(list (g m 6) (g m 370) (g m 48) (g m 39))
+;=> (nil nil nil nil)
+;; COPY (and MIRROR, OFFSET, EXPLODE of a polyline) give the new objects the same properties.
+(command "_.CHPROP" m "" "_LT" "HIDDEN" "_T" 2 "")
+(command "_.COPY" m "" '(0 0) '(0 5) "")
+(list (g (entlast) 6) (g (entlast) 39) (g (entlast) 10))
+;=> ("HIDDEN" 2.0 (0.0 5.0 0.0))
+(command "_.OFFSET" 1 m '(0 -5) "")
+(list (g (entlast) 6) (g (entlast) 10))
+;=> ("HIDDEN" (0.0 -1.0 0.0))

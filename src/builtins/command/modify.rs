@@ -347,7 +347,8 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
 fn add_like(d: &mut Drawing, e: &Entity, kind: EntityKind) -> Result<(), Exn> {
     let mut n = Entity::new(&e.layer, kind);
     n.color = e.color;
-    d.add(n).map_err(|x| cmd_err("EXPLODE", x))?;
+    let h = d.add(n).map_err(|x| cmd_err("EXPLODE", x))?;
+    d.copy_props(e.handle, h);
     Ok(())
 }
 
@@ -421,7 +422,8 @@ fn offset_toward(it: &mut Interp, h: u64, dist: Option<f64>, p: DVec3) -> Result
     };
     let mut n = Entity::new(&e.layer, curve_entity(&o));
     n.color = e.color;
-    d.add(n).map_err(|x| cmd_err("OFFSET", x))?;
+    let made = d.add(n).map_err(|x| cmd_err("OFFSET", x))?;
+    d.copy_props(e.handle, made);
     Ok(())
 }
 

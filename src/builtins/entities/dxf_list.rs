@@ -82,10 +82,10 @@ fn entity_props(out: &mut Vec<Value>, p: &crate::output::props::EntityProps) {
             out.len() - usize::from(out.last().is_some_and(|g| g.car().as_f64() == Some(62.0)));
         out.insert(at, text(6, lt));
     }
-    if let Some(w) = p.lineweight {
+    if let Some(w) = p.lineweight.filter(|w| *w != -1) {
         out.push(int(370, w as i32));
     }
-    if let Some(s) = p.ltscale {
+    if let Some(s) = p.ltscale.filter(|s| *s != 1.0) {
         out.push(real(48, s));
     }
 }
@@ -323,6 +323,7 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
     }
     if let Some(t) = props
         .and_then(|p| p.thickness)
+        .filter(|t| *t != 0.0 || out.iter().any(|g| g.car().as_f64() == Some(39.0)))
         .filter(|_| crate::output::props::has_thickness(&e.kind))
     {
         with_thickness(&mut out, t);

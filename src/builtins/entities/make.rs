@@ -15,6 +15,7 @@ use crate::geom::frame::Ocs;
 use crate::geom::quadspline::QuadSpline;
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::{Interp, Value};
+use crate::output::props::EntityProps;
 use crate::output::record::TagList;
 use crate::output::{Entity, EntityKind};
 
@@ -287,13 +288,56 @@ fn make_entity(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<u64>, Exn
     let Some(kind) = kind_of(it, ty, g)? else {
         return Ok(None);
     };
+    let Ok(props) = props_of(it, g)? else {
+        return Ok(None);
+    };
     let e = Entity {
         handle: 0,
         layer,
         color,
         kind,
     };
-    Ok(drawing(it).add(e).ok())
+    let Ok(h) = drawing(it).add(e) else {
+        return Ok(None);
+    };
+    if props != EntityProps::default() {
+        drawing(it).set_props(h, props);
+    }
+    Ok(Some(h))
+}
+
+/// Line type (6), line-type scale (48), line weight (370) and thickness (39) of a list, as
+/// CHPROP sets them (a group at its default leaves the property unset); Err(()) for a value
+/// out of range (entmake and entmod then return nil).
+fn props_of(it: &Interp, g: &Groups) -> Result<Result<EntityProps, ()>, Exn> {
+    let mut p = EntityProps::default();
+    if let Some(lt) = g.string(it, 6)? {
+        if lt.is_empty() || lt.chars().any(|c| "<>/\\\":;?*|,=`".contains(c)) {
+            return Ok(Err(()));
+        }
+        if !lt.eq_ignore_ascii_case("ByLayer") {
+            p.linetype = Some(lt);
+        }
+    }
+    if let Some(s) = g.real(it, 48)? {
+        if !(s.is_finite() && s > 0.0) {
+            return Ok(Err(()));
+        }
+        p.ltscale = (s != 1.0).then_some(s);
+    }
+    if let Some(w) = g.int(it, 370)? {
+        if !(-3..=211).contains(&w) {
+            return Ok(Err(()));
+        }
+        p.lineweight = (w != -1).then_some(w as i16);
+    }
+    if let Some(t) = g.real(it, 39)? {
+        if !t.is_finite() {
+            return Ok(Err(()));
+        }
+        p.thickness = (t != 0.0).then_some(t);
+    }
+    Ok(Ok(p))
 }
 
 /// An entity made while a block definition is open: it goes into the block.
@@ -568,8 +612,22 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         color,
         kind,
     };
+    let Ok(props) = props_of(it, &g)? else {
+        return Ok(Value::Nil);
+    };
     if drawing(it).replace(name.handle, e).is_err() {
         return Ok(Value::Nil);
+    }
+    let d = drawing(it);
+    if props != EntityProps::default() || d.props(name.handle).is_some() {
+        // Unset ones go back to their defaults, as a list without them means.
+        let full = EntityProps {
+            linetype: props.linetype.or_else(|| Some("ByLayer".to_string())),
+            lineweight: props.lineweight.or(Some(-1)),
+            thickness: props.thickness.or(Some(0.0)),
+            ltscale: props.ltscale.or(Some(1.0)),
+        };
+        d.set_props(name.handle, full);
     }
     if let super::objects::XdataIn::Apps(apps) = xdata {
         super::objects::apply_xdata(it, name.handle, apps);
