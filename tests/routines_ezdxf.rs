@@ -215,7 +215,9 @@ fn insert_with_attributes_into_an_ezdxf_drawing() {
 
 /// EXPLODE of a block reference: the block's LINE (0,0)-(1,0), inserted at (10,5) with
 /// scale 2 and rotation 90 degrees, becomes the line (10,5)-(10,7) (worked by hand); the
-/// INSERT and its ATTRIBs are gone, and ezdxf reads the file with a clean audit.
+/// INSERT and its ATTRIBs are gone, its ATTDEFs come back as ATTDEFs (AutoCAD's EXPLODE:
+/// the last, NOTE at (0,-0.5), at (10,5) + 2 rot90(0,-0.5) = (11,5)), and ezdxf reads the
+/// file with a clean audit.
 #[test]
 fn explode_of_an_inserted_block() {
     let dir = tempfile::tempdir().unwrap();
@@ -225,7 +227,8 @@ fn explode_of_an_inserted_block() {
 (setq ins (entlast))
 (setq att (entnext ins))
 (command "_.explode" ins "")
-(prin1 (list (entget ins) (entget att) (cdr (assoc 0 (entget (entlast)))) (entnext (entlast))))
+(prin1 (list (entget ins) (entget att) (cdr (assoc 0 (entget (entlast)))) (entnext (entlast))
+  (cdr (assoc 2 (entget (entlast)))) (cdr (assoc 10 (entget (entlast))))))
 "#;
     std::fs::write(dir.path().join("x.lsp"), script).unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
@@ -239,7 +242,10 @@ fn explode_of_an_inserted_block() {
         "lispcad: {stdout}\n{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert_eq!(stdout.trim(), r#"(nil nil "LINE" nil)"#);
+    assert_eq!(
+        stdout.trim(),
+        r#"(nil nil "ATTDEF" nil "NOTE" (11.0 5.0 0.0))"#
+    );
     let doc = py("inserts", &dir.path().join("out.dxf"));
     assert_eq!(doc["audit_errors"], 0);
     assert_eq!(doc["audit_fixes"], 0);

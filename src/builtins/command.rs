@@ -5,7 +5,7 @@
 //! and the command-line strings `"x,y[,z]"`, `"@dx,dy[,dz]"` (relative to the last point) and
 //! `"d<a"` / `"@d<a"` (polar, a in degrees as typed at AutoCAD's prompt); `""` is Enter;
 //! `(command)` cancels. Commands: LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT,
-//! MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
+//! MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs, circles, polylines), CHPROP, CHANGE, UNDO (marks), UCS (World only), and the
 //! display commands (ZOOM, REGEN...) that have nothing to do headless.
 
 use glam::{DVec2, DVec3};
@@ -24,8 +24,12 @@ use crate::output::{Drawing, Entity, EntityKind};
 mod draw;
 #[path = "command/edit.rs"]
 mod edit;
+#[path = "command/explode.rs"]
+mod explode;
 #[path = "command/fillet.rs"]
 mod fillet;
+#[path = "command/fillet_pline.rs"]
+mod fillet_pline;
 #[path = "command/insert.rs"]
 mod insert;
 #[path = "command/layer.rs"]
@@ -277,7 +281,7 @@ fn start(name: &str) -> Result<Step, Exn> {
         | "TEXTSCR" => Step::More(Pending::Ignore),
         _ => {
             return Err(err(format!(
-                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)"
+                "command: unknown command \"{name}\" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs, circles, polylines), CHPROP, CHANGE, UNDO)"
             )));
         }
     })

@@ -20,6 +20,7 @@ use crate::output::{Drawing, EntityKind};
 
 use crate::builtins::drawing::drawing;
 
+pub mod block_make;
 #[path = "entities/dxf_list.rs"]
 pub mod dxf_list;
 #[path = "entities/make.rs"]
@@ -33,7 +34,7 @@ pub mod tables;
 pub mod tag_list;
 
 pub static BUILTINS: &[Builtin] = &[
-    builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER or APPID record, or an ownerless XRECORD or DICTIONARY) from a DXF association list, with extended data from a (-3 (\"APP\" ...)) group; returns the list, or nil when a required group is missing, the data is invalid or an application is not registered.", 0, 1, make::entmake),
+    builtin!("entmake", "(entmake [dxf-list])", "Adds an entity (or a LAYER or APPID record, or an ownerless XRECORD or DICTIONARY) from a DXF association list; a BLOCK list opens a block definition that holds the entities made until ENDBLK, whose entmake returns the block's name; with extended data from a (-3 (\"APP\" ...)) group; returns the list, or nil when a required group is missing, the data is invalid or an application is not registered.", 0, 1, make::entmake),
     builtin!("entget", "(entget ename [applist])", "The DXF association list of an entity, object or table record (nil if deleted); with applist, the extended data of the matching registered applications as a final (-3 (\"APP\" ...)) group.", 1, 2, entget),
     builtin!("entmod", "(entmod dxf-list)", "Modifies the entity (or XRECORD) named by the list's -1 group (groups absent from the list keep their values; a -3 group replaces the named applications' extended data); returns the list or nil.", 1, 1, make::entmod),
     builtin!("entupd", "(entupd ename)", "Accepted for compatibility (the drawing is always up to date); returns ename.", 1, 1, entupd),
@@ -47,7 +48,7 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("ssadd", "(ssadd [ename [ss]])", "A new empty set, a new set with ename, or ss with ename added (returns ss).", 0, 2, select::ssadd),
     builtin!("ssdel", "(ssdel ename ss)", "Removes ename from ss; returns ss, or nil if it was not there.", 2, 2, select::ssdel),
     builtin!("ssmemb", "(ssmemb ename ss)", "ename if it is in ss, else nil.", 2, 2, select::ssmemb),
-    builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a table entry (LAYER, LTYPE, STYLE; an opened drawing's every table and BLOCK) as a DXF list, or nil.", 2, 3, tables::tblsearch),
+    builtin!("tblsearch", "(tblsearch table name [setnext])", "The record of a table entry (LAYER, LTYPE, STYLE, BLOCK; an opened drawing's every table) as a DXF list, or nil.", 2, 3, tables::tblsearch),
     builtin!("tblobjname", "(tblobjname table name)", "The entity name of a symbol-table record (LAYER, LTYPE, STYLE, APPID, BLOCK...), or nil.", 2, 2, objects::tblobjname),
     builtin!("regapp", "(regapp appname)", "Registers an application name for extended data (the APPID table); returns the name, or nil if it is already registered or invalid.", 1, 1, objects::regapp),
     builtin!("namedobjdict", "(namedobjdict)", "The entity name of the drawing's named-object dictionary (the root of its dictionaries).", 0, 0, objects::namedobjdict),
@@ -114,6 +115,10 @@ pub struct EntityState {
     pub previous: Vec<u64>,
     /// A POLYLINE being built by `entmake` until its SEQEND.
     pub pending_polyline: Option<make::PendingPolyline>,
+    /// A block definition being built by `entmake` until its ENDBLK.
+    pub pending_block: Option<block_make::PendingBlock>,
+    /// An INSERT with attributes being built by `entmake` until its SEQEND.
+    pub pending_insert: Option<block_make::PendingInsert>,
     /// `tblnext` positions per table name.
     pub table_cursor: Vec<(String, usize)>,
 }

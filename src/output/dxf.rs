@@ -13,6 +13,7 @@ use glam::{DVec2, DVec3};
 
 use super::drawing::{is_flat, Drawing, Entity, EntityKind};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
+use super::record::TagList;
 use crate::geom::frame::Ocs;
 
 // Fixed structural handles.
@@ -65,8 +66,9 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
 
     // Names the tables must define: line types and text styles used by layers and entities.
     let mut linetypes: Vec<String> = Vec::new();
-    for l in d.layers() {
-        let lt = &l.linetype;
+    let layer_types = d.layers().iter().map(|l| l.linetype.clone());
+    for lt in layer_types.chain(d.entity_linetypes()) {
+        let lt = &lt;
         let builtin = ["BYBLOCK", "BYLAYER", "CONTINUOUS"]
             .iter()
             .any(|b| lt.eq_ignore_ascii_case(b));
@@ -85,26 +87,37 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             }
         }
     }
-    let layer_handles: Vec<u64> = d.layers().iter().map(|_| alloc()).collect();
-    let ltype_handles: Vec<u64> = linetypes.iter().map(|_| alloc()).collect();
-    let style_handles: Vec<u64> = styles.iter().map(|_| alloc()).collect();
+    let layer_names = d.layers().iter().map(|l| l.name.as_str());
+    let layer_handles = record_handles(d, "LAYER", layer_names, &mut alloc);
+    let ltype_handles = record_handles(d, "LTYPE", linetypes.iter(), &mut alloc);
+    let style_handles = record_handles(d, "STYLE", styles.iter(), &mut alloc);
 
     // Entities first into their own buffer: they allocate handles the header's $HANDSEED
     // must exceed.
     let mut ents = DxfWriter::new();
-    for e in d.entities() {
-        match d.new_entity_xdata(e.handle) {
-            None => write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc),
-            Some(x) => {
-                let mut one = DxfWriter::new();
-                write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
-                ents.out
-                    .push_str(&super::objects::splice_xdata(&one.out, x, false));
-            }
+    for (e, src) in d.entities_with_sources() {
+        if let (EntityKind::Unmodelled { .. }, Some(s)) = (&e.kind, src) {
+            // An INSERT (with its ATTRIBs) or ATTDEF a script made: kept as its groups.
+            kept_groups(&mut ents, e, s);
+            continue;
+        }
+        let xdata = d.new_entity_xdata(e.handle);
+        if xdata.is_none() && d.props(e.handle).is_none() {
+            write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc);
+            continue;
+        }
+        let mut one = DxfWriter::new();
+        write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
+        let text = d.with_props(e.handle, &e.kind, one.out);
+        match xdata {
+            None => ents.out.push_str(&text),
+            Some(x) => ents
+                .out
+                .push_str(&super::objects::splice_xdata(&text, x, false)),
         }
     }
     let appids = d.appids();
-    let appid_handles: Vec<u64> = appids.iter().skip(1).map(|_| alloc()).collect();
+    let appid_handles = record_handles(d, "APPID", appids.iter().skip(1), &mut alloc);
     let handseed = alloc();
 
     // ---- HEADER ----
@@ -260,6 +273,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.str(0, "ENDTAB");
     w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
+    write_blocks(&mut w, d);
     w.out.push_str(&ents.out);
 
     w.str(0, "ENDSEC");
@@ -285,6 +299,21 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.out.push_str(prepared(&OBJECTS, write_objects));
     w.out
+}
+
+/// Handles for table records: the one `tblobjname` gave a record, else a fresh one.
+fn record_handles<S: AsRef<str>>(
+    d: &Drawing,
+    table: &str,
+    names: impl Iterator<Item = S>,
+    alloc: &mut impl FnMut() -> u64,
+) -> Vec<u64> {
+    names
+        .map(|n| {
+            d.given_table_handle(table, n.as_ref())
+                .unwrap_or_else(&mut *alloc)
+        })
+        .collect()
 }
 
 fn table(w: &mut DxfWriter, name: &str, h: u64, count: usize) {
@@ -348,8 +377,7 @@ fn write_view_ucs(w: &mut DxfWriter) {
     w.str(0, "ENDTAB");
 }
 
-/// The tables after APPID (none depends on the drawing), the BLOCKS section, and the head of
-/// the ENTITIES section.
+/// The DIMSTYLE table, after APPID (it does not depend on the drawing).
 fn write_tables_tail(w: &mut DxfWriter) {
     table(w, "DIMSTYLE", H_DIMSTYLE_TABLE, 1);
     w.str(100, "AcDbDimStyleTable");
@@ -374,8 +402,18 @@ fn write_tables_tail(w: &mut DxfWriter) {
     w.int(272, 2);
     w.handle(340, H_STYLE_STANDARD);
     w.str(0, "ENDTAB");
+}
 
-    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2);
+/// The BLOCK_RECORD table, the BLOCKS section (model and paper space, then the blocks a
+/// script defined) and the head of the ENTITIES section.
+fn write_blocks(w: &mut DxfWriter, d: &Drawing) {
+    let groups = |w: &mut DxfWriter, t: &TagList| {
+        for (c, v) in t.iter() {
+            w.str(c as u16, v);
+        }
+    };
+    let user = d.new_block_records();
+    table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2 + user.len());
     for (h, name, layout) in [
         (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
         (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
@@ -389,6 +427,9 @@ fn write_tables_tail(w: &mut DxfWriter) {
         );
         w.str(2, name);
         w.handle(340, layout);
+    }
+    for r in user {
+        groups(w, r);
     }
     w.str(0, "ENDTAB");
     w.str(0, "ENDSEC");
@@ -433,6 +474,9 @@ fn write_tables_tail(w: &mut DxfWriter) {
         }
         w.str(8, "0");
         w.str(100, "AcDbBlockEnd");
+    }
+    for r in d.block_section() {
+        groups(w, r);
     }
     w.str(0, "ENDSEC");
 
@@ -799,6 +843,21 @@ pub(crate) fn write_entity(
             w.float(42, *end);
         }
         EntityKind::Unmodelled { .. } => {}
+    }
+}
+
+/// An entity kept as groups (INSERT with ATTRIBs, ATTDEF), with the drawing's layer and
+/// colour when a script changed them.
+fn kept_groups(w: &mut DxfWriter, e: &Entity, s: &super::drawing::SourceRecord) {
+    let mut t = s.tags.clone();
+    if e.layer != s.original.layer {
+        t = t.with(8, &e.layer, 100);
+    }
+    if e.color != s.original.color {
+        t = t.with(62, &e.color.unwrap_or(256).to_string(), 8);
+    }
+    for (c, v) in t.iter() {
+        w.str(c as u16, v);
     }
 }
 

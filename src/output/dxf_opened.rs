@@ -34,11 +34,18 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                 }
             }
             None => match d.new_entity_xdata(e.handle).filter(|_| src.is_none()) {
-                None => write_one(&mut ents, e, src, doc, owner, &mut alloc),
-                Some(x) => {
+                None if src.is_some() || d.props(e.handle).is_none() => {
+                    write_one(&mut ents, e, src, doc, owner, &mut alloc)
+                }
+                x => {
                     let mut s = String::new();
                     write_one(&mut s, e, src, doc, owner, &mut alloc);
-                    ents.push_str(&super::objects::splice_xdata(&s, x, true));
+                    // CHPROP's line type, weight... of a new entity.
+                    let s = d.with_props(e.handle, &e.kind, s);
+                    match x {
+                        Some(x) => ents.push_str(&super::objects::splice_xdata(&s, x, true)),
+                        None => ents.push_str(&s),
+                    }
                 }
             },
         }

@@ -4,6 +4,7 @@
 pub mod aci;
 pub mod atomic;
 pub mod biarc;
+pub mod blocks;
 pub mod cam;
 pub mod cam_tidy;
 pub mod document;
@@ -18,6 +19,7 @@ pub mod entity;
 pub mod objects;
 pub mod pdf;
 pub mod png;
+pub mod props;
 pub mod record;
 pub mod sheet;
 pub mod svg;

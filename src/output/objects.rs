@@ -32,6 +32,12 @@ pub struct Extras {
     /// Handles given to table records of a drawing made from scratch (`tblobjname`):
     /// (table, name, handle).
     table_handles: Vec<(String, String, u64)>,
+    /// Block definitions of a drawing made from scratch (`blocks.rs`): their BLOCKS
+    /// section records and their BLOCK_RECORD table records.
+    pub(super) blocks: Vec<TagList>,
+    pub(super) block_records: Vec<TagList>,
+    /// Line types, weights, thicknesses and scales CHPROP set (`props.rs`).
+    pub(super) props: super::props::PropsMap,
 }
 
 impl Extras {
@@ -40,6 +46,8 @@ impl Extras {
             && self.appids.is_empty()
             && self.objects.is_empty()
             && self.table_handles.is_empty()
+            && self.blocks.is_empty()
+            && self.props.is_empty()
     }
 }
 
@@ -143,6 +151,23 @@ pub fn with_owner(t: &TagList, owner: u64) -> TagList {
         }
     }
     out
+}
+
+/// The handles the CAD writer gives the table records of every new drawing (`dxf.rs`).
+fn fixed_record_handle(table: &str, name: &str) -> Option<u64> {
+    let fixed: [(&str, &str, u64); 7] = [
+        ("VPORT", "*Active", 0x17),
+        ("LTYPE", "ByBlock", 0x18),
+        ("LTYPE", "ByLayer", 0x19),
+        ("LTYPE", "Continuous", 0x1A),
+        ("APPID", "ACAD", 0x1B),
+        ("DIMSTYLE", "Standard", 0x1C),
+        ("STYLE", "Standard", 0x1D),
+    ];
+    fixed
+        .iter()
+        .find(|(t, n, _)| *t == table && n.eq_ignore_ascii_case(name))
+        .map(|(_, _, h)| *h)
 }
 
 fn default_object(h: u64) -> Option<TagList> {
@@ -376,21 +401,27 @@ impl Drawing {
         self.extras.objects.iter().filter(|t| self.reachable(t))
     }
 
-    /// A table record's handle given by `tblobjname` in a drawing made from scratch.
+    /// A table record's handle given by `tblobjname` in a drawing made from scratch: the
+    /// writer's fixed one for the records every drawing has, else a fresh one, which the
+    /// writer then gives the record (`given_table_handle`).
     pub fn table_handle(&mut self, table: &str, name: &str) -> u64 {
-        if let Some((_, _, h)) = self
-            .extras
-            .table_handles
-            .iter()
-            .find(|(t, n, _)| t == table && n.eq_ignore_ascii_case(name))
-        {
-            return *h;
+        if let Some(h) = self.given_table_handle(table, name) {
+            return h;
         }
-        let h = self.alloc_handle();
+        let h = fixed_record_handle(table, name).unwrap_or_else(|| self.alloc_handle());
         self.extras
             .table_handles
             .push((table.to_string(), name.to_string(), h));
         h
+    }
+
+    /// The handle `tblobjname` gave a record of a drawing made from scratch, if it did.
+    pub fn given_table_handle(&self, table: &str, name: &str) -> Option<u64> {
+        self.extras
+            .table_handles
+            .iter()
+            .find(|(t, n, _)| t == table && n.eq_ignore_ascii_case(name))
+            .map(|(_, _, h)| *h)
     }
 
     /// The (table, name) of a record handle given by `table_handle`.

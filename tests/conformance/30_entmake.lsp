@@ -46,7 +46,9 @@
 (entmake '((0 . "LINE") 5))
 ;!! bad DXF group: 5
 (entmake '((0 . "INSERT") (10 0 0 0)))
-;!! entmake: entity type INSERT is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, LAYER, APPID, XRECORD and DICTIONARY are)
+;=> nil
+(entmake '((0 . "MTEXT") (10 0 0 0) (1 . "x")))
+;!! entmake: entity type MTEXT is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, BLOCK...ENDBLK, INSERT, ATTDEF, ATTRIB, LAYER, APPID, XRECORD and DICTIONARY are)
 (entmake '((0 . "ELLIPSE") (10 0 0 0)))
 ;=> nil
 (cdr (assoc 40 (entmake '((0 . "ELLIPSE") (10 1 2 0) (11 3 0 0) (40 . 0.5)))))

@@ -138,7 +138,7 @@
 (command "ZOOM" "E")
 ;=> nil
 (command "FOO")
-;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "FOO" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs, circles, polylines), CHPROP, CHANGE, UNDO)
 (command "LINE" '(0 0) "abc")
 ;!! LINE: expected a point, "C" (close, after two segments), "U" or "", got "abc"
 (command "LINE" '(0 0) pause)

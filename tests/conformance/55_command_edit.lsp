@@ -41,7 +41,7 @@
 (command "_.MOVE" "" )
 ;!! MOVE: no objects selected
 (command "_.FILLETX")
-;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.FILLETX" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs, circles, polylines), CHPROP, CHANGE, UNDO)
 (command "_.ARC" "_C" '(0 0) '(3 0) '(0 3))
 (setq a (entlast))
 (command "_.MIRROR" a "" '(5 0) '(5 1) "")
@@ -59,8 +59,8 @@
 ;=> nil
 (command "_.chprop" cl "" "_LA" "NoSuchLayer")
 ;!! CHPROP: cannot find layer "NoSuchLayer"
-(command "_.chprop" cl "" "_LT" "DASHED")
-;!! CHPROP: per-entity line types are not modelled by lispcad (only BYLAYER; set the layer's with -LAYER LType), got "DASHED"
+(command "_.chprop" cl "" "_TR" 50)
+;!! CHPROP: the TR property is not modelled by lispcad (Color, LAyer, LType, ltScale, LWeight and Thickness are)
 (command "_.change" cl "" '(5 5 0))
 ;!! CHANGE: only the Properties option ("P") is supported by lispcad, got the point (5 5 0)
 ;; EXPLODE: a polyline becomes its lines and arcs, on its layer and colour.
@@ -96,11 +96,11 @@
 (command "_.offset" 0 ci)
 ;!! OFFSET: expected a positive distance or T, got the number 0
 (command "_.insert" "door" '(0 0 0) 1 1 0)
-;!! INSERT: block "door" is not defined (lispcad inserts the blocks of a drawing opened with --open, R2000 or later)
+;!! INSERT: block "door" is not defined
 (command "_.-insert" "c:/blocks/door.dwg" '(0 0 0) 1 1 0)
 ;!! INSERT: inserting a drawing file ("c:/blocks/door.dwg") is not supported; name a block of the opened drawing
 (command "_.mline")
-;!! command: unknown command "_.mline" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs), CHPROP, CHANGE, UNDO)
+;!! command: unknown command "_.mline" (lispcad runs LINE, CIRCLE, ARC, PLINE, SPLINE, LAYER, ERASE, POINT, TEXT, MOVE, COPY, ROTATE, SCALE, MIRROR, INSERT, OFFSET, EXPLODE, FILLET (lines, arcs, circles, polylines), CHPROP, CHANGE, UNDO)
 ;; FILLET two lines: radius 2 at a right-angle corner, the arc tangent to both; radius 0
 ;; extends the lines to their corner. Arcs and other objects are refused by name.
 (command "_.fillet" "_R" 2.0)
@@ -122,8 +122,9 @@
 (command "_.fillet" "_R" 0 f1 (ssadd f2))
 (list (cdr (assoc 11 (entget f1))) (cdr (assoc 10 (entget f2))))
 ;=> ((10.0 0.0 0.0) (10.0 0.0 0.0))
-(command "_.fillet" f1 ci)
-;!! FILLET: lispcad fillets lines and arcs in the XY plane, not a CIRCLE
+(entmake '((0 . "POINT") (10 50 50 0)))
+(command "_.fillet" f1 (entlast))
+;!! FILLET: lispcad fillets lines, arcs and circles in the XY plane, not a POINT
 (entmake '((0 . "LINE") (10 0 5 0) (11 10 5 0)))
 (command "_.fillet" f1 (entlast))
 ;!! FILLET: the lines are parallel
@@ -167,9 +168,10 @@
 ;=> ((("0.000000" "0.000000" "0.000000") "5.000000" "1.080839001" "3.141592654") (("8.000000" "0.000000" "0.000000") "5.000000" "0.000000000" "2.060753653"))
 (arcof (entlast))
 ;=> (("4.000000" "7.500000" "0.000000") "3.500000" "4.222431654" "5.202346307")
-;; Concentric arcs never meet; a radius no fillet fits is an error too.
+;; Concentric arcs are refused (60_fillet.lsp); a radius no fillet fits is an error.
 (entmake (list '(0 . "ARC") '(10 0 0 0) '(40 . 2.0) '(50 . 0.0) (cons 51 pi)))
 (command "_.fillet" "_R" 0 fa1 (entlast))
-;!! FILLET: the objects do not meet, even extended
+;!! FILLET: the objects are concentric: lispcad does not fillet concentric arcs or circles
+(entmake (list '(0 . "ARC") '(10 40 0 0) '(40 . 2.0) '(50 . 0.0) (cons 51 pi)))
 (command "_.fillet" "_R" 1.0 fa1 (entlast))
 ;!! FILLET: no fillet of radius 1 joins these objects

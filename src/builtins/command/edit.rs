@@ -143,7 +143,8 @@ fn apply(it: &mut Interp, cmd: &str, picked: &[u64], m: &DMat4, copy: bool) -> R
         if copy {
             let mut n = Entity::new(&e.layer, kind);
             n.color = e.color;
-            d.add(n).map_err(|x| cmd_err(cmd, x))?;
+            let made = d.add(n).map_err(|x| cmd_err(cmd, x))?;
+            d.copy_props(h, made);
         } else {
             d.replace(h, Entity { kind, ..e })
                 .map_err(|x| cmd_err(cmd, x))?;

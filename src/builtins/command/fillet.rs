@@ -1,4 +1,5 @@
-//! FILLET where an arc takes part (line and arc, two arcs). The fillet circle's centre lies
+//! FILLET where an arc or circle takes part (line and arc, two arcs, a circle with a line,
+//! arc or circle: the circle stays whole). The fillet circle's centre lies
 //! on an offset of each curve (a parallel line, a concentric circle), so the candidates are
 //! the intersections of those offsets; a candidate is kept only when the fillet arc joins
 //! both kept parts smoothly (its direction at each tangent point continues the curve), and
@@ -16,8 +17,21 @@ const TAU: f64 = std::f64::consts::TAU;
 
 #[derive(Clone, Copy)]
 enum Curve {
-    Line { a: DVec2, b: DVec2 },
-    Arc { c: DVec2, r: f64, s: f64, e: f64 },
+    Line {
+        a: DVec2,
+        b: DVec2,
+    },
+    Arc {
+        c: DVec2,
+        r: f64,
+        s: f64,
+        e: f64,
+    },
+    /// A circle stays whole: AutoCAD adds the fillet arc and trims only the other object.
+    Circle {
+        c: DVec2,
+        r: f64,
+    },
 }
 
 /// An offset of a curve: a line through `p` along `u`, or a circle.
@@ -54,10 +68,18 @@ impl Curve {
                 s: start,
                 e: end,
             }),
+            EntityKind::Circle {
+                center,
+                radius,
+                normal,
+            } if (normal - DVec3::Z).length() < 1e-12 => Ok(Curve::Circle {
+                c: center.truncate(),
+                r: radius,
+            }),
             ref k => Err(cmd_err(
                 "FILLET",
                 format!(
-                    "lispcad fillets lines and arcs in the XY plane, not a {}",
+                    "lispcad fillets lines, arcs and circles in the XY plane, not a {}",
                     k.type_name()
                 ),
             )),
@@ -69,6 +91,14 @@ impl Curve {
         match *self {
             Curve::Line { a, b } => (a + b) / 2.0,
             Curve::Arc { c, r, s, e } => c + DVec2::from_angle(s + sweep(s, e) / 2.0) * r,
+            Curve::Circle { c, r } => c + DVec2::X * r,
+        }
+    }
+
+    fn centre(&self) -> Option<(DVec2, f64)> {
+        match *self {
+            Curve::Arc { c, r, .. } | Curve::Circle { c, r } => Some((c, r)),
+            Curve::Line { .. } => None,
         }
     }
 
@@ -82,7 +112,7 @@ impl Curve {
                     Locus::Line { p: a - n * d, u },
                 ]
             }
-            Curve::Arc { c, r, .. } => {
+            Curve::Arc { c, r, .. } | Curve::Circle { c, r } => {
                 let mut v = vec![Locus::Circle { c, r: r + d }];
                 if d > 0.0 && r - d > 1e-12 {
                     v.push(Locus::Circle { c, r: r - d });
@@ -99,14 +129,18 @@ impl Curve {
                 let u = (b - a).normalize();
                 Some(a + u * (p - a).dot(u))
             }
-            Curve::Arc { c, r, .. } => (p - c).try_normalize().map(|v| c + v * r),
+            Curve::Arc { c, r, .. } | Curve::Circle { c, r } => {
+                (p - c).try_normalize().map(|v| c + v * r)
+            }
         }
     }
 
     /// The curve trimmed or extended so that it ends at `t` and keeps the part the pick
-    /// `q` is on, and the unit direction from `t` into the kept part.
+    /// `q` is on, and the unit direction from `t` into the kept part (zero for a circle,
+    /// which is kept whole and fits either way).
     fn cut(&self, t: DVec2, q: DVec2) -> Option<(Curve, DVec2)> {
         match *self {
+            Curve::Circle { .. } => Some((*self, DVec2::ZERO)),
             Curve::Line { a, b } => {
                 let u = (b - a).normalize();
                 let side = (q - t).dot(u);
@@ -211,7 +245,22 @@ fn solve(k1: Curve, q1: DVec2, k2: Curve, q2: DVec2, r: f64) -> Option<Solution>
                 };
                 let arc = if r > 0.0 {
                     let (a1, a2) = (t1 - centre, t2 - centre);
-                    let (s1, s2) = (perp(a1).dot(d1), perp(a2).dot(d2));
+                    let (mut s1, mut s2) = (perp(a1).dot(d1), perp(a2).dot(d2));
+                    // A circle takes the orientation the other object needs; between two
+                    // circles the fillet is the arc of at most half a turn.
+                    match (d1 == DVec2::ZERO, d2 == DVec2::ZERO) {
+                        (true, true) => {
+                            s1 = if sweep(a1.to_angle(), a2.to_angle()) <= TAU / 2.0 {
+                                -1.0
+                            } else {
+                                1.0
+                            };
+                            s2 = -s1;
+                        }
+                        (true, false) => s1 = -s2,
+                        (false, true) => s2 = -s1,
+                        (false, false) => {}
+                    }
                     // Counter-clockwise from t1 to t2, the arc leaves t1 against the first
                     // curve's kept direction and reaches t2 along the second's.
                     if s1 < 0.0 && s2 > 0.0 {
@@ -281,8 +330,24 @@ pub(super) fn fillet_curves(
     };
     let (e1, e2) = (get(h1)?, get(h2)?);
     let (k1, k2) = (Curve::of(&e1)?, Curve::of(&e2)?);
+    if let (Some((c1, _)), Some((c2, _))) = (k1.centre(), k2.centre()) {
+        if (c1 - c2).length() < 1e-12 {
+            // No circle of one radius touches two concentric ones at a single place.
+            return Err(cmd_err(
+                "FILLET",
+                "the objects are concentric: lispcad does not fillet concentric arcs or circles",
+            ));
+        }
+    }
     let pick = |q: Option<DVec3>, k: &Curve| q.map_or_else(|| k.middle(), |p| p.truncate());
-    let (p1, p2) = (pick(q1, &k1), pick(q2, &k2));
+    let (mut p1, mut p2) = (pick(q1, &k1), pick(q2, &k2));
+    // Without a pick, a circle is taken where it faces the other object.
+    if let (None, Curve::Circle { .. }) = (q1, k1) {
+        p1 = k1.foot(p2).unwrap_or(p1);
+    }
+    if let (None, Curve::Circle { .. }) = (q2, k2) {
+        p2 = k2.foot(p1).unwrap_or(p2);
+    }
     let sol = solve(k1, p1, k2, p2, r).ok_or_else(|| {
         cmd_err(
             "FILLET",
@@ -295,7 +360,7 @@ pub(super) fn fillet_curves(
     })?;
     let z = match e1.kind {
         EntityKind::Line { p0, .. } => p0.z,
-        EntityKind::Arc { center, .. } => center.z,
+        EntityKind::Arc { center, .. } | EntityKind::Circle { center, .. } => center.z,
         _ => 0.0,
     };
     let (c1, c2) = (rebuilt(&e1, sol.c1), rebuilt(&e2, sol.c2));

@@ -5,7 +5,7 @@
 //! keeps block references as read), so `entget`/`entnext` and the DXF writer see them as
 //! those of a read file. A drawing made from scratch has no block definitions: an error.
 
-use glam::{DMat4, DVec2, DVec3};
+use glam::{DVec2, DVec3};
 
 use super::{cmd_err, unexpected, Input, Pending, Step};
 use crate::lang::error::Exn;
@@ -43,13 +43,13 @@ fn num(v: Option<&str>) -> f64 {
 
 /// The block's base point and ATTDEFs, from the opened drawing's BLOCKS section.
 fn block_def(d: &Drawing, name: &str) -> Result<(String, DVec3, Vec<AttDef>), Exn> {
-    let Some(doc) = d.document().filter(|doc| !doc.is_r12()) else {
+    if d.document().is_some_and(|doc| doc.is_r12()) {
         return Err(cmd_err(
             "INSERT",
-            format!("block \"{name}\" is not defined (lispcad inserts the blocks of a drawing opened with --open, R2000 or later)"),
+            format!("block \"{name}\": lispcad inserts blocks into R2000 and later drawings only"),
         ));
-    };
-    let recs = doc.section_records("BLOCKS");
+    }
+    let recs = d.block_section();
     let start = recs
         .iter()
         .position(|r| {
@@ -177,10 +177,7 @@ impl InsertCmd {
             return Ok(());
         };
         let d = it.ext::<Drawing>();
-        let owner = d
-            .document()
-            .and_then(|doc| doc.model_space_owner())
-            .unwrap_or(0);
+        let owner = d.model_space_record();
         let layer = d.current_layer().to_string();
         let h = d.next_handle();
         let hex = |h: u64| format!("{h:X}");
@@ -257,87 +254,4 @@ impl InsertCmd {
         }
         Ok(())
     }
-}
-
-/// EXPLODE of a block reference: the block's entities, moved by the reference's transform
-/// (uniform scale, rotation about Z, then the insertion point), replace it with their own
-/// layers and colours, as AutoCAD does; its ATTRIBs and SEQEND go with it. ATTDEFs are
-/// left out (lispcad does not model them); any other entity lispcad does not model, a
-/// non-uniform scale or an array of columns/rows is a clear error and changes nothing.
-pub(crate) fn explode_insert(it: &mut Interp, h: u64) -> Result<(), Exn> {
-    let fail = |m: String| cmd_err("EXPLODE", m);
-    let d = it.ext::<Drawing>();
-    let t = d
-        .source(h)
-        .map(|s| s.tags.clone())
-        .ok_or_else(|| fail("the block reference has no groups".into()))?;
-    let name = t.get(2).unwrap_or("").to_string();
-    let at = DVec3::new(num(t.get(10)), num(t.get(20)), num(t.get(30)));
-    let scale = |c| t.get(c).map_or(1.0, |v| num(Some(v)));
-    let (sx, sy, sz) = (scale(41), scale(42), scale(43));
-    if (sx - sy).abs() > 1e-12 || (sx - sz).abs() > 1e-12 || sx == 0.0 {
-        return Err(fail(format!(
-            "lispcad explodes block references of uniform scale only, not {sx} {sy} {sz}"
-        )));
-    }
-    let normal = DVec3::new(
-        num(t.get(210)),
-        num(t.get(220)),
-        t.get(230).map_or(1.0, |v| num(Some(v))),
-    );
-    let count = |c| t.get(c).map_or(1.0, |v| num(Some(v)));
-    if (normal - DVec3::Z).length() > 1e-12 || count(70) > 1.0 || count(71) > 1.0 {
-        return Err(fail(
-            "lispcad explodes block references in the XY plane, not arrays or tilted ones".into(),
-        ));
-    }
-    let (_, base, _) =
-        block_def(d, &name).map_err(|_| fail(format!("block \"{name}\" is not defined")))?;
-    let m = DMat4::from_translation(at)
-        * DMat4::from_rotation_z(num(t.get(50)).to_radians())
-        * DMat4::from_scale(DVec3::splat(sx))
-        * DMat4::from_translation(-base);
-    let recs = d
-        .document()
-        .map(|doc| doc.section_records("BLOCKS"))
-        .unwrap_or(&[]);
-    let start = recs
-        .iter()
-        .position(|r| {
-            r.type_name() == "BLOCK" && r.get(2).is_some_and(|n| n.eq_ignore_ascii_case(&name))
-        })
-        .ok_or_else(|| fail(format!("block \"{name}\" is not defined")))?;
-    let mut made = Vec::new();
-    for r in recs[start + 1..]
-        .iter()
-        .take_while(|r| r.type_name() != "ENDBLK")
-    {
-        if r.type_name() == "ATTDEF" {
-            continue;
-        }
-        let e = crate::output::dxfin::factory::entity(r);
-        if let EntityKind::Unmodelled { dxf_type } = &e.kind {
-            return Err(fail(format!(
-                "block \"{name}\" holds a {dxf_type}, which lispcad does not model"
-            )));
-        }
-        let kind = crate::builtins::vla::xform::transform_entity(&e.kind, &m).map_err(fail)?;
-        made.push(Entity { kind, ..e });
-    }
-    // The reference's ATTRIBs and SEQEND follow it.
-    let mut next = d.next_after(h);
-    d.delete(h);
-    while let Some(n) = next {
-        let follower = matches!(d.get(n).map(|e| &e.kind),
-            Some(EntityKind::Unmodelled { dxf_type }) if dxf_type == "ATTRIB" || dxf_type == "SEQEND");
-        if !follower {
-            break;
-        }
-        next = d.next_after(n);
-        d.delete(n);
-    }
-    for e in made {
-        d.add(e).map_err(|x| fail(x.to_string()))?;
-    }
-    Ok(())
 }

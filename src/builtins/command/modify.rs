@@ -1,7 +1,8 @@
 //! CHPROP, CHANGE (its Properties option), EXPLODE (polylines into lines and arcs), FILLET
 //! (two lines; arcs are in fillet.rs) and OFFSET (by a distance or through a point, on the side a point gives),
-//! with AutoCAD's prompts in their order. What lispcad does not model (per-entity line types, weights and
-//! thickness) is a clear error naming it.
+//! with AutoCAD's prompts in their order. CHPROP sets colour, layer, line type, line-type
+//! scale, line weight and thickness; what lispcad does not model (transparency, material,
+//! plot style) is a clear error naming it.
 
 use glam::{DVec2, DVec3};
 
@@ -12,6 +13,7 @@ use crate::geom::frame::Ocs;
 use crate::lang::error::Exn;
 use crate::lang::{Interp, Value};
 use crate::output::drawing::{bulge_arc, bulge_segments};
+use crate::output::props::EntityProps;
 use crate::output::{Drawing, Entity, EntityKind};
 
 /// CHPROP / CHANGE: the objects, then property options until Enter.
@@ -30,6 +32,9 @@ enum ChState {
     Color,
     Layer,
     Ltype,
+    Lweight,
+    Thickness,
+    Ltscale,
 }
 
 impl ChpropCmd {
@@ -74,14 +79,16 @@ impl ChpropCmd {
                 Some("C" | "COLOR" | "COLOUR") => ChState::Color,
                 Some("LA" | "LAYER") => ChState::Layer,
                 Some("LT" | "LTYPE") => ChState::Ltype,
-                Some(o @ ("LW" | "LWEIGHT" | "T" | "THICKNESS" | "S" | "LTSCALE" | "TR"
-                | "TRANSPARENCY" | "M" | "MATERIAL" | "PL" | "PLOTSTYLE" | "E" | "ELEV")) => {
+                Some("LW" | "LWEIGHT") => ChState::Lweight,
+                Some("T" | "THICKNESS") => ChState::Thickness,
+                Some("S" | "LTSCALE") => ChState::Ltscale,
+                Some(o @ ("TR" | "TRANSPARENCY" | "M" | "MATERIAL" | "PL" | "PLOTSTYLE" | "E" | "ELEV")) => {
                     return Err(cmd_err(
                         name,
-                        format!("the {o} property is not modelled by lispcad (Color, LAyer and LType BYLAYER are)"),
+                        format!("the {o} property is not modelled by lispcad (Color, LAyer, LType, ltScale, LWeight and Thickness are)"),
                     ))
                 }
-                _ => return Err(unexpected(name, "C, LA, LT or \"\"", input)),
+                _ => return Err(unexpected(name, "C, LA, LT, S, LW, T or \"\"", input)),
             },
             ChState::Color => {
                 let c = color_of(input, raw)
@@ -113,20 +120,111 @@ impl ChpropCmd {
                 }
                 ChState::Option
             }
-            ChState::Ltype => match kw.as_deref() {
-                Some("BYLAYER") => ChState::Option,
-                _ => {
-                    return Err(cmd_err(
-                        name,
-                        format!(
-                            "per-entity line types are not modelled by lispcad (only BYLAYER; set the layer's with -LAYER LType), got {}",
-                            input.describe()
-                        ),
-                    ))
+            ChState::Ltype => {
+                let lt = input
+                    .name(raw)
+                    .map(|s| s.trim().to_string())
+                    .filter(|s| !s.is_empty())
+                    .ok_or_else(|| unexpected(name, "a line type name", input))?;
+                let lt = linetype_of(it.ext::<Drawing>(), name, &lt)?;
+                self.set(it, |p| p.linetype = Some(lt.clone()));
+                ChState::Option
+            }
+            ChState::Lweight => {
+                let w = lineweight_of(input)
+                    .ok_or_else(|| unexpected(name, "a line weight in mm, BYLAYER, BYBLOCK or DEFAULT", input))?;
+                self.set(it, |p| p.lineweight = Some(w));
+                ChState::Option
+            }
+            ChState::Thickness => match input {
+                Input::Number(t) if t.is_finite() => {
+                    self.set(it, |p| p.thickness = Some(*t));
+                    ChState::Option
                 }
+                _ => return Err(unexpected(name, "a thickness", input)),
+            },
+            ChState::Ltscale => match input {
+                Input::Number(s) if s.is_finite() && *s > 0.0 => {
+                    self.set(it, |p| p.ltscale = Some(*s));
+                    ChState::Option
+                }
+                _ => return Err(unexpected(name, "a positive line-type scale", input)),
             },
         };
         Ok(Step::More(Pending::Chprop(self)))
+    }
+}
+
+impl ChpropCmd {
+    /// Changes the picked entities' line type, weight, thickness or scale.
+    fn set(&self, it: &mut Interp, f: impl Fn(&mut EntityProps)) {
+        let d = it.ext::<Drawing>();
+        for &h in &self.picked {
+            if d.get(h).is_some() {
+                let mut p = d.props(h).cloned().unwrap_or_default();
+                f(&mut p);
+                d.set_props(h, p);
+            }
+        }
+    }
+}
+
+/// A line type for CHPROP: BYLAYER, BYBLOCK, or a name the drawing's LTYPE table has (an
+/// opened drawing's; a drawing made from scratch takes any valid name and writes it solid,
+/// as it does for layers).
+fn linetype_of(d: &Drawing, cmd: &str, name: &str) -> Result<String, Exn> {
+    // "_ByLayer": the underscore asks for the English keyword.
+    let word = name.strip_prefix('_').unwrap_or(name);
+    for b in ["ByLayer", "ByBlock", "Continuous"] {
+        if word.eq_ignore_ascii_case(b) {
+            return Ok(b.to_string());
+        }
+    }
+    if name
+        .chars()
+        .any(|c| "<>/\\\":;?*|,=`".contains(c) || c.is_control())
+    {
+        return Err(cmd_err(cmd, format!("invalid line type name \"{name}\"")));
+    }
+    match d.document() {
+        Some(doc) => doc
+            .table_records("LTYPE")
+            .iter()
+            .filter_map(|r| r.get(2))
+            .find(|n| n.eq_ignore_ascii_case(name))
+            .map(str::to_string)
+            .ok_or_else(|| {
+                cmd_err(
+                    cmd,
+                    format!("line type \"{name}\" is not loaded in the drawing"),
+                )
+            }),
+        None => Ok(name.to_string()),
+    }
+}
+
+/// A line weight (DXF 370): the nearest of AutoCAD's weights to a value in millimetres, or
+/// BYLAYER (-1), BYBLOCK (-2), DEFAULT (-3).
+fn lineweight_of(input: &Input) -> Option<i16> {
+    const WEIGHTS: [i16; 24] = [
+        0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 80, 90, 100, 106, 120, 140, 158,
+        200, 211,
+    ];
+    match input {
+        Input::Number(mm) if mm.is_finite() && *mm >= 0.0 && *mm <= 2.11 + 1e-9 => {
+            let hundredths = mm * 100.0;
+            WEIGHTS.iter().copied().min_by(|a, b| {
+                (f64::from(*a) - hundredths)
+                    .abs()
+                    .total_cmp(&(f64::from(*b) - hundredths).abs())
+            })
+        }
+        _ => match input.keyword().as_deref() {
+            Some("BYLAYER") => Some(-1),
+            Some("BYBLOCK") => Some(-2),
+            Some("DEFAULT") => Some(-3),
+            _ => None,
+        },
     }
 }
 
@@ -172,7 +270,7 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
         return Ok(());
     };
     if matches!(&e.kind, EntityKind::Unmodelled { dxf_type } if dxf_type == "INSERT") {
-        return super::insert::explode_insert(it, h);
+        return super::explode::explode_insert(it, h);
     }
     let (pts, bulges, closed, ocs, z) = match &e.kind {
         EntityKind::LwPolyline {
@@ -249,7 +347,8 @@ fn explode_one(it: &mut Interp, h: u64) -> Result<(), Exn> {
 fn add_like(d: &mut Drawing, e: &Entity, kind: EntityKind) -> Result<(), Exn> {
     let mut n = Entity::new(&e.layer, kind);
     n.color = e.color;
-    d.add(n).map_err(|x| cmd_err("EXPLODE", x))?;
+    let h = d.add(n).map_err(|x| cmd_err("EXPLODE", x))?;
+    d.copy_props(e.handle, h);
     Ok(())
 }
 
@@ -323,16 +422,21 @@ fn offset_toward(it: &mut Interp, h: u64, dist: Option<f64>, p: DVec3) -> Result
     };
     let mut n = Entity::new(&e.layer, curve_entity(&o));
     n.color = e.color;
-    d.add(n).map_err(|x| cmd_err("OFFSET", x))?;
+    let made = d.add(n).map_err(|x| cmd_err("OFFSET", x))?;
+    d.copy_props(e.handle, made);
     Ok(())
 }
 
-/// FILLET: "R" sets FILLETRAD; two lines or arcs (entity names, or `(ename point)` lists whose
-/// point says which part of each to keep) are trimmed or extended to the tangent points of
-/// an arc of that radius (to their corner for radius 0), and the arc is added.
+/// FILLET: "R" sets FILLETRAD; two lines, arcs or circles (entity names, or `(ename point)`
+/// lists whose point says which part of each to keep) are trimmed or extended to the tangent
+/// points of an arc of that radius (to their corner for radius 0; a circle stays whole), and
+/// the arc is added; "P" and a 2D polyline fillet its every vertex, and two picked adjacent
+/// segments of one polyline the vertex they share (`fillet_pline.rs`).
 pub(crate) enum FilletCmd {
     First,
     Radius,
+    /// After the Polyline option: the polyline to fillet at every vertex.
+    Polyline,
     Second(u64, Option<DVec3>),
 }
 
@@ -361,6 +465,7 @@ impl FilletCmd {
                 Input::Enter => return Ok(Step::Done),
                 Input::Word(_) => match input.keyword().as_deref() {
                     Some("R" | "RADIUS") => FilletCmd::Radius,
+                    Some("P" | "POLYLINE") => FilletCmd::Polyline,
                     // The next command: FILLET was left waiting after its radius.
                     _ => return Ok(Step::DoneNotConsumed),
                 },
@@ -377,11 +482,26 @@ impl FilletCmd {
                 }
                 _ => return Err(unexpected("FILLET", "a radius >= 0", input)),
             },
+            FilletCmd::Polyline => match picked(input, raw) {
+                Some((h, _)) => {
+                    let r = it
+                        .ext::<crate::builtins::system::SysVars>()
+                        .real("FILLETRAD");
+                    super::fillet_pline::fillet_polyline(it, h, r)?;
+                    return Ok(Step::Done);
+                }
+                None => return Err(unexpected("FILLET", "a 2D polyline", input)),
+            },
             FilletCmd::Second(h1, p1) => match picked(input, raw) {
                 Some((h2, p2)) => {
                     let r = it
                         .ext::<crate::builtins::system::SysVars>()
                         .real("FILLETRAD");
+                    if h1 == h2 {
+                        // Two segments of one polyline.
+                        super::fillet_pline::fillet_segments(it, h1, (p1, p2), r)?;
+                        return Ok(Step::Done);
+                    }
                     let both_lines = [h1, h2].iter().all(|h| {
                         matches!(
                             it.ext::<Drawing>().get(*h).map(|e| &e.kind),

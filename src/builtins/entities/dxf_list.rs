@@ -70,6 +70,43 @@ fn circle_part(out: &mut Vec<Value>, center: DVec3, radius: f64, normal: DVec3) 
     out.push(pt3(210, normal.normalize()));
 }
 
+/// CHPROP's line type (after the layer), weight and line-type scale (after the colour).
+fn entity_props(out: &mut Vec<Value>, p: &crate::output::props::EntityProps) {
+    // BYLAYER is what an entity without a 6 group has: entget leaves it out, as AutoCAD's.
+    if let Some(lt) = p
+        .linetype
+        .as_ref()
+        .filter(|l| !l.eq_ignore_ascii_case("ByLayer"))
+    {
+        let at =
+            out.len() - usize::from(out.last().is_some_and(|g| g.car().as_f64() == Some(62.0)));
+        out.insert(at, text(6, lt));
+    }
+    if let Some(w) = p.lineweight.filter(|w| *w != -1) {
+        out.push(int(370, w as i32));
+    }
+    if let Some(s) = p.ltscale.filter(|s| *s != 1.0) {
+        out.push(real(48, s));
+    }
+}
+
+/// The thickness CHPROP set: replaces the list's 39 group, or follows its subclass marker.
+fn with_thickness(out: &mut Vec<Value>, t: f64) {
+    if let Some(g) = out.iter_mut().find(|g| g.car().as_f64() == Some(39.0)) {
+        *g = real(39, t);
+        return;
+    }
+    let marker = out
+        .iter()
+        .enumerate()
+        .filter(|(_, g)| g.car().as_f64() == Some(100.0))
+        .nth(1)
+        .map(|(i, _)| i + 1);
+    if let Some(i) = marker {
+        out.insert(i, real(39, t));
+    }
+}
+
 fn layer_color(out: &mut Vec<Value>, e: &Entity) {
     out.push(text(8, &e.layer));
     if let Some(c) = e.color {
@@ -101,6 +138,10 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
     }
     head(&mut out, me, e.kind.type_name(), space, Some(e.handle));
     layer_color(&mut out, e);
+    let props = d.props(e.handle).cloned();
+    if let Some(p) = &props {
+        entity_props(&mut out, p);
+    }
     match &e.kind {
         EntityKind::Line { p0, p1 } => {
             out.push(text(100, "AcDbLine"));
@@ -279,6 +320,13 @@ pub fn entity_list(it: &mut Interp, name: Ename) -> Option<Value> {
                 }
             }
         }
+    }
+    if let Some(t) = props
+        .and_then(|p| p.thickness)
+        .filter(|t| *t != 0.0 || out.iter().any(|g| g.car().as_f64() == Some(39.0)))
+        .filter(|_| crate::output::props::has_thickness(&e.kind))
+    {
+        with_thickness(&mut out, t);
     }
     Some(Value::list(out))
 }

@@ -15,6 +15,7 @@ use crate::geom::frame::Ocs;
 use crate::geom::quadspline::QuadSpline;
 use crate::lang::error::{err, Exn, LResult};
 use crate::lang::{Interp, Value};
+use crate::output::props::EntityProps;
 use crate::output::record::TagList;
 use crate::output::{Entity, EntityKind};
 
@@ -35,7 +36,6 @@ pub struct PendingPolyline {
 /// AutoCAD entity types lispcad does not model: `entmake` says so instead of returning a
 /// silent nil (which AutoCAD gives for unknown types).
 const UNSUPPORTED: &[&str] = &[
-    "INSERT",
     "MTEXT",
     "HATCH",
     "DIMENSION",
@@ -46,10 +46,6 @@ const UNSUPPORTED: &[&str] = &[
     "REGION",
     "LEADER",
     "MLEADER",
-    "BLOCK",
-    "ENDBLK",
-    "ATTDEF",
-    "ATTRIB",
     "3DSOLID",
     "MLINE",
     "IMAGE",
@@ -292,19 +288,89 @@ fn make_entity(it: &mut Interp, ty: &str, g: &Groups) -> Result<Option<u64>, Exn
     let Some(kind) = kind_of(it, ty, g)? else {
         return Ok(None);
     };
+    let Ok(props) = props_of(it, g)? else {
+        return Ok(None);
+    };
     let e = Entity {
         handle: 0,
         layer,
         color,
         kind,
     };
-    Ok(drawing(it).add(e).ok())
+    let Ok(h) = drawing(it).add(e) else {
+        return Ok(None);
+    };
+    if props != EntityProps::default() {
+        drawing(it).set_props(h, props);
+    }
+    Ok(Some(h))
+}
+
+/// Line type (6), line-type scale (48), line weight (370) and thickness (39) of a list, as
+/// CHPROP sets them (a group at its default leaves the property unset); Err(()) for a value
+/// out of range (entmake and entmod then return nil).
+fn props_of(it: &Interp, g: &Groups) -> Result<Result<EntityProps, ()>, Exn> {
+    let mut p = EntityProps::default();
+    if let Some(lt) = g.string(it, 6)? {
+        if lt.is_empty() || lt.chars().any(|c| "<>/\\\":;?*|,=`".contains(c)) {
+            return Ok(Err(()));
+        }
+        if !lt.eq_ignore_ascii_case("ByLayer") {
+            p.linetype = Some(lt);
+        }
+    }
+    if let Some(s) = g.real(it, 48)? {
+        if !(s.is_finite() && s > 0.0) {
+            return Ok(Err(()));
+        }
+        p.ltscale = (s != 1.0).then_some(s);
+    }
+    if let Some(w) = g.int(it, 370)? {
+        if !(-3..=211).contains(&w) {
+            return Ok(Err(()));
+        }
+        p.lineweight = (w != -1).then_some(w as i16);
+    }
+    if let Some(t) = g.real(it, 39)? {
+        if !t.is_finite() {
+            return Ok(Err(()));
+        }
+        p.thickness = (t != 0.0).then_some(t);
+    }
+    Ok(Ok(p))
+}
+
+/// An entity made while a block definition is open: it goes into the block.
+fn make_in_block(
+    it: &mut Interp,
+    ty: &str,
+    g: &Groups,
+    xdata: Option<TagList>,
+) -> Result<bool, Exn> {
+    let Ok(color) = color_of(it, g)? else {
+        return Ok(false);
+    };
+    let layer = match g.string(it, 8)? {
+        Some(l) => l,
+        None => current_layer(it),
+    };
+    let Some(kind) = kind_of(it, ty, g)? else {
+        return Ok(false);
+    };
+    let e = Entity {
+        handle: 0,
+        layer,
+        color,
+        kind,
+    };
+    Ok(super::block_make::add_to_block(it, e, xdata).is_some())
 }
 
 pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
     let Some(list) = a.first().filter(|v| v.truthy()) else {
-        // (entmake) cancels a POLYLINE in progress.
+        // (entmake) cancels a POLYLINE, INSERT or block definition in progress.
         it.ext::<EntityState>().pending_polyline = None;
+        super::block_make::cancel(it);
         return Ok(Value::Nil);
     };
     let g = Groups::parse(it, list)?;
@@ -316,15 +382,23 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         super::objects::XdataIn::Unregistered => return Ok(Value::Nil),
         x => x,
     };
+    let pending_insert = it.ext::<EntityState>().pending_insert.is_some();
     let made = match ty.as_str() {
         "VERTEX" if pending => vertex(it, &g)?,
         "SEQEND" if pending => seqend(it)?,
-        "VERTEX" | "SEQEND" => false,
-        _ if pending => {
-            // Any other entity abandons the unfinished polyline, as AutoCAD does.
+        "ATTRIB" if pending_insert => super::block_make::attrib(it, &g)?,
+        "SEQEND" if pending_insert => super::block_make::seqend(it)?,
+        "VERTEX" | "SEQEND" | "ATTRIB" => false,
+        _ if pending || pending_insert => {
+            // Any other entity abandons the unfinished polyline or INSERT, as AutoCAD does.
             it.ext::<EntityState>().pending_polyline = None;
+            it.ext::<EntityState>().pending_insert = None;
             false
         }
+        "BLOCK" => super::block_make::block(it, &g)?,
+        "ENDBLK" => return super::block_make::endblk(it),
+        "INSERT" => super::block_make::insert(it, &g)?,
+        "ATTDEF" => super::block_make::attdef(it, &g)?,
         "POLYLINE" => {
             let apps = match xdata {
                 super::objects::XdataIn::Apps(apps) => Some(apps),
@@ -337,8 +411,21 @@ pub fn entmake(it: &mut Interp, a: &[Value]) -> LResult {
         "XRECORD" | "DICTIONARY" => super::objects::make_object(it, &ty, &g)?.is_some(),
         t if UNSUPPORTED.contains(&t) => {
             return Err(err(format!(
-                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, LAYER, APPID, XRECORD and DICTIONARY are)"
+                "entmake: entity type {t} is not supported by lispcad (LINE, CIRCLE, ARC, POINT, LWPOLYLINE, POLYLINE, SPLINE, ELLIPSE, 3DFACE, TEXT, BLOCK...ENDBLK, INSERT, ATTDEF, ATTRIB, LAYER, APPID, XRECORD and DICTIONARY are)"
             )))
+        }
+        t if super::block_make::in_block(it) => {
+            let xdata = match xdata {
+                super::objects::XdataIn::Apps(apps) => {
+                    let mut x = TagList::new();
+                    for (c, v) in apps.iter().flat_map(|(_, t)| t.iter()) {
+                        x.push(c, v);
+                    }
+                    Some(x)
+                }
+                _ => None,
+            };
+            make_in_block(it, t, &g, xdata)?
         }
         t => match make_entity(it, t, &g)? {
             Some(h) => {
@@ -428,6 +515,16 @@ fn seqend(it: &mut Interp) -> Result<bool, Exn> {
             closed: pl.closed,
         },
     };
+    if super::block_make::in_block(it) {
+        let x = pl.xdata.map(|apps| {
+            let mut x = TagList::new();
+            for (c, v) in apps.iter().flat_map(|(_, t)| t.iter()) {
+                x.push(c, v);
+            }
+            x
+        });
+        return Ok(super::block_make::add_to_block(it, e, x).is_some());
+    }
     let Ok(h) = drawing(it).add(e) else {
         return Ok(false);
     };
@@ -515,8 +612,22 @@ pub fn entmod(it: &mut Interp, a: &[Value]) -> LResult {
         color,
         kind,
     };
+    let Ok(props) = props_of(it, &g)? else {
+        return Ok(Value::Nil);
+    };
     if drawing(it).replace(name.handle, e).is_err() {
         return Ok(Value::Nil);
+    }
+    let d = drawing(it);
+    if props != EntityProps::default() || d.props(name.handle).is_some() {
+        // Unset ones go back to their defaults, as a list without them means.
+        let full = EntityProps {
+            linetype: props.linetype.or_else(|| Some("ByLayer".to_string())),
+            lineweight: props.lineweight.or(Some(-1)),
+            thickness: props.thickness.or(Some(0.0)),
+            ltscale: props.ltscale.or(Some(1.0)),
+        };
+        d.set_props(name.handle, full);
     }
     if let super::objects::XdataIn::Apps(apps) = xdata {
         super::objects::apply_xdata(it, name.handle, apps);

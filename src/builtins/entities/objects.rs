@@ -305,19 +305,27 @@ pub fn record_list(it: &mut Interp, h: u64, me: Value) -> Option<Value> {
     if let Some(t) = drawing(it).object(h) {
         return Some(super::tag_list::object_list(it, &t, me));
     }
-    let opened = drawing(it).document().and_then(|doc| {
-        doc.sections.iter().find_map(|s| match s {
-            crate::output::document::Section::Tables(ts) => ts
-                .iter()
-                .flat_map(|t| t.records.iter())
-                .find(|r| r.handle() == Some(h))
-                .cloned(),
-            crate::output::document::Section::Other { name, records } if name == "BLOCKS" => {
-                records.iter().find(|r| r.handle() == Some(h)).cloned()
-            }
-            _ => None,
+    let d = drawing(it);
+    let opened = d
+        .document()
+        .and_then(|doc| {
+            doc.sections.iter().find_map(|s| match s {
+                crate::output::document::Section::Tables(ts) => ts
+                    .iter()
+                    .flat_map(|t| t.records.iter())
+                    .find(|r| r.handle() == Some(h))
+                    .cloned(),
+                _ => None,
+            })
         })
-    });
+        .or_else(|| {
+            // Block definitions: the opened file's and those entmake made.
+            d.new_block_records()
+                .iter()
+                .chain(d.block_section())
+                .find(|r| r.handle() == Some(h))
+                .cloned()
+        });
     if let Some(t) = opened {
         return Some(super::tag_list::object_list(it, &t, me));
     }
@@ -342,19 +350,29 @@ pub fn record_list(it: &mut Interp, h: u64, me: Value) -> Option<Value> {
 pub fn tblobjname(it: &mut Interp, a: &[Value]) -> LResult {
     let table = it.string(&a[0])?.to_uppercase();
     let name = it.string(&a[1])?.to_string();
+    let d = drawing(it);
+    // A block's name is its BLOCK_RECORD's, as AutoCAD gives it.
+    let made_block = (table == "BLOCK" && d.document().is_none())
+        .then(|| {
+            d.new_block_records()
+                .iter()
+                .find(|r| r.get(2).is_some_and(|n| n.eq_ignore_ascii_case(&name)))
+                .and_then(TagList::handle)
+        })
+        .flatten();
+    if let Some(h) = made_block {
+        return Ok(ename_value(it, h));
+    }
     let in_file = drawing(it).document().and_then(|doc| {
         let recs: &[TagList] = if table == "BLOCK" {
-            doc.section_records("BLOCKS")
+            doc.table_records("BLOCK_RECORD")
         } else if table == "LAYER" && drawing_lacks_layer_record(doc, &name) {
             &[]
         } else {
             doc.table_records(&table)
         };
         recs.iter()
-            .find(|r| {
-                (table != "BLOCK" || r.type_name() == "BLOCK")
-                    && r.get(2).is_some_and(|n| n.eq_ignore_ascii_case(&name))
-            })
+            .find(|r| r.get(2).is_some_and(|n| n.eq_ignore_ascii_case(&name)))
             .and_then(TagList::handle)
     });
     if let Some(h) = in_file {

@@ -11,25 +11,16 @@ use crate::lang::{Interp, Value};
 use crate::output::record::TagList;
 use crate::output::{Drawing, EntityKind, Layer};
 
-/// The records of an opened drawing's table (or its BLOCK definitions), as read; `None`
-/// for a drawing made from scratch or for LAYER, which follows the drawing's layers.
+/// The records of an opened drawing's table, as read, or the BLOCK definitions of any
+/// drawing; `None` for another table of a drawing made from scratch or for LAYER, which
+/// follows the drawing's layers.
 fn opened_records(it: &mut Interp, table: &str) -> Option<Vec<(String, Value)>> {
+    if table == "BLOCK" {
+        return Some(block_records(it));
+    }
     let doc = drawing(it).document()?;
     let recs: Vec<TagList> = match table {
         "LAYER" => return None,
-        // Model and paper space are layouts, not blocks, to tblnext.
-        "BLOCK" => doc
-            .section_records("BLOCKS")
-            .iter()
-            .filter(|r| r.type_name() == "BLOCK")
-            .filter(|r| {
-                !r.get(2).is_some_and(|n| {
-                    n.starts_with("*Model_Space")
-                        || n.to_ascii_uppercase().starts_with("*PAPER_SPACE")
-                })
-            })
-            .cloned()
-            .collect(),
         _ => doc.table(table)?.records.clone(),
     };
     Some(
@@ -40,6 +31,42 @@ fn opened_records(it: &mut Interp, table: &str) -> Option<Vec<(String, Value)>> 
             })
             .collect(),
     )
+}
+
+/// The BLOCK table as `tblsearch` gives it (the opened file's blocks and those `entmake`
+/// defined): name, flags, base point, and -2 the first entity of the definition.
+fn block_records(it: &mut Interp) -> Vec<(String, Value)> {
+    let recs = drawing(it).block_section().to_vec();
+    let mut out = Vec::new();
+    for (i, r) in recs.iter().enumerate() {
+        // Model and paper space are layouts, not blocks, to tblnext.
+        let layout = r.get(2).is_some_and(|n| {
+            n.starts_with("*Model_Space") || n.to_ascii_uppercase().starts_with("*PAPER_SPACE")
+        });
+        if r.type_name() != "BLOCK" || layout {
+            continue;
+        }
+        let name = r.get(2).unwrap_or("").to_string();
+        let list = super::tag_list::table_record_list(it, r);
+        let mut items: Vec<Value> = list
+            .iter()
+            .filter(|g| {
+                let code = match g.car() {
+                    Value::Int(c) => c,
+                    _ => 0,
+                };
+                let empty_path = code == 1 && g.cdr().as_str() == Some("");
+                !matches!(code, 3 | 8) && !empty_path
+            })
+            .cloned()
+            .collect();
+        let first = recs.get(i + 1).filter(|f| f.type_name() != "ENDBLK");
+        if let Some(h) = first.and_then(TagList::handle) {
+            items.push(Value::cons(Value::Int(-2), super::ename_value(it, h)));
+        }
+        out.push((name, Value::list(items)));
+    }
+    out
 }
 
 /// The records of a table, each as (name, DXF list), in table order.
@@ -66,9 +93,11 @@ pub(super) fn records(it: &mut Interp, table: &str) -> Vec<(String, Value)> {
             .collect(),
         "LTYPE" => {
             let mut names: Vec<String> = vec!["Continuous".to_string()];
-            for l in d.layers() {
-                if !names.iter().any(|n| n.eq_ignore_ascii_case(&l.linetype)) {
-                    names.push(l.linetype.clone());
+            let layer_types = d.layers().iter().map(|l| l.linetype.clone());
+            // And those CHPROP gave entities (written solid, as layers' are).
+            for lt in layer_types.chain(d.entity_linetypes()) {
+                if !names.iter().any(|n| n.eq_ignore_ascii_case(&lt)) {
+                    names.push(lt);
                 }
             }
             names

@@ -251,7 +251,12 @@ pub fn modify_tags(
 
 /// A list value as the group(s) of a file: a point as its x, y (and z) groups, an angle in
 /// degrees, an entity name as its handle, numbers as DXF writes them.
-fn group_texts(it: &Interp, c: i32, v: &Value, ty: &str) -> Result<Vec<(i32, String)>, Exn> {
+pub(crate) fn group_texts(
+    it: &Interp,
+    c: i32,
+    v: &Value,
+    ty: &str,
+) -> Result<Vec<(i32, String)>, Exn> {
     let bad = || super::dxf_list::bad_group(it, &pair(c, v.clone()));
     let real = |x: f64| {
         let mut s = String::new();
