@@ -158,16 +158,51 @@ pub fn check_writer_options(common: &Common) -> Result<(), String> {
 
 /// Entry point; returns the process exit status.
 pub fn main() -> i32 {
-    let cli = match Cli::try_parse() {
-        Ok(c) => c,
-        Err(e) => {
-            let code = if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
-            let _ = e.print();
-            return code;
-        }
+    let cli = match run_file_only(std::env::args_os()) {
+        Some(c) => c,
+        None => match parse_args() {
+            Ok(c) => c,
+            Err(code) => return code,
+        },
     };
     // Everything that evaluates Lisp runs on a thread with a large stack (see `with_eval_stack`).
     crate::lang::eval::with_eval_stack(move || dispatch(cli))
+}
+
+/// `lispcad run FILE` with nothing else, recognised without clap: building clap's command tree
+/// was a sixth of an empty script's start-up. Any other shape (options, `--`, a name starting
+/// with `-`, an empty name) goes to clap, so every message and every default stays clap's;
+/// the parse is the one clap gives for these arguments (checked by a test).
+fn run_file_only(mut args: impl Iterator<Item = std::ffi::OsString>) -> Option<Cli> {
+    let _program = args.next()?;
+    let sub = args.next()?;
+    let file = args.next()?;
+    if args.next().is_some() || sub != "run" || file.is_empty() {
+        return None;
+    }
+    if file.as_encoded_bytes().starts_with(b"-") {
+        return None;
+    }
+    Some(Cli {
+        command: Some(Command::Run(run::RunArgs {
+            file: PathBuf::from(file),
+            outputs: Vec::new(),
+            set: Vec::new(),
+        })),
+        common: Common::default(),
+    })
+}
+
+/// Clap's parse; the exit status when it printed help, a version or a usage error instead.
+fn parse_args() -> Result<Cli, i32> {
+    match Cli::try_parse() {
+        Ok(c) => Ok(c),
+        Err(e) => {
+            let code = if e.use_stderr() { EXIT_USAGE } else { EXIT_OK };
+            let _ = e.print();
+            Err(code)
+        }
+    }
 }
 
 fn dispatch(cli: Cli) -> i32 {
@@ -190,5 +225,48 @@ fn dispatch(cli: Cli) -> i32 {
         Some(Command::Completions { shell }) => completions::print(shell),
         Some(Command::Lsp) => lsp::lsp(),
         Some(Command::Serve(args)) => serve::serve(&args, &common),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::ffi::OsString;
+
+    fn args(a: &[&str]) -> Vec<OsString> {
+        a.iter().map(OsString::from).collect()
+    }
+
+    #[test]
+    fn run_file_fast_path_parses_as_clap_does() {
+        for a in [
+            &["lispcad", "run", "a.lsp"][..],
+            &["lispcad", "run", "dir/with space/x"],
+            &["lispcad", "run", "help"],
+            &["lispcad", "run", "run"],
+        ] {
+            let fast = run_file_only(args(a).into_iter()).expect("the fast path takes it");
+            let clap = Cli::try_parse_from(args(a)).expect("clap parses it");
+            assert_eq!(format!("{fast:?}"), format!("{clap:?}"), "{a:?}");
+        }
+    }
+
+    #[test]
+    fn anything_else_goes_to_clap() {
+        for a in [
+            &["lispcad"][..],
+            &["lispcad", "run"],
+            &["lispcad", "run", ""],
+            &["lispcad", "run", "-"],
+            &["lispcad", "run", "--help"],
+            &["lispcad", "run", "-o"],
+            &["lispcad", "run", "--", "a.lsp"],
+            &["lispcad", "run", "a.lsp", "-o", "x.svg"],
+            &["lispcad", "--max-steps", "5"],
+            &["lispcad", "eval", "x"],
+            &["lispcad", "RUN", "a.lsp"],
+        ] {
+            assert!(run_file_only(args(a).into_iter()).is_none(), "{a:?}");
+        }
     }
 }

@@ -37,7 +37,12 @@ impl Operand {
     #[inline(always)]
     pub fn eval(&self, it: &mut Interp) -> LResult {
         match self {
-            Operand::Var(i) => Ok(it.values[*i].clone()),
+            // Numbers first: a copy without the generic clone's dispatch over every variant.
+            Operand::Var(i) => Ok(match &it.values[*i] {
+                Value::Int(n) => Value::Int(*n),
+                Value::Real(r) => Value::Real(*r),
+                v => v.clone(),
+            }),
             Operand::Const(v) => Ok(v.clone()),
             Operand::Code(c) => c(it),
         }
@@ -150,6 +155,31 @@ impl<'a> Compiler<'a> {
         }
     }
 
+    /// A condition: the fused comparison when the form is an inlined one (`fastpath`),
+    /// otherwise the form's ordinary code.
+    fn test(&mut self, form: &Value) -> Result<super::fastpath::Test, Code> {
+        if let Value::Cons(c) = form {
+            if let Value::Sym(head) = c.car {
+                // What `compile` would do for this form, up to the inline comparison itself.
+                if super::fastpath::is_comparison(self.syms.name(head))
+                    && c.cdr.iter().count() == 2
+                    && self.depth < MAX_DEPTH
+                    && super::eval::stack_pointer() >= self.stack_floor
+                {
+                    self.depth += 1;
+                    let span = self.span_of(form);
+                    let args = self.operands(&c.cdr);
+                    let name = self.syms.name(head);
+                    let r = super::fastpath::compile_test(head, name, args, span)
+                        .map_err(|args| super::fastpath::compile(head, name, args, span));
+                    self.depth -= 1;
+                    return r;
+                }
+            }
+        }
+        Err(self.compile(form))
+    }
+
     fn compile_args(&mut self, args: &Value) -> Box<[Code]> {
         args.iter().map(|a| self.compile(a)).collect()
     }
@@ -194,13 +224,25 @@ impl<'a> Compiler<'a> {
                 if !(2..=3).contains(&n) {
                     return arity_error(n < 2, span);
                 }
-                let test = self.compile(&arg(0));
+                let test = self.test(&arg(0));
                 // Branches are often a variable or a constant (a recursion's base case).
                 let then = self.operand(&arg(1));
                 let els = if n == 3 {
                     self.operand(&arg(2))
                 } else {
                     Operand::Const(Value::Nil)
+                };
+                let test = match test {
+                    Ok(test) => {
+                        return Box::new(move |it| {
+                            if test(it)? {
+                                then.eval(it)
+                            } else {
+                                els.eval(it)
+                            }
+                        })
+                    }
+                    Err(code) => code,
                 };
                 Box::new(move |it| {
                     let t = test(it)?;
@@ -231,8 +273,21 @@ impl<'a> Compiler<'a> {
                 if n < 1 {
                     return arity_error(true, span);
                 }
-                let test = self.compile(&arg(0));
+                let test = self.test(&arg(0));
                 let body = self.compile_body(&rest.cdr());
+                let test = match test {
+                    Ok(test) => {
+                        return Box::new(move |it| {
+                            let mut last = Value::Nil;
+                            while test(it)? {
+                                it.tick()?;
+                                std::mem::replace(&mut last, body(it)?).release();
+                            }
+                            Ok(last)
+                        })
+                    }
+                    Err(code) => code,
+                };
                 Box::new(move |it| {
                     let mut last = Value::Nil;
                     loop {
@@ -617,8 +672,7 @@ fn undefined(it: &Interp, fsym: Sym, span: Option<Span>) -> Exn {
 #[inline(always)]
 fn dispatch<A>(it: &mut Interp, fsym: Sym, argv: A, span: Option<Span>) -> LResult
 where
-    A: AsRef<[Value]> + IntoIterator<Item = Value>,
-    A::IntoIter: ExactSizeIterator,
+    A: AsRef<[Value]> + IntoIterator<Item = Value> + BindArgs,
 {
     match &it.values[fsym.idx()] {
         Value::Func(l) => {
@@ -641,6 +695,64 @@ where
             let f = other.clone();
             it.apply_args(&f, argv.into_iter().collect())
                 .map_err(|e| add_frame(it, with_span(e, span), Some(fsym), span))
+        }
+    }
+}
+
+/// Arguments a call hands to a user function, bound to its parameters by move. Compiled calls'
+/// fixed arrays are taken apart element by element: moved through an array iterator, each
+/// value was copied through the stack, and reloading 16 bytes written a field at a time
+/// stalled on store forwarding (a third of fib's call path, by perf's samples).
+pub(crate) trait BindArgs {
+    fn count(&self) -> usize;
+    /// Binds the arguments to `params`, which has `count()` symbols.
+    fn bind_to(self, it: &mut Interp, params: &[Sym]);
+}
+
+macro_rules! bind_array {
+    ($n:literal, [$($i:literal $a:ident),*]) => {
+        impl BindArgs for [Value; $n] {
+            #[inline(always)]
+            fn count(&self) -> usize {
+                $n
+            }
+            #[inline(always)]
+            #[allow(unused_variables)]
+            fn bind_to(self, it: &mut Interp, params: &[Sym]) {
+                let [$($a),*] = self;
+                $(it.bind(params[$i], $a);)*
+            }
+        }
+    };
+}
+
+bind_array!(0, []);
+bind_array!(1, [0 a]);
+bind_array!(2, [0 a, 1 b]);
+bind_array!(3, [0 a, 1 b, 2 c]);
+bind_array!(4, [0 a, 1 b, 2 c, 3 d]);
+
+impl BindArgs for Args {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn bind_to(self, it: &mut Interp, params: &[Sym]) {
+        for (p, a) in params.iter().zip(self) {
+            it.bind(*p, a);
+        }
+    }
+}
+
+/// A slice's values, taken (left nil).
+struct Taken<'a>(&'a mut [Value]);
+
+impl BindArgs for Taken<'_> {
+    fn count(&self) -> usize {
+        self.0.len()
+    }
+    fn bind_to(self, it: &mut Interp, params: &[Sym]) {
+        for (p, a) in params.iter().zip(self.0.iter_mut()) {
+            it.bind(*p, std::mem::take(a));
         }
     }
 }
@@ -673,27 +785,21 @@ impl Interp {
 
     /// `call_lambda` taking the arguments by move out of `args` (left nil).
     pub fn enter_lambda(&mut self, l: &Lambda, args: &mut [Value]) -> LResult {
-        self.enter_lambda_with(l, args.iter_mut().map(std::mem::take))
+        self.enter_lambda_with(l, Taken(args))
     }
 
-    /// The call itself, taking the arguments from any exact-size source (an array on the
-    /// caller's stack in compiled calls).
+    /// The call itself, taking the arguments from an array on the caller's stack (compiled
+    /// calls) or a slice.
     #[inline(always)]
-    pub(crate) fn enter_lambda_with<A>(&mut self, l: &Lambda, args: A) -> LResult
-    where
-        A: IntoIterator<Item = Value>,
-        A::IntoIter: ExactSizeIterator,
-    {
-        let args = args.into_iter();
-        if args.len() != l.params.len() {
-            return Err(arg_count_error(args.len() < l.params.len()));
+    pub(crate) fn enter_lambda_with<A: BindArgs>(&mut self, l: &Lambda, args: A) -> LResult {
+        let n = args.count();
+        if n != l.params.len() {
+            return Err(arg_count_error(n < l.params.len()));
         }
         self.tick()?;
         self.check_stack()?;
         let base = self.saves_len();
-        for (p, a) in l.params.iter().zip(args) {
-            self.bind(*p, a);
-        }
+        args.bind_to(self, &l.params);
         for p in l.locals.iter() {
             self.bind(*p, Value::Nil);
         }

@@ -220,8 +220,18 @@ trait Opnd: 'static {
 }
 
 struct OVar(usize);
+/// An integer constant (`(- n 1)`, `(< i 10)`): its type known when compiling, so the
+/// arithmetic's type dispatch on it folds away.
+struct OInt(i32);
 struct OConst(Value);
 struct OCode(Code);
+
+impl Opnd for OInt {
+    #[inline(always)]
+    fn get(&self, _: &mut Interp) -> LResult {
+        Ok(Value::Int(self.0))
+    }
+}
 
 impl Opnd for OVar {
     #[inline(always)]
@@ -255,6 +265,10 @@ macro_rules! with_opnd {
         match $o {
             Operand::Var(i) => {
                 let $x = OVar(i);
+                $body
+            }
+            Operand::Const(Value::Int(k)) => {
+                let $x = OInt(k);
                 $body
             }
             Operand::Const(v) => {
@@ -355,6 +369,100 @@ fn carcdr_code<X: Opnd>(
         }
         fallback(it, head, &[xv], span)
     })
+}
+
+/// Whether `name` (a symbol's name) is one of the comparisons `compile_test` fuses.
+pub fn is_comparison(name: &str) -> bool {
+    matches!(name, "<" | ">" | "<=" | ">=" | "=" | "/=")
+}
+
+/// A condition's code: whether the test form's value is true, without making the value.
+pub type Test = Box<dyn Fn(&mut Interp) -> Result<bool, Exn>>;
+
+/// Both numbers: the comparison's truth; `None` sends the call to the builtin.
+#[inline(always)]
+fn cmp_numbers(op: Bin, x: &Value, y: &Value) -> Option<bool> {
+    #[inline(always)]
+    fn cmp<T: PartialOrd>(op: Bin, a: T, b: T) -> bool {
+        match op {
+            Bin::Lt => a < b,
+            Bin::Gt => a > b,
+            Bin::Le => a <= b,
+            Bin::Ge => a >= b,
+            Bin::Eq => a == b,
+            Bin::Ne => a != b,
+            Bin::Add | Bin::Sub | Bin::Mul | Bin::Div => unreachable!("not a comparison"),
+        }
+    }
+    match (x, y) {
+        (Value::Int(a), Value::Int(b)) => Some(cmp(op, *a, *b)),
+        _ => Some(cmp(op, x.as_f64()?, y.as_f64()?)),
+    }
+}
+
+fn test_code<const OP: u8, X: Opnd, Y: Opnd>(
+    head: Sym,
+    b: &'static Builtin,
+    x: X,
+    y: Y,
+    span: Option<Span>,
+) -> Test {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        let yv = y.get(it)?;
+        if holds(it, fi, b) {
+            if let Some(t) = cmp_numbers(bin_of(OP), &xv, &yv) {
+                std::mem::forget(xv);
+                std::mem::forget(yv);
+                return Ok(t);
+            }
+        }
+        let v = fallback(it, head, &[xv, yv], span)?;
+        let t = v.truthy();
+        v.release();
+        Ok(t)
+    })
+}
+
+/// `(if (< a b) ...)`, `(while (< i n) ...)`: a two-argument comparison as a condition gives
+/// its truth straight to the branch, instead of a T or nil value to test and drop (fib's
+/// base-case test, every counting loop). `None` when `head` is not an inlined comparison
+/// or the arity differs; the code falls back to the builtin exactly as the inline call does.
+pub fn compile_test(
+    head: Sym,
+    name: &str,
+    mut args: Vec<Operand>,
+    span: Option<Span>,
+) -> Result<Test, Vec<Operand>> {
+    let Some(k) = KNOWN.get().and_then(Option::as_ref) else {
+        return Err(args);
+    };
+    if args.len() != 2 {
+        return Err(args);
+    }
+    let lname = name.to_ascii_lowercase();
+    let Some((_, op, b)) = k.bins.iter().find(|(n, _, _)| *n == lname) else {
+        return Err(args);
+    };
+    let (op, b) = (*op, *b);
+    if matches!(op, Bin::Add | Bin::Sub | Bin::Mul | Bin::Div) {
+        return Err(args);
+    }
+    let y = args.pop().expect("two args");
+    let x = args.pop().expect("two args");
+    macro_rules! cmp_op {
+        ($($v:ident),*) => {
+            match op {
+                $(Bin::$v => {
+                    const O: u8 = Bin::$v as u8;
+                    with_opnd!(x, x => with_opnd!(y, y => test_code::<O, _, _>(head, b, x, y, span)))
+                })*
+                Bin::Add | Bin::Sub | Bin::Mul | Bin::Div => unreachable!("checked above"),
+            }
+        };
+    }
+    Ok(cmp_op!(Lt, Gt, Le, Ge, Eq, Ne))
 }
 
 /// Inline code for `(head args...)` when head names a fast-path builtin and the arity fits;

@@ -81,6 +81,13 @@ fn counted(n: isize) {
     LAST.with(|l| l.set(n));
 }
 
+/// Counts `n` bytes more (or fewer) as held by this thread: storage the language manages
+/// itself (cons cells, `cells`) is counted as it is used, not as it is allocated.
+#[inline(always)]
+pub(crate) fn count(n: isize) {
+    add(n);
+}
+
 /// Net bytes this thread holds.
 pub fn thread_bytes() -> isize {
     NET.with(Cell::get)

@@ -8,6 +8,7 @@
 //! `luaL_openlibs` does.
 
 pub mod builtin;
+mod cells;
 pub mod compile;
 mod defparam;
 pub mod encoding;

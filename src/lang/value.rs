@@ -47,7 +47,7 @@ pub struct Cons {
 
 /// A counted reference to a cons cell: `Rc<Cons>` without the weak count nobody uses, so a
 /// cell takes 40 bytes instead of 48 (lists of a million elements are common in CAD data, and
-/// their memory is what peers are compared on).
+/// their memory is what peers are compared on). Cells live in the thread's pool (`cells`).
 pub struct ConsRef(NonNull<ConsBox>);
 
 struct ConsBox {
@@ -58,11 +58,15 @@ struct ConsBox {
 impl ConsRef {
     #[inline]
     pub fn new(cell: Cons) -> ConsRef {
-        let b = Box::new(ConsBox {
-            count: Cell::new(1),
-            cell,
-        });
-        ConsRef(NonNull::from(Box::leak(b)))
+        let p = super::cells::take().cast::<ConsBox>();
+        // SAFETY: a fresh slot of a cell's size and alignment (checked below), ours alone.
+        unsafe {
+            p.as_ptr().write(ConsBox {
+                count: Cell::new(1),
+                cell,
+            })
+        };
+        ConsRef(p)
     }
 
     #[inline(always)]
@@ -92,11 +96,19 @@ impl ConsRef {
         }
         let p = self.0;
         std::mem::forget(self);
-        // SAFETY: this was the only reference, and it is forgotten: the box is ours.
-        let b = unsafe { Box::from_raw(p.as_ptr()) };
+        // SAFETY: this was the only reference, and it is forgotten: the cell is ours, and
+        // once read out its storage goes back to the pool.
+        let b = unsafe { p.as_ptr().read() };
+        unsafe { super::cells::give(p.cast()) };
         Ok(b.cell)
     }
 }
+
+// The pool's slots are sized for a cell.
+const _: () = assert!(
+    std::mem::size_of::<ConsBox>() == std::mem::size_of::<super::cells::Slot>()
+        && std::mem::align_of::<ConsBox>() == std::mem::align_of::<super::cells::Slot>()
+);
 
 impl std::ops::Deref for ConsRef {
     type Target = Cons;
@@ -127,8 +139,11 @@ impl Drop for ConsRef {
         let n = c.get() - 1;
         c.set(n);
         if n == 0 {
-            // SAFETY: the last reference is going: nothing else can reach the box.
-            drop(unsafe { Box::from_raw(self.0.as_ptr()) });
+            // SAFETY: the last reference is going: nothing else can reach the cell.
+            unsafe {
+                std::ptr::drop_in_place(self.0.as_ptr());
+                super::cells::give(self.0.cast());
+            }
         }
     }
 }
@@ -498,6 +513,28 @@ mod tests {
     #[test]
     fn a_cons_cell_takes_40_bytes() {
         assert_eq!(std::mem::size_of::<ConsBox>(), 40);
+    }
+
+    #[test]
+    fn cells_are_counted_while_live_and_reused_once_freed() {
+        use crate::lang::memory::thread_bytes;
+        let build = || {
+            let mut l = Value::Nil;
+            for i in 0..100_000 {
+                l = Value::cons(Value::Int(i), l);
+            }
+            l
+        };
+        let l = build();
+        let built = thread_bytes();
+        drop(l);
+        // Every cell gives its 40 bytes back to the thread's budget.
+        assert_eq!(built - thread_bytes(), 100_000 * 40);
+        // The same list again takes the freed cells: no new chunk, the same count.
+        let l = build();
+        assert_eq!(thread_bytes(), built);
+        assert_eq!(l.iter().count(), 100_000);
+        assert!(matches!(l.iter().next(), Some(Value::Int(99_999))));
     }
 
     #[test]
