@@ -12,7 +12,8 @@
 #     depend on the machine's load, so a cost of a few per cent shows even on a busy machine.
 #
 #   bench/run-alloc-cost.sh [REPS]      (default 9; PROGS as for run-lang.sh; NOBUILD=1 reuses
-#                                        target/release/lispcad{,-uncounted} as they are)
+#                                        the binaries as they are: COUNTED and UNCOUNTED paths,
+#                                        by default target/release/lispcad{,-uncounted})
 set -euo pipefail
 cd "$(dirname "$0")/.."
 reps="${1:-9}"
@@ -21,16 +22,18 @@ if [[ -z "${NOBUILD:-}" ]]; then
   cp target/release/lispcad target/release/lispcad-uncounted
   cargo build --release --quiet
 fi
+counted="${COUNTED:-target/release/lispcad}"
+uncounted="${UNCOUNTED:-target/release/lispcad-uncounted}"
 echo "## bench/run-lang.sh: lispcad = counted (as shipped), before = uncounted"
-BEFORE=target/release/lispcad-uncounted bash bench/run-lang.sh "$reps"
+LISPCAD="$counted" BEFORE="$uncounted" bash bench/run-lang.sh "$reps"
 
 echo
 echo "## temple batch, 1000 variants to DXF + SVG, -j 1"
-exec python3 - "$reps" "${PROGS:-fib loop list strings alist empty}" <<'PY'
+exec python3 - "$reps" "${PROGS:-fib loop list strings alist empty}" "$counted" "$uncounted" <<'PY'
 import hashlib, os, re, shutil, statistics, subprocess, sys, tempfile, time
 
 reps, progs = int(sys.argv[1]), sys.argv[2].split()
-bins = {"counted": "target/release/lispcad", "uncounted": "target/release/lispcad-uncounted"}
+bins = {"counted": sys.argv[3], "uncounted": sys.argv[4]}
 table = "bench/temple/variants.csv"
 
 def run(binary, out):
