@@ -154,21 +154,57 @@ fn dxf_import_into_a_new_drawing_keeps_its_inserts() {
     assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
     assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
 
-    let late = d.join("late.dxf");
+/// Into a drawing made from scratch that already has entities (a script holds their
+/// enames), the import relocates every record of the file above the drawing's handles: the
+/// drawing's own entities keep theirs and come back unchanged, the file's INSERTs, ATTRIBs,
+/// DIMENSIONs, hatch associations, reactors, group, extension dictionary and xdata handle
+/// point at the relocated records, and ezdxf's audit finds nothing.
+#[test]
+fn dxf_import_into_a_drawing_with_content_relocates_handles() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let py = |args: &[&str]| {
+        let o = Command::new(python())
+            .arg(&script)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let (t, o) = (d.join("t.dxf"), d.join("o.dxf"));
+    py(&["import-make", t.to_str().unwrap(), o.to_str().unwrap()]);
+    let own = r#"
+(regapp "MINE")
+(entmake '((0 . "LINE") (8 . "MINE") (10 1.0 2.0 0.0) (11 7.0 8.0 0.0)
+           (-3 ("MINE" (1000 . "own")))))
+(entmake '((0 . "CIRCLE") (8 . "0") (62 . 5) (10 3.0 3.0 0.0) (40 . 2.0)))
+(entmake '((0 . "LWPOLYLINE") (100 . "AcDbEntity") (8 . "MINE") (100 . "AcDbPolyline")
+           (90 . 3) (70 . 1) (10 0.0 0.0) (42 . 0.5) (10 5.0 0.0) (10 5.0 5.0)))
+(setq mine (entlast))
+"#;
+    std::fs::write(d.join("alone.lsp"), own).unwrap();
     std::fs::write(
         d.join("late.lsp"),
-        "(entmake '((0 . \"LINE\") (10 0.0 0.0 0.0) (11 1.0 1.0 0.0)))\n(dxf-import \"o.dxf\")",
+        format!(
+            "{own}(dxf-import \"o.dxf\")\n\
+             (if (not (equal (cdr (assoc 0 (entget mine))) \"LWPOLYLINE\")) (exit))"
+        ),
     )
     .unwrap();
-    let o = lispcad(d, &["run", "late.lsp", "-o", late.to_str().unwrap()]);
-    assert!(!o.status.success());
-    let msg = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        msg.contains("dxf-import") && msg.contains("cannot write"),
-        "{msg}"
-    );
-    assert!(!late.exists());
+    for (lsp, out) in [("alone.lsp", "alone.dxf"), ("late.lsp", "late.dxf")] {
+        let o = lispcad(d, &["run", lsp, "-o", out]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let paths = ["o.dxf", "alone.dxf", "late.dxf"].map(|f| d.join(f).display().to_string());
+    let r: serde_json::Value =
+        serde_json::from_slice(&py(&["late-check", &paths[0], &paths[1], &paths[2]])).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
 }
 
 /// A group of the wrong type is an error, more of a repeated code than the entity has gives

@@ -10,6 +10,9 @@ usage: dxf_edits.py make OUT.dxf VERSION
            or has (a named one, and an anonymous one under the same name);
        dxf_edits.py import-check TARGET OTHER RESULT
            prints {"diffs", "audit_errors", "audit_fixes"} for RESULT = TARGET + OTHER;
+       dxf_edits.py late-check OTHER ALONE RESULT
+           the same for RESULT = OTHER imported into a drawing made from scratch that holds
+           ALONE's entities (their handles and values must be unchanged);
        dxf_edits.py check ORIG EDITED
            reads both with ezdxf and prints a JSON object: "diffs" (every attribute or data
            difference that the edit script in dxf_edits.rs did not make; the expected changes
@@ -176,12 +179,28 @@ def import_make(target, other):
     tag.add_attdef("NAME", (0, -2), dxfattribs={"height": 0.5})
     tag.add_text("label", dxfattribs={"style": "Mono", "height": 0.3})
     tag.add_blockref("INNER", (2, 2))
+    # A pointer inside a block definition: a hatch associated with its border there.
+    tag_border = tag.add_lwpolyline([(0, 0), (1, 0), (1, 1)], close=True)
+    tag_hatch = tag.add_hatch(color=1)
+    tag_hatch.associate(tag_hatch.paths.add_polyline_path([(0, 0), (1, 0), (1, 1)], is_closed=True),
+                        [tag_border])
     b.blocks.new("SAME").add_circle((0, 0), 5)
     msp = b.modelspace()
     ins = msp.add_blockref("TAG", (40, 40))
     ins.add_attrib("NAME", "value", (40, 38))
     msp.add_blockref("SAME", (10, 10))
     msp.add_linear_dim(base=(0, 60), p1=(0, 55), p2=(20, 55)).render()
+    # Pointers besides owners: an associative hatch and its boundary (330 and reactors), a
+    # group (340s), an extension dictionary with an XRECORD (360) and a handle in xdata.
+    b.appids.add("LISPCAD")
+    border = msp.add_lwpolyline([(0, 0), (4, 0), (4, 4)], close=True, dxfattribs={"layer": "HB"})
+    hatch = msp.add_hatch(color=3, dxfattribs={"layer": "HB"})
+    path = hatch.paths.add_polyline_path([(0, 0), (4, 0), (4, 4)], is_closed=True)
+    hatch.associate(path, [border])
+    hatch.set_xdata("LISPCAD", [(1000, "border"), (1005, border.dxf.handle)])
+    text = msp.add_mtext("note", dxfattribs={"layer": "HB", "insert": (0, -5)})
+    text.new_extension_dict().add_xrecord("LISPCAD_DATA").extend([(1, "kept"), (40, 2.5)])
+    b.groups.new("PAIR").extend([border, text])
     b.saveas(other)
 
 
@@ -225,11 +244,26 @@ def import_check(target, other, result):
     tags = [(x.dxf.tag, x.dxf.text) for e in msp.query("INSERT") for x in e.attribs]
     if tags != [("NAME", "value")]:
         diffs.append(f"attribs {tags}")
+    diffs += pointer_problems(r)
+    diffs += associations(r.blocks.get("TAG"), "block TAG")
+    diffs += associations(msp, "model space")
     print(json.dumps({
         "diffs": diffs,
         "audit_errors": [str(e.message) for e in auditor.errors],
         "audit_fixes": [str(e.message) for e in auditor.fixes],
     }))
+
+
+def associations(layout, where):
+    """The hatch of `layout` names its border, which names it among its reactors."""
+    hatch, border = layout.query("HATCH").first, layout.query("LWPOLYLINE").first
+    if hatch is None or border is None:
+        return [f"{where}: hatch or border missing"]
+    out = []
+    if hatch.paths[0].source_boundary_objects != [border.dxf.handle]:
+        out.append(f"{where}: hatch boundary {hatch.paths[0].source_boundary_objects} "
+                   f"is not {border.dxf.handle}")
+    return out
 
 
 def scratch_check(other, result):
@@ -260,9 +294,93 @@ def scratch_check(other, result):
     }))
 
 
+def pointer_problems(doc):
+    """Every handle group of every entity and object names a record of `doc` (or none)."""
+    out = []
+    pointer = lambda c: 330 <= c <= 369 or 390 <= c <= 399 or c in (480, 481, 1005)
+    for e in doc.entitydb.values():
+        tags = []
+        try:
+            from ezdxf.lldxf.tagwriter import TagCollector
+            tc = TagCollector(dxfversion=doc.dxfversion)
+            e.export_dxf(tc)
+            tags = tc.tags
+        except Exception as ex:  # noqa: BLE001 - reported
+            out.append(f"{e.dxftype()} {e.dxf.handle}: {ex}")
+        for code, value in tags:
+            if pointer(code) and value not in ("0", "") and str(value) not in doc.entitydb:
+                out.append(f"{e.dxftype()} {e.dxf.handle}: {code} {value} names nothing")
+    return out
+
+
+def late_check(other, alone, result):
+    """OTHER imported into a drawing made from scratch that already had the entities of
+    ALONE (the same script without the import): RESULT must hold both."""
+    b, a, r = ezdxf.readfile(other), ezdxf.readfile(alone), ezdxf.readfile(result)
+    auditor = r.audit()
+    diffs = pointer_problems(r)
+    own = {e.dxf.handle for e in a.modelspace()}
+    for ea in a.modelspace():
+        er = r.entitydb.get(ea.dxf.handle)
+        if er is None or er.dxftype() != ea.dxftype():
+            diffs.append(f"own {ea.dxftype()} {ea.dxf.handle} missing")
+            continue
+        da = ea.dxf.all_existing_dxf_attribs()
+        dr = er.dxf.all_existing_dxf_attribs()
+        for k in sorted(set(da) | set(dr) - {"owner"}):
+            if k != "owner" and not same(da.get(k), dr.get(k)):
+                diffs.append(f"own {ea.dxftype()} {k}: {da.get(k)!r} -> {dr.get(k)!r}")
+    seed = max(int(h, 16) for h in own)
+    imported = [e for e in r.modelspace() if e.dxf.handle not in own]
+    low = [e.dxf.handle for e in imported if int(e.dxf.handle, 16) <= seed]
+    if low:
+        diffs.append(f"imported handles not above the drawing's: {low}")
+    key = lambda e: (e.dxftype(), e.dxf.layer)
+    if sorted(map(key, imported)) != sorted(map(key, b.modelspace())):
+        diffs.append(f"imported {sorted(map(key, imported))} want {sorted(map(key, b.modelspace()))}")
+    for name in ["TAG", "INNER", "SAME"]:
+        if name not in r.blocks or block_content(r, name) != block_content(b, name):
+            diffs.append(f"block {name} not kept as it was")
+    for e in r.modelspace().query("INSERT DIMENSION"):
+        if ref(e) not in r.blocks:
+            diffs.append(f"{e.dxftype()} names missing block {ref(e)}")
+    tags = [(x.dxf.tag, x.dxf.text) for e in r.modelspace().query("INSERT") for x in e.attribs]
+    if tags != [("NAME", "value")]:
+        diffs.append(f"attribs {tags}")
+    hatch = r.modelspace().query("HATCH").first
+    border = r.modelspace().query("LWPOLYLINE[layer=='HB']").first
+    if hatch is None or border is None:
+        diffs.append("hatch or border missing")
+    else:
+        if hatch.paths[0].source_boundary_objects != [border.dxf.handle]:
+            diffs.append(f"hatch boundary {hatch.paths[0].source_boundary_objects}")
+        if hatch.dxf.handle not in border.get_reactors():
+            diffs.append(f"border reactors {border.get_reactors()}")
+        x = hatch.get_xdata("LISPCAD")
+        if [tuple(t) for t in x] != [(1000, "border"), (1005, border.dxf.handle)]:
+            diffs.append(f"hatch xdata {x}")
+    text = r.modelspace().query("MTEXT").first
+    try:
+        xr = text.get_extension_dict()["LISPCAD_DATA"]
+        if [(t.code, t.value) for t in xr.tags] != [(1, "kept"), (40, 2.5)]:
+            diffs.append(f"xrecord {list(xr.tags)}")
+    except Exception as ex:  # noqa: BLE001 - reported
+        diffs.append(f"extension dictionary: {ex}")
+    group = r.groups.get("PAIR")
+    if group is None or sorted(e.dxftype() for e in group) != ["LWPOLYLINE", "MTEXT"]:
+        diffs.append("group PAIR lost its members")
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+    }))
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "import-make":
         import_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "late-check":
+        late_check(sys.argv[2], sys.argv[3], sys.argv[4])
     elif sys.argv[1] == "scratch-check":
         scratch_check(sys.argv[2], sys.argv[3])
     elif sys.argv[1] == "import-check":
