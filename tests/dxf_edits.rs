@@ -207,6 +207,48 @@ fn dxf_import_into_a_drawing_with_content_relocates_handles() {
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
 }
 
+/// An R12 file's records imported into an R2018 drawing get the subclass markers ezdxf
+/// itself writes for them (LINE to DIMENSION, POLYLINE's VERTEXes and face records,
+/// INSERT's ATTRIBs, the BLOCK and ATTDEF of its block), and read back with the R12 values
+/// (thickness and text alignment included).
+#[test]
+fn dxf_import_of_r12_into_r2018_adds_subclass_markers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let py = |args: &[&std::path::Path], mode: &str| {
+        let o = Command::new(python())
+            .arg(&script)
+            .arg(mode)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
+    py(&[&target, &d.join("unused.dxf")], "import-make");
+    py(&[&other], "r12-make");
+    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
+    let o = lispcad(
+        d,
+        &[
+            "run",
+            "import.lsp",
+            "--open",
+            "t.dxf",
+            "-o",
+            result.to_str().unwrap(),
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value =
+        serde_json::from_slice(&py(&[&target, &other, &result], "r12-check")).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
+
 /// A group of the wrong type is an error, more of a repeated code than the entity has gives
 /// nil, and neither changes the entity.
 #[test]

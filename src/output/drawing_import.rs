@@ -26,12 +26,16 @@ impl Drawing {
                 .collect();
             copied = import_definitions(self, odoc, &roots);
         }
+        // Modelled entities keep their groups too (thickness, text alignment...), but an R12
+        // drawing has no LWPOLYLINE or SPLINE: those are written from the model there.
+        let keeps_groups = !self.document().is_some_and(DxfDocument::is_r12)
+            || other.document().is_some_and(DxfDocument::is_r12);
         // Every record of a kept entity gets its handle before any is copied, so pointers
         // between them (a hatch and its boundary, reactors) follow.
         let mut fresh: Vec<Option<Vec<u64>>> = Vec::new();
         for (e, src) in other.entities_with_sources() {
             fresh.push(match src {
-                Some(s) if kept(e) && self.document().is_some() => {
+                Some(s) if (kept(e) || keeps_groups) && self.document().is_some() => {
                     Some(copied.allocate(self, &s.tags))
                 }
                 // A modelled entity is written from the model: one handle.
@@ -47,10 +51,8 @@ impl Drawing {
         for ((e, src), handles) in other.entities_with_sources().zip(fresh) {
             let mut e = e.clone();
             e.handle = 0;
-            // Modelled entities are re-written from the model in their new drawing; only the
-            // kept ones need their groups.
             let src = match (src, handles, other.document()) {
-                (Some(s), Some(handles), Some(odoc)) if kept(&e) => {
+                (Some(s), Some(handles), Some(odoc)) if kept(&e) || keeps_groups => {
                     let mut s = s.clone();
                     // Into this drawing's model space, whatever layout it came from.
                     s.block = None;

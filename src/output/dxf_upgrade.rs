@@ -133,6 +133,13 @@ fn upgrade_record(out: &mut TagList, rec: &TagList, subs: &[(&str, &[i32])], def
         out.push(*c, v);
     }
     let home = |c: i32| {
+        // A point's y and z go where its x goes.
+        let c = match c {
+            20..=28 => c - 10,
+            30..=37 => c - 20,
+            220 | 230 => 210,
+            _ => c,
+        };
         subs.iter()
             .position(|(_, codes)| codes.contains(&c))
             .unwrap_or(default)

@@ -10,6 +10,9 @@ usage: dxf_edits.py make OUT.dxf VERSION
            or has (a named one, and an anonymous one under the same name);
        dxf_edits.py import-check TARGET OTHER RESULT
            prints {"diffs", "audit_errors", "audit_fixes"} for RESULT = TARGET + OTHER;
+       dxf_edits.py r12-make OUT / r12-check TARGET OTHER RESULT
+           an R12 file of every R12 entity type, and the check of its import into an R2018
+           drawing (subclass markers as ezdxf writes them, values as read);
        dxf_edits.py late-check OTHER ALONE RESULT
            the same for RESULT = OTHER imported into a drawing made from scratch that holds
            ALONE's entities (their handles and values must be unchanged);
@@ -376,9 +379,116 @@ def late_check(other, alone, result):
     }))
 
 
+def r12_make(path):
+    """An R12 file with every R12 entity type lispcad keeps or models, in a block too."""
+    doc = ezdxf.new("R12")
+    blk = doc.blocks.new("R12TAG")
+    blk.add_circle((0, 0), 1)
+    blk.add_attdef("NAME", (0, -2), dxfattribs={"height": 0.5})
+    blk.add_text("in block", dxfattribs={"height": 0.3})
+    msp = doc.modelspace()
+    doc.layers.add("OLD", color=4)
+    ins = msp.add_blockref("R12TAG", (40, 40), dxfattribs={"layer": "OLD", "rotation": 15})
+    ins.add_attrib("NAME", "r12 value", (40, 38), dxfattribs={"layer": "OLD", "height": 0.5})
+    msp.add_text("plain", dxfattribs={"layer": "OLD", "height": 2})
+    t = msp.add_text("centred", dxfattribs={"layer": "OLD", "height": 1})
+    t.set_placement((5, 5), align=ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER)
+    msp.add_linear_dim(base=(0, 60), p1=(0, 55), p2=(20, 55)).render()
+    msp.add_polyline2d([(0, 0), (5, 0), (5, 5)], dxfattribs={"layer": "OLD"})
+    msp.add_polyline3d([(0, 0, 0), (5, 0, 1), (5, 5, 2)], dxfattribs={"layer": "OLD"})
+    pf = msp.add_polyface()
+    pf.append_face([(0, 0, 0), (1, 0, 0), (1, 1, 0)])
+    msp.add_3dface([(0, 0, 0), (1, 0, 0), (1, 1, 1), (0, 1, 1)])
+    msp.add_solid([(0, 0), (1, 0), (0, 1)])
+    msp.add_line((0, 0), (3, 4), dxfattribs={"layer": "OLD", "thickness": 2})
+    msp.add_arc((0, 0), 2, 10, 80)
+    msp.add_point((1, 2))
+    doc.saveas(path)
+
+
+def raw_markers(path):
+    """{handle: [subclass markers]} of every record of the file as written."""
+    from ezdxf.lldxf.tagger import ascii_tags_loader
+    out, handle, marks, at = {}, None, [], 0
+    with open(path, encoding="utf8", errors="replace") as f:
+        for tag in ascii_tags_loader(f):
+            at += 1
+            if tag.code == 0:
+                if handle is not None:
+                    out[handle] = marks
+                handle, marks, at = None, [], 0
+            elif tag.code == 5 and at == 1:
+                handle = tag.value
+            elif tag.code == 100:
+                marks.append(tag.value)
+    if handle is not None:
+        out[handle] = marks
+    return out
+
+
+def ezdxf_markers(e, version):
+    from ezdxf.lldxf.tagwriter import TagCollector
+    tc = TagCollector(dxfversion=version)
+    e.export_dxf(tc)
+    return [t[1] for t in tc.tags if t[0] == 100]
+
+
+def r12_check(target, other, result):
+    """OTHER (R12) imported into TARGET (R2018): the copies carry the subclass markers
+    ezdxf itself writes for them, and read back with the R12 entities' values."""
+    a, b, r = ezdxf.readfile(target), ezdxf.readfile(other), ezdxf.readfile(result)
+    auditor = r.audit()
+    diffs = pointer_problems(r)
+    raw = raw_markers(result)
+    own = {e.dxf.handle for e in a.entitydb.values()}
+    for e in r.entitydb.values():
+        h = e.dxf.handle
+        if h in own or e.dxftype() in ("LAYER", "STYLE", "LTYPE", "BLOCK_RECORD"):
+            continue
+        if e.dxftype() in ("INSERT", "POLYLINE"):
+            continue  # their markers come with their followers' below
+        if e.dxftype() == "SEQEND" and h not in raw:
+            continue  # made up by ezdxf for an INSERT without attributes
+        want = ezdxf_markers(e, r.dxfversion)
+        if raw.get(h) != want:
+            diffs.append(f"{e.dxftype()} {h}: markers {raw.get(h)} want {want}")
+    for e in r.modelspace().query("INSERT POLYLINE"):
+        want = ezdxf_markers(e, r.dxfversion)
+        got = raw.get(e.dxf.handle, [])
+        if got != want[:len(got)] or not got:
+            diffs.append(f"{e.dxftype()} {e.dxf.handle}: markers {got} want {want}")
+    key = lambda e: (e.dxftype(), e.dxf.layer)
+    imported = [e for e in r.modelspace() if e.dxf.handle not in own]
+    if sorted(map(key, imported)) != sorted(map(key, b.modelspace())):
+        diffs.append(f"imported {sorted(map(key, imported))} want {sorted(map(key, b.modelspace()))}")
+    # Values: each R12 entity has a copy with the same attributes (bar handle and owner).
+    skip = {"handle", "owner", "geometry"}  # a dimension's block was renamed (*D1 taken)
+    for eb in b.modelspace():
+        db = {k: v for k, v in eb.dxf.all_existing_dxf_attribs().items() if k not in skip}
+        match = [e for e in imported if key(e) == key(eb) and all(
+            same(v, e.dxf.get(k)) for k, v in db.items())]
+        if not match:
+            diffs.append(f"no copy of {eb.dxftype()} on {eb.dxf.layer} with {db}")
+    tags = [(x.dxf.tag, x.dxf.text) for e in r.modelspace().query("INSERT") for x in e.attribs
+            if e.dxf.handle not in own]
+    if tags != [("NAME", "r12 value")]:
+        diffs.append(f"attribs {tags}")
+    if "R12TAG" not in r.blocks or block_content(r, "R12TAG") != block_content(b, "R12TAG"):
+        diffs.append("block R12TAG not imported as it was")
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+    }))
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "import-make":
         import_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "r12-make":
+        r12_make(sys.argv[2])
+    elif sys.argv[1] == "r12-check":
+        r12_check(sys.argv[2], sys.argv[3], sys.argv[4])
     elif sys.argv[1] == "late-check":
         late_check(sys.argv[2], sys.argv[3], sys.argv[4])
     elif sys.argv[1] == "scratch-check":
