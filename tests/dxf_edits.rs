@@ -26,6 +26,14 @@ const EDIT: &str = r#"
     (setq e (entget x)
           old (cadr (vl-remove-if-not '(lambda (g) (= (car g) 10)) e)))
     (entmod (subst (cons 10 (mapcar '+ (cdr old) '(0 1 0))) old e))))
+(defun ctrl (e) (vl-remove-if-not '(lambda (g) (= (car g) 10)) e))
+(if (setq x (ent "SQ"))
+  (progn
+    (setq e (entget x) old (cadr (ctrl e)))
+    (entmod (subst (cons 10 (mapcar '+ (cdr old) '(0 0 1))) old e))))
+(if (setq x (ent "SR"))
+  (entmod (mapcar '(lambda (g) (if (= (car g) 10) (list 10 (cadr g) (caddr g) (cadr g)) g))
+                  (entget x))))
 (if (setq x (ent "IN"))
   (progn
     (put (subst '(10 41.0 42.0 0.0) (assoc 10 (entget x)) (entget x)) 41 3.0)

@@ -30,7 +30,7 @@ from ezdxf.math import Vec3
 
 from dxf_compare import extra, same, same_deep, xdata
 
-MODERN_ONLY = {"LW", "SP", "MT", "HA"}
+MODERN_ONLY = {"LW", "SP", "SQ", "SR", "MT", "HA"}
 
 
 def make(path, version):
@@ -39,7 +39,7 @@ def make(path, version):
     msp = doc.modelspace()
     doc.appids.add("LISPCAD")
     doc.linetypes.add("DASHED", [0.75, 0.5, -0.25])
-    for name in ["LN", "TX", "TJ", "CI", "LW", "SP", "IN", "MT", "HA", "ZZ"]:
+    for name in ["LN", "TX", "TJ", "CI", "LW", "SP", "SQ", "SR", "IN", "MT", "HA", "ZZ"]:
         if modern or name not in MODERN_ONLY:
             doc.layers.add(name)
     style = {"linetype": "DASHED", "ltscale": 0.5, "color": 3}
@@ -72,6 +72,14 @@ def make(path, version):
         sp.dxf.start_tangent = (1, 1, 0)
         sp.dxf.end_tangent = (1, -1, 0)
         sp.dxf.knot_tolerance = 1e-8
+        # Planar as AutoCAD writes it (bit 8 and the plane's normal), to be bent out of plane;
+        # and a twisted one, to be flattened onto the plane x = z.
+        sq = msp.add_open_spline([(0, 0, 2), (3, 5, 2), (6, -2, 2), (9, 4, 2)],
+                                 dxfattribs={"layer": "SQ"})
+        sq.dxf.flags = 8
+        sq.dxf.extrusion = (0, 0, 1)
+        msp.add_open_spline([(0, 0, 0), (3, 5, 1), (6, -2, -3), (9, 4, 2)],
+                            dxfattribs={"layer": "SR"})
         msp.add_mtext("multi\\Pline", dxfattribs={
             "layer": "MT", "insert": (0, -10), "char_height": 2, "width": 30,
             "attachment_point": 5, **style})
@@ -106,10 +114,21 @@ def expected(ea):
         pts = [list(p) for p in ea.get_points()]
         pts[0][0] += 0.5
         return {}, pts
-    if layer == "SP":
+    if layer in ("SP", "SQ", "SR"):
         cps = [list(p) for p in ea.control_points]
-        cps[1][1] += 1.0
-        return {}, [cps, list(ea.knots), list(ea.weights), [list(p) for p in ea.fit_points]]
+        data = lambda: [cps, list(ea.knots), list(ea.weights), [list(p) for p in ea.fit_points]]
+        if layer == "SP":
+            cps[1][1] += 1.0
+            # Still planar (z = 0): the planar bit is set, as AutoCAD does on any edit.
+            return {"flags": ea.dxf.flags | 8}, data()
+        if layer == "SQ":
+            cps[1][2] += 1.0
+            # Out of its plane: no planar bit, no normal.
+            return {"flags": ea.dxf.flags & ~8, "extrusion": None}, data()
+        for p in cps:
+            p[2] = p[0]
+        # The normal of the plane x = z (either sense) is checked in `check`.
+        return {"flags": ea.dxf.flags | 8, "extrusion": "plane"}, data()
     if layer == "IN":
         return {"insert": Vec3(41, 42, 0), "xscale": 3.0}, None
     if layer == "MT":
@@ -141,6 +160,11 @@ def check(orig, edited):
                 db.pop("owner", None)
             for k in sorted(set(da) | set(db) | set(changes)):
                 want = changes.get(k, da.get(k))
+                if isinstance(want, str) and want == "plane":
+                    n = Vec3(db.get(k) or (0, 0, 0))
+                    if abs(abs(n.dot(Vec3(1, 0, -1).normalize())) - 1) > 1e-9:
+                        diffs.append(f"{layer} {k}: {n} is not the normal of x = z")
+                    continue
                 if not same(want, db.get(k)):
                     diffs.append(f"{layer} {ea.dxftype()} {k}: want {want!r} got {db.get(k)!r}")
             want = extra(ea) if data is None else data
