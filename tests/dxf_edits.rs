@@ -257,6 +257,63 @@ fn dxf_import_of_r12_into_r2018_adds_subclass_markers() {
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
 }
 
+/// A POLYLINE or INSERT whose only change is its layer takes its VERTEX and SEQEND records
+/// along (and a 3D polyline moved too), as AutoCAD and ezdxf keep them; the ATTRIBs keep
+/// their own layer, as AutoCAD's CHPROP leaves them.
+#[test]
+fn a_new_layer_takes_the_followers_along() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let lsp = r#"
+(setq v (entnext (entnext (ssname (ssget "X" '((8 . "P3"))) 0))) e (entget v))
+(entmod (subst '(10 7.0 0.0 1.0) (assoc 10 e) e))
+(setq ss (ssget "X") i 0)
+(repeat (sslength ss)
+  (setq e (entget (ssname ss i)) i (1+ i))
+  (entmod (subst '(8 . "MOVED") (assoc 8 e) e)))
+"#;
+    std::fs::write(d.join("move.lsp"), lsp).unwrap();
+    for version in ["R12", "R2000"] {
+        let (orig, out) = (
+            d.join(format!("{version}.dxf")),
+            d.join(format!("{version}-m.dxf")),
+        );
+        let o = Command::new(python())
+            .arg(&script)
+            .args(["followers-make", orig.to_str().unwrap(), version])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = lispcad(
+            d,
+            &[
+                "run",
+                "move.lsp",
+                "--open",
+                orig.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ],
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = Command::new(python())
+            .arg(&script)
+            .args([
+                "followers-check",
+                orig.to_str().unwrap(),
+                out.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert!(strs(&r["diffs"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_errors"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_fixes"]).is_empty(), "{version}: {r:#}");
+    }
+}
+
 /// A group of the wrong type is an error, more of a repeated code than the entity has gives
 /// nil, and neither changes the entity.
 #[test]

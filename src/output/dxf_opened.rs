@@ -179,7 +179,7 @@ fn write_one(
             }
             let mut t = s.tags.clone();
             if e.layer != s.original.layer {
-                t = t.with(8, &e.layer, 100);
+                t = followers_on_layer(&t.with(8, &e.layer, 100), &e.layer);
             }
             if e.color != s.original.color {
                 t = match e.color {
@@ -220,7 +220,7 @@ fn write_one(
     let mut t = TagList::from_dxf_text(&w.out);
     if let Some(s) = src {
         t = match super::dxf_merge::merge_changed(&s.tags, &t, e, &s.original) {
-            Some(m) => m,
+            Some(m) => followers_on_layer(&m, &e.layer),
             None => keep_from_original(&t, &s.tags),
         };
     }
@@ -450,6 +450,26 @@ fn renumber_followers(t: &TagList, parent: u64, alloc: &mut impl FnMut() -> u64)
             5 if i == record_start + 1 => out.push(5, &format!("{:X}", alloc())),
             330 if !in_app => out.push(330, &format!("{parent:X}")),
             _ => out.push(c, v),
+        }
+    }
+    out
+}
+
+/// A POLYLINE's VERTEX and SEQEND records, and an INSERT's SEQEND, on their entity's layer
+/// (AutoCAD keeps them there, and ezdxf's audit moves them back); an INSERT's ATTRIBs keep
+/// their own, as AutoCAD's CHPROP leaves them.
+fn followers_on_layer(t: &TagList, layer: &str) -> TagList {
+    let first = t.first_record_end();
+    let mut out = TagList::new();
+    let mut follows = false;
+    for (i, (c, v)) in t.iter().enumerate() {
+        if c == 0 {
+            follows = i >= first && matches!(v, "VERTEX" | "SEQEND");
+        }
+        if follows && c == 8 {
+            out.push(8, layer);
+        } else {
+            out.push(c, v);
         }
     }
     out

@@ -13,6 +13,9 @@ usage: dxf_edits.py make OUT.dxf VERSION
        dxf_edits.py r12-make OUT / r12-check TARGET OTHER RESULT
            an R12 file of every R12 entity type, and the check of its import into an R2018
            drawing (subclass markers as ezdxf writes them, values as read);
+       dxf_edits.py followers-make OUT VERSION / followers-check ORIG RESULT
+           polylines and an INSERT with an ATTRIB, and the check that after a change of
+           layer their VERTEX and SEQEND records are on the new layer and the ATTRIB is not;
        dxf_edits.py late-check OTHER ALONE RESULT
            the same for RESULT = OTHER imported into a drawing made from scratch that holds
            ALONE's entities (their handles and values must be unchanged);
@@ -506,9 +509,56 @@ def r12_check(target, other, result):
     }))
 
 
+def followers_make(path, version):
+    """A 2D and a 3D POLYLINE and an INSERT with an ATTRIB on its own layer."""
+    doc = ezdxf.new(version)
+    for name in ["PL", "P3", "IA", "IA_ATT", "MOVED"]:
+        doc.layers.add(name)
+    doc.blocks.new("B").add_attdef("T", (0, 0))
+    msp = doc.modelspace()
+    msp.add_polyline2d([(0, 0), (5, 0), (5, 5)], dxfattribs={"layer": "PL"})
+    msp.add_polyline3d([(0, 0, 0), (5, 0, 1), (5, 5, 2)], dxfattribs={"layer": "P3"})
+    ins = msp.add_blockref("B", (1, 1), dxfattribs={"layer": "IA"})
+    ins.add_attrib("T", "v", (1, 1), dxfattribs={"layer": "IA_ATT"})
+    doc.saveas(path)
+
+
+def followers_check(orig, result):
+    """Every entity moved to MOVED; VERTEX and SEQEND records followed, ATTRIBs did not
+    (read as written, before ezdxf's audit would move them)."""
+    a, r = ezdxf.readfile(orig), ezdxf.readfile(result)
+    diffs = []
+    for e in r.modelspace():
+        if e.dxf.layer != "MOVED":
+            diffs.append(f"{e.dxftype()} on {e.dxf.layer}")
+        subs = list(e.vertices) if e.dxftype() == "POLYLINE" else []
+        subs += [e.seqend] if e.seqend else []
+        for v in subs:
+            if v.dxf.layer != "MOVED":
+                diffs.append(f"{e.dxftype()}'s {v.dxftype()} {v.dxf.handle} on {v.dxf.layer}")
+        if e.dxftype() == "INSERT":
+            layers = [x.dxf.layer for x in e.attribs]
+            if layers != ["IA_ATT"]:
+                diffs.append(f"ATTRIB layers {layers}")
+    p3 = r.modelspace().query("POLYLINE[layer=='MOVED']")
+    pts = sorted(tuple(v.dxf.location) for p in p3 for v in p.vertices)
+    if (7.0, 0.0, 1.0) not in pts:
+        diffs.append(f"3D polyline not moved: {pts}")
+    auditor = r.audit()
+    print(json.dumps({
+        "diffs": diffs,
+        "audit_errors": [str(e.message) for e in auditor.errors],
+        "audit_fixes": [str(e.message) for e in auditor.fixes],
+    }))
+
+
 if __name__ == "__main__":
     if sys.argv[1] == "import-make":
         import_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "followers-make":
+        followers_make(sys.argv[2], sys.argv[3])
+    elif sys.argv[1] == "followers-check":
+        followers_check(sys.argv[2], sys.argv[3])
     elif sys.argv[1] == "r12-make":
         r12_make(sys.argv[2])
     elif sys.argv[1] == "r12-check":
