@@ -45,6 +45,7 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
     }
     let layers = layer_records(d, doc, &mut alloc);
     let styles = new_style_records(d, doc, &mut alloc);
+    let linetypes = new_linetype_records(d, doc, &mut alloc);
     let handseed = format!("{:X}", alloc());
 
     let mut out = String::with_capacity(ents.len() + (1 << 16));
@@ -78,10 +79,14 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                         for r in &layers {
                             r.write_to(&mut out);
                         }
-                    } else if t.name.eq_ignore_ascii_case("STYLE") && !styles.is_empty() {
-                        let n = t.records.len() + styles.len();
+                    } else if let Some(added) = [("STYLE", &styles), ("LTYPE", &linetypes)]
+                        .into_iter()
+                        .find(|(n, a)| t.name.eq_ignore_ascii_case(n) && !a.is_empty())
+                        .map(|(_, a)| a)
+                    {
+                        let n = t.records.len() + added.len();
                         t.head.with(70, &n.to_string(), 2).write_to(&mut out);
-                        for r in t.records.iter().chain(&styles) {
+                        for r in t.records.iter().chain(added) {
                             r.write_to(&mut out);
                         }
                     } else {
@@ -396,6 +401,44 @@ fn new_style_records(
             {
                 names.push(style);
             }
+        }
+    }
+    names
+        .into_iter()
+        .map(|name| {
+            let mut r = without_app_data(template).with(2, name, 100);
+            if r.get(5).is_some() {
+                r = r.with(5, &format!("{:X}", alloc()), 0);
+            }
+            r
+        })
+        .collect()
+}
+
+/// LTYPE records for the line types the drawing's layers name and the file lacks (a layer
+/// made by a script): solid ones, copies of the file's "Continuous" record under the new
+/// name, as the writer of new drawings defines them.
+fn new_linetype_records(
+    d: &Drawing,
+    doc: &DxfDocument,
+    alloc: &mut impl FnMut() -> u64,
+) -> Vec<TagList> {
+    let old = doc.table_records("LTYPE");
+    let Some(template) = old.iter().find(|r| {
+        r.get(2)
+            .is_some_and(|n| n.eq_ignore_ascii_case("Continuous"))
+    }) else {
+        return Vec::new();
+    };
+    let mut names: Vec<&str> = Vec::new();
+    for l in d.layers() {
+        let known = |n: &str| n.eq_ignore_ascii_case(&l.linetype);
+        let builtin = ["ByLayer", "ByBlock", "Continuous"].into_iter().any(known);
+        if !builtin
+            && !old.iter().any(|r| r.get(2).is_some_and(known))
+            && !names.iter().any(|n| known(n))
+        {
+            names.push(&l.linetype);
         }
     }
     names

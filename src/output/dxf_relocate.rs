@@ -35,6 +35,10 @@ fn is_own_handle(code: i32, i: usize, record_start: usize) -> bool {
     (code == 5 || code == 105) && i <= record_start + 2
 }
 
+/// An application group being gathered: its opening name ("{ACAD_REACTORS"), its groups, and
+/// whether it is kept.
+type AppGroup = (String, Vec<(i32, String)>, bool);
+
 /// `t` with every own handle and pointer passed through `resolve` (old handle → new). Own
 /// handles that do not resolve are kept; pointers that do not resolve are cleared (see the
 /// module documentation). SORTENTSTABLE's sort handles (group 5 in its body) follow too.
@@ -48,7 +52,7 @@ pub fn relocate(t: &TagList, resolve: &dyn Fn(u64) -> Option<u64>) -> TagList {
     };
     let mut out = TagList::new();
     // An application group ({ACAD_REACTORS ... }) is gathered first: it may be dropped whole.
-    let mut app: Option<(String, Vec<(i32, String)>, bool)> = None;
+    let mut app: Option<AppGroup> = None;
     let mut start = 0;
     let mut sortents = false;
     for (i, (c, v)) in t.iter().enumerate() {

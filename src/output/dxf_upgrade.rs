@@ -11,9 +11,12 @@ const DIM_BODY: [i32; 19] = [
     280, 2, 3, 10, 11, 12, 70, 71, 72, 41, 42, 73, 74, 75, 1, 52, 53, 51, 210,
 ];
 
+/// A subclass marker and the group codes it holds.
+type Subclass = (&'static str, &'static [i32]);
+
 /// The subclasses after AcDbEntity of an R12 record: (marker, the codes it holds); a code no
 /// subclass names goes to the one at the returned index.
-fn subclasses(t: &TagList) -> Option<(Vec<(&'static str, &'static [i32])>, usize)> {
+fn subclasses(t: &TagList) -> Option<(Vec<Subclass>, usize)> {
     let flags = || {
         t.get(70)
             .and_then(|v| v.trim().parse::<i64>().ok())
@@ -65,7 +68,7 @@ fn subclasses(t: &TagList) -> Option<(Vec<(&'static str, &'static [i32])>, usize
             Some((vec![("AcDbVertex", &[][..]), (kind, &[][..])], 1))
         }
         "DIMENSION" => {
-            let sub: &[(&str, &[i32])] = match flags() & 0x0F {
+            let sub: &[Subclass] = match flags() & 0x0F {
                 0 => &[
                     ("AcDbAlignedDimension", &[]),
                     ("AcDbRotatedDimension", &[-1]),
@@ -108,7 +111,7 @@ pub fn with_subclass_markers(t: &TagList) -> TagList {
     out
 }
 
-fn upgrade_record(out: &mut TagList, rec: &TagList, subs: &[(&str, &[i32])], default: usize) {
+fn upgrade_record(out: &mut TagList, rec: &TagList, subs: &[Subclass], default: usize) {
     let mut head = 1;
     let mut in_app = false;
     // The type, handle, application data and owner stay in front.

@@ -396,6 +396,9 @@ def late_check(other, alone, result):
             diffs.append(f"xrecord {list(xr.tags)}")
     except Exception as ex:  # noqa: BLE001 - reported
         diffs.append(f"extension dictionary: {ex}")
+    for layer in r.layers:
+        if layer.dxf.linetype not in r.linetypes:
+            diffs.append(f"layer {layer.dxf.name}'s line type {layer.dxf.linetype} is missing")
     group = r.groups.get("PAIR")
     if group is None or sorted(e.dxftype() for e in group) != ["LWPOLYLINE", "MTEXT"]:
         diffs.append("group PAIR lost its members")
