@@ -179,7 +179,8 @@ impl Copied {
                 rec.push(c, v);
             }
             let owner = if k == 0 { model } else { handles[0] };
-            let rec = with_handle_and_owner(&rec, handles[k], (!r12).then_some(owner));
+            let rec =
+                with_handle_and_owner(&in_model_space(&rec), handles[k], (!r12).then_some(owner));
             let rec = match (r12, odoc.is_r12()) {
                 (true, false) => strip_r2000_groups(&rec),
                 (false, true) => super::dxf_upgrade::with_subclass_markers(&rec),
@@ -191,6 +192,21 @@ impl Copied {
         }
         out
     }
+}
+
+/// A record of another layout moved to model space: no paper-space flag (67), layout name
+/// (410) "Model".
+fn in_model_space(rec: &TagList) -> TagList {
+    let end = rec.iter().position(|(c, _)| c >= 1000).unwrap_or(rec.len());
+    let mut out = TagList::new();
+    for (i, (c, v)) in rec.iter().enumerate() {
+        match c {
+            67 if i < end => {}
+            410 if i < end => out.push(410, "Model"),
+            _ => out.push(c, v),
+        }
+    }
+    out
 }
 
 /// The own handle of the record at `r` in `t`.

@@ -231,6 +231,10 @@ def import_make(target, other):
     text = msp.add_mtext("note", dxfattribs={"layer": "HB", "insert": (0, -5)})
     text.new_extension_dict().add_xrecord("LISPCAD_DATA").extend([(1, "kept"), (40, 2.5)])
     b.groups.new("PAIR").extend([border, text])
+    # Paper-space entities: an import into an opened drawing puts them in model space.
+    paper = b.layouts.get("Layout1")
+    paper.add_circle((1, 1), 1, dxfattribs={"layer": "PS"})
+    paper.add_mtext("paper", dxfattribs={"layer": "PS"})
     b.saveas(other)
 
 
@@ -275,6 +279,13 @@ def import_check(target, other, result):
     if tags != [("NAME", "value")]:
         diffs.append(f"attribs {tags}")
     diffs += pointer_problems(r)
+    ps = [(e.dxftype(), e.dxf.paperspace) for e in msp if e.dxf.layer == "PS"]
+    if sorted(ps) != [("CIRCLE", 0), ("MTEXT", 0)]:
+        diffs.append(f"paper-space entities in model space: {ps}")
+    # ezdxf takes the layout from the owner: the paper-space flag is checked as written.
+    flagged = [r for r in raw_records(result) if (8, "PS") in r and (67, "1") in r]
+    if flagged:
+        diffs.append(f"{len(flagged)} entities of model space flagged as paper space")
     diffs += associations(r.blocks.get("TAG"), "block TAG")
     diffs += associations(msp, "model space")
     print(json.dumps({
@@ -360,6 +371,8 @@ def late_check(other, alone, result):
         for k in sorted(set(da) | set(dr) - {"owner"}):
             if k != "owner" and not same(da.get(k), dr.get(k)):
                 diffs.append(f"own {ea.dxftype()} {k}: {da.get(k)!r} -> {dr.get(k)!r}")
+        if xdata(ea) != xdata(er) or not same_deep(extra(ea), extra(er)):
+            diffs.append(f"own {ea.dxftype()} data: {xdata(ea)} {extra(ea)} -> {xdata(er)} {extra(er)}")
     seed = max(int(h, 16) for h in own)
     imported = [e for e in r.modelspace() if e.dxf.handle not in own]
     low = [e.dxf.handle for e in imported if int(e.dxf.handle, 16) <= seed]
@@ -434,6 +447,19 @@ def r12_make(path):
     msp.add_arc((0, 0), 2, 10, 80)
     msp.add_point((1, 2))
     doc.saveas(path)
+
+
+def raw_records(path):
+    """The file's records as written: lists of (code, value text)."""
+    from ezdxf.lldxf.tagger import ascii_tags_loader
+    out = []
+    with open(path, encoding="utf8", errors="replace") as f:
+        for tag in ascii_tags_loader(f):
+            if tag.code == 0:
+                out.append([])
+            if out:
+                out[-1].append((tag.code, tag.value.strip()))
+    return out
 
 
 def raw_markers(path):
