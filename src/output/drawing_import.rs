@@ -47,6 +47,10 @@ impl Drawing {
                 _ => None,
             });
         }
+        let objects = match other.document() {
+            Some(odoc) if self.document().is_some() => copied.owned_objects(self, odoc),
+            _ => Vec::new(),
+        };
         let mut added = Vec::new();
         for ((e, src), handles) in other.entities_with_sources().zip(fresh) {
             let mut e = e.clone();
@@ -68,6 +72,9 @@ impl Drawing {
                 _ => None,
             };
             added.push(self.push_loaded(e, src));
+        }
+        if let (Some(odoc), false) = (other.document(), objects.is_empty()) {
+            copied.copy_objects(self, odoc, &objects);
         }
         added
     }
@@ -122,6 +129,53 @@ impl Copied {
                 h
             })
             .collect()
+    }
+
+    /// The objects of `odoc` that what was copied owns, directly or through one another (an
+    /// entity's extension dictionary and its XRECORDs), with their handles allocated.
+    fn owned_objects<'a>(
+        &mut self,
+        target: &mut Drawing,
+        odoc: &'a DxfDocument,
+    ) -> Vec<&'a TagList> {
+        let objects = odoc.section_records("OBJECTS");
+        let mut out: Vec<&TagList> = Vec::new();
+        loop {
+            let before = out.len();
+            for o in objects {
+                let (Some(h), Some(owner)) = (o.handle(), super::objects::owner_of(o)) else {
+                    continue;
+                };
+                if !self.map.contains_key(&h) && self.map.contains_key(&owner) {
+                    let new = target.alloc_handle();
+                    self.map.insert(h, new);
+                    out.push(o);
+                }
+            }
+            if out.len() == before {
+                return out;
+            }
+        }
+    }
+
+    /// Appends the relocated `objects` to the target's OBJECTS section.
+    fn copy_objects(&self, target: &mut Drawing, odoc: &DxfDocument, objects: &[&TagList]) {
+        let Some(tdoc) = target.document() else {
+            return;
+        };
+        let copies: Vec<TagList> = objects
+            .iter()
+            .map(|o| super::dxf_relocate::relocate(o, &|h| self.resolve(tdoc, odoc, h)))
+            .collect();
+        let section = target.document_mut().and_then(|d| {
+            d.sections.iter_mut().find_map(|s| match s {
+                Section::Other { name, records } if same(name, "OBJECTS") => Some(records),
+                _ => None,
+            })
+        });
+        if let Some(records) = section {
+            records.extend(copies);
+        }
     }
 
     /// The target's handle for a source handle: the copy's, else the record of the same

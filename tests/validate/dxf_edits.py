@@ -288,11 +288,24 @@ def import_check(target, other, result):
         diffs.append(f"{len(flagged)} entities of model space flagged as paper space")
     diffs += associations(r.blocks.get("TAG"), "block TAG")
     diffs += associations(msp, "model space")
+    diffs += extension_dict(msp)
     print(json.dumps({
         "diffs": diffs,
         "audit_errors": [str(e.message) for e in auditor.errors],
         "audit_fixes": [str(e.message) for e in auditor.fixes],
     }))
+
+
+def extension_dict(layout):
+    """The MTEXT of `layout` on HB kept its extension dictionary and XRECORD."""
+    text = layout.query("MTEXT[layer=='HB']").first
+    try:
+        xr = text.get_extension_dict()["LISPCAD_DATA"]
+        if [(t.code, t.value) for t in xr.tags] != [(1, "kept"), (40, 2.5)]:
+            return [f"xrecord {list(xr.tags)}"]
+    except Exception as ex:  # noqa: BLE001 - reported
+        return [f"extension dictionary: {ex!r}"]
+    return []
 
 
 def associations(layout, where):
