@@ -2,8 +2,12 @@
 //! definitions its INSERTs and DIMENSIONs name (nested ones too) and the text styles and line
 //! types those use, so the result never refers to something it lacks. A named block the
 //! drawing already has is used as it is (AutoCAD's INSERT of a drawing does the same); an
-//! anonymous one (`*U2`, `*D1`...) that clashes is renamed. Copied records get fresh handles
-//! and owners; their application data (reactors, extension dictionaries) stays behind.
+//! anonymous one (`*U2`, `*D1`...) that clashes is renamed. Every copied record gets a fresh
+//! handle and its owner here, and its pointers follow the copies (`dxf_relocate`): the
+//! entities keep their groups, reactors, extended data (their applications registered) and
+//! the objects they own; the records of block definitions and tables leave their
+//! application and extended data behind. An R12 file's records get the subclass markers of
+//! a newer drawing (`dxf_upgrade`), a newer file's lose them in an R12 one.
 
 use std::collections::HashMap;
 
@@ -76,7 +80,29 @@ impl Drawing {
         if let (Some(odoc), false) = (other.document(), objects.is_empty()) {
             copied.copy_objects(self, odoc, &objects);
         }
+        self.register_xdata_apps(&added);
         added
+    }
+
+    /// Registers the applications the extended data of `handles` names (AutoCAD refuses
+    /// extended data of an application its APPID table lacks).
+    fn register_xdata_apps(&mut self, handles: &[u64]) {
+        if self.document().is_none() {
+            return;
+        }
+        let mut apps: Vec<String> = Vec::new();
+        for h in handles {
+            if let Some(s) = self.source(*h) {
+                for (c, v) in s.tags.iter() {
+                    if c == 1001 && !apps.iter().any(|a| same(a, v)) {
+                        apps.push(v.to_string());
+                    }
+                }
+            }
+        }
+        for a in apps {
+            self.add_appid(&a);
+        }
     }
 
     fn import_layers(&mut self, other: &Drawing) {

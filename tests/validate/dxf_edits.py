@@ -289,6 +289,8 @@ def import_check(target, other, result):
     diffs += associations(r.blocks.get("TAG"), "block TAG")
     diffs += associations(msp, "model space")
     diffs += extension_dict(msp)
+    if "LISPCAD" not in r.appids:
+        diffs.append("the imported xdata's application LISPCAD is not registered")
     print(json.dumps({
         "diffs": diffs,
         "audit_errors": [str(e.message) for e in auditor.errors],
