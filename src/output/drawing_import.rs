@@ -619,35 +619,7 @@ fn copy_block(target: &mut Drawing, odoc: &DxfDocument, plan: BlockPlan, copied:
     let r12 = tdoc.is_r12();
     let resolve = |h: u64| copied.resolve(tdoc, odoc, h);
     let relocate = |t: &TagList| super::dxf_relocate::relocate(t, &resolve);
-    let br_record = br.map(|h| {
-        let src = odoc
-            .table_records("BLOCK_RECORD")
-            .iter()
-            .find(|r| r.get(2).is_some_and(|n| same(n, &old_name)));
-        let mut r = match src {
-            Some(s) => relocate(&copied_record(s, None)).with(5, &format!("{h:X}"), 0),
-            None => {
-                let mut r = TagList::new();
-                for (c, v) in [
-                    (0, "BLOCK_RECORD"),
-                    (5, ""),
-                    (330, "0"),
-                    (100, "AcDbSymbolTableRecord"),
-                    (100, "AcDbBlockTableRecord"),
-                    (2, name),
-                ] {
-                    r.push(c, v);
-                }
-                r.with(5, &format!("{h:X}"), 0)
-            }
-        };
-        r = r.with(2, name, 100);
-        if r.get(340).is_some() {
-            // The layout pointer: a block that is not a layout has none.
-            r = r.with(340, "0", 2);
-        }
-        r
-    });
+    let br_record = br.map(|h| block_record(odoc, &old_name, name, h, &relocate));
     let mut out = Vec::with_capacity(def.len());
     let mut parent = br.unwrap_or(0);
     for (r, h) in def.iter().zip(&handles) {
@@ -710,6 +682,44 @@ fn copy_block(target: &mut Drawing, odoc: &DxfDocument, plan: BlockPlan, copied:
             );
         }
     }
+}
+
+/// The BLOCK_RECORD of a copied block: the source's (relocated) or a new one, named `name`,
+/// with handle `h` and no layout.
+fn block_record(
+    odoc: &DxfDocument,
+    old_name: &str,
+    name: &str,
+    h: u64,
+    relocate: &dyn Fn(&TagList) -> TagList,
+) -> TagList {
+    let src = odoc
+        .table_records("BLOCK_RECORD")
+        .iter()
+        .find(|r| r.get(2).is_some_and(|n| same(n, old_name)));
+    let mut r = match src {
+        Some(s) => relocate(&copied_record(s, None)).with(5, &format!("{h:X}"), 0),
+        None => {
+            let mut r = TagList::new();
+            for (c, v) in [
+                (0, "BLOCK_RECORD"),
+                (5, ""),
+                (330, "0"),
+                (100, "AcDbSymbolTableRecord"),
+                (100, "AcDbBlockTableRecord"),
+                (2, name),
+            ] {
+                r.push(c, v);
+            }
+            r.with(5, &format!("{h:X}"), 0)
+        }
+    };
+    r = r.with(2, name, 100);
+    if r.get(340).is_some() {
+        // The layout pointer: a block that is not a layout has none.
+        r = r.with(340, "0", 2);
+    }
+    r
 }
 
 /// R12 has no subclass markers or owners.
