@@ -26,6 +26,14 @@ const EDIT: &str = r#"
     (setq e (entget x)
           old (cadr (vl-remove-if-not '(lambda (g) (= (car g) 10)) e)))
     (entmod (subst (cons 10 (mapcar '+ (cdr old) '(0 1 0))) old e))))
+(defun ctrl (e) (vl-remove-if-not '(lambda (g) (= (car g) 10)) e))
+(if (setq x (ent "SQ"))
+  (progn
+    (setq e (entget x) old (cadr (ctrl e)))
+    (entmod (subst (cons 10 (mapcar '+ (cdr old) '(0 0 1))) old e))))
+(if (setq x (ent "SR"))
+  (entmod (mapcar '(lambda (g) (if (= (car g) 10) (list 10 (cadr g) (caddr g) (cadr g)) g))
+                  (entget x))))
 (if (setq x (ent "IN"))
   (progn
     (put (subst '(10 41.0 42.0 0.0) (assoc 10 (entget x)) (entget x)) 41 3.0)
@@ -154,21 +162,159 @@ fn dxf_import_into_a_new_drawing_keeps_its_inserts() {
     assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
     assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
     assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
 
-    let late = d.join("late.dxf");
+/// Into a drawing made from scratch that already has entities (a script holds their
+/// enames), the import relocates every record of the file above the drawing's handles: the
+/// drawing's own entities keep theirs and come back unchanged, the file's INSERTs, ATTRIBs,
+/// DIMENSIONs, hatch associations, reactors, group, extension dictionary and xdata handle
+/// point at the relocated records, and ezdxf's audit finds nothing.
+#[test]
+fn dxf_import_into_a_drawing_with_content_relocates_handles() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let py = |args: &[&str]| {
+        let o = Command::new(python())
+            .arg(&script)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let (t, o) = (d.join("t.dxf"), d.join("o.dxf"));
+    py(&["import-make", t.to_str().unwrap(), o.to_str().unwrap()]);
+    let own = r#"
+(regapp "MINE")
+(entmake '((0 . "LINE") (8 . "MINE") (10 1.0 2.0 0.0) (11 7.0 8.0 0.0)
+           (-3 ("MINE" (1000 . "own")))))
+(entmake '((0 . "CIRCLE") (8 . "0") (62 . 5) (10 3.0 3.0 0.0) (40 . 2.0)))
+(entmake '((0 . "LAYER") (100 . "AcDbSymbolTableRecord") (100 . "AcDbLayerTableRecord")
+           (2 . "DASHY") (70 . 0) (62 . 2) (6 . "MYDASH")))
+(entmake '((0 . "LINE") (8 . "DASHY") (10 0.0 0.0 0.0) (11 1.0 0.0 0.0)))
+(entmake '((0 . "LWPOLYLINE") (100 . "AcDbEntity") (8 . "MINE") (100 . "AcDbPolyline")
+           (90 . 3) (70 . 1) (10 0.0 0.0) (42 . 0.5) (10 5.0 0.0) (10 5.0 5.0)))
+(setq mine (entlast))
+"#;
+    std::fs::write(d.join("alone.lsp"), own).unwrap();
     std::fs::write(
         d.join("late.lsp"),
-        "(entmake '((0 . \"LINE\") (10 0.0 0.0 0.0) (11 1.0 1.0 0.0)))\n(dxf-import \"o.dxf\")",
+        format!(
+            "{own}(dxf-import \"o.dxf\")\n\
+             (if (not (equal (cdr (assoc 0 (entget mine))) \"LWPOLYLINE\")) (exit))"
+        ),
     )
     .unwrap();
-    let o = lispcad(d, &["run", "late.lsp", "-o", late.to_str().unwrap()]);
-    assert!(!o.status.success());
-    let msg = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        msg.contains("dxf-import") && msg.contains("cannot write"),
-        "{msg}"
+    for (lsp, out) in [("alone.lsp", "alone.dxf"), ("late.lsp", "late.dxf")] {
+        let o = lispcad(d, &["run", lsp, "-o", out]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let paths = ["o.dxf", "alone.dxf", "late.dxf"].map(|f| d.join(f).display().to_string());
+    let r: serde_json::Value =
+        serde_json::from_slice(&py(&["late-check", &paths[0], &paths[1], &paths[2]])).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
+
+/// An R12 file's records imported into an R2018 drawing get the subclass markers ezdxf
+/// itself writes for them (LINE to DIMENSION, POLYLINE's VERTEXes and face records,
+/// INSERT's ATTRIBs, the BLOCK and ATTDEF of its block), and read back with the R12 values
+/// (thickness and text alignment included).
+#[test]
+fn dxf_import_of_r12_into_r2018_adds_subclass_markers() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let py = |args: &[&std::path::Path], mode: &str| {
+        let o = Command::new(python())
+            .arg(&script)
+            .arg(mode)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        o.stdout
+    };
+    let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
+    py(&[&target, &d.join("unused.dxf")], "import-make");
+    py(&[&other], "r12-make");
+    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
+    let o = lispcad(
+        d,
+        &[
+            "run",
+            "import.lsp",
+            "--open",
+            "t.dxf",
+            "-o",
+            result.to_str().unwrap(),
+        ],
     );
-    assert!(!late.exists());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value =
+        serde_json::from_slice(&py(&[&target, &other, &result], "r12-check")).unwrap();
+    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+}
+
+/// A POLYLINE or INSERT whose only change is its layer takes its VERTEX and SEQEND records
+/// along (and a 3D polyline moved too), as AutoCAD and ezdxf keep them; the ATTRIBs keep
+/// their own layer, as AutoCAD's CHPROP leaves them.
+#[test]
+fn a_new_layer_takes_the_followers_along() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let script = manifest().join("tests/validate/dxf_edits.py");
+    let lsp = r#"
+(setq v (entnext (entnext (ssname (ssget "X" '((8 . "P3"))) 0))) e (entget v))
+(entmod (subst '(10 7.0 0.0 1.0) (assoc 10 e) e))
+(setq ss (ssget "X") i 0)
+(repeat (sslength ss)
+  (setq e (entget (ssname ss i)) i (1+ i))
+  (entmod (subst '(8 . "MOVED") (assoc 8 e) e)))
+"#;
+    std::fs::write(d.join("move.lsp"), lsp).unwrap();
+    for version in ["R12", "R2000"] {
+        let (orig, out) = (
+            d.join(format!("{version}.dxf")),
+            d.join(format!("{version}-m.dxf")),
+        );
+        let o = Command::new(python())
+            .arg(&script)
+            .args(["followers-make", orig.to_str().unwrap(), version])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = lispcad(
+            d,
+            &[
+                "run",
+                "move.lsp",
+                "--open",
+                orig.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ],
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = Command::new(python())
+            .arg(&script)
+            .args([
+                "followers-check",
+                orig.to_str().unwrap(),
+                out.to_str().unwrap(),
+            ])
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert!(strs(&r["diffs"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_errors"]).is_empty(), "{version}: {r:#}");
+        assert!(strs(&r["audit_fixes"]).is_empty(), "{version}: {r:#}");
+    }
 }
 
 /// A group of the wrong type is an error, more of a repeated code than the entity has gives

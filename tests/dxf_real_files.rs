@@ -3,9 +3,17 @@
 //! - every DXF part and hatch pattern LibreCAD ships (over a thousand, under
 //!   /usr/share/librecad; GPL-2.0), written by LibreCAD's and QCAD's writers;
 //! - OpenSCAD's test drawings (Debian's openscad-testing-data, under
-//!   /usr/share/openscad/testdata; GPL-2+), written by QCAD's dxflib 2.2.
+//!   /usr/share/openscad/testdata; GPL-2+), written by QCAD's dxflib 2.2;
+//! - drawings written by AutoCAD that ship in two npm packages, both under the MIT licence:
+//!   three-dxf 1.3.1's `sample/data/demo.dxf` (AC1032, R2018) and dxf2json 1.0.3's
+//!   `sample/*.dxf` (five AC1027/AC1021 drawings with Chinese and Korean code pages, and
+//!   `234.dxf`, an R12 file from Global Mapper). AutoCAD wrote them as far as a file can
+//!   tell: `$ACADMAINTVER` and `$REQUIREDVERSIONS` in AutoCAD's padded layout, a user name
+//!   in `$LASTSAVEDBY`, CLASSES records of Autodesk applications (Architectural Desktop, Map,
+//!   Express Tools); an ODA-based clone could write the same, so that is the evidence, not
+//!   proof. `.ci/setup` fetches the two tarballs with `npm pack` into tests/dxf_samples.
 //!
-//! Both are read from the installed packages (`.ci/setup`), not copied into the repository.
+//! All are read from the installed packages (`.ci/setup`), not copied into the repository.
 //! An unchanged sound file must come back with its own groups (same codes, same value text,
 //! comments and line ends aside): then it is the same document to any reader, so only the
 //! copies that differ (damaged files read with --recover) go through ezdxf (one Python process
@@ -75,6 +83,15 @@ fn round_trip(f: &Path, copy: &Path) -> Result<(bool, bool), String> {
 /// not its original's document to ezdxf, a sound file whose copy has other groups), and how
 /// many files needed --recover.
 fn check(files: &[PathBuf]) -> (Vec<String>, usize) {
+    check_every(files, 50)
+}
+
+/// `check` with every copy compared by ezdxf.
+fn check_all(files: &[PathBuf]) -> (Vec<String>, usize) {
+    check_every(files, 1)
+}
+
+fn check_every(files: &[PathBuf], sample: usize) -> (Vec<String>, usize) {
     let dir = tempfile::tempdir().unwrap();
     let copies: Vec<PathBuf> = (0..files.len())
         .map(|i| dir.path().join(format!("{i}.dxf")))
@@ -112,7 +129,7 @@ fn check(files: &[PathBuf]) -> (Vec<String>, usize) {
                 if !same && !rec {
                     bad.push(format!("{}: the copy's groups differ", f.display()));
                 }
-                if !same || i % 50 == 0 {
+                if !same || i % sample == 0 {
                     pairs.push((f.clone(), c.clone()));
                 }
             }
@@ -166,6 +183,58 @@ fn openscad_test_drawings_round_trip() {
     let (bad, recovered) = check(&files);
     // nothing-decimal-comma-separated.dxf, which ezdxf too reads only with its recover.
     assert_eq!(recovered, 1);
+    assert!(
+        bad.is_empty(),
+        "{} files differ:\n{}",
+        bad.len(),
+        bad.join("\n")
+    );
+}
+
+/// The AutoCAD drawings of three-dxf and dxf2json (see the module documentation); every one
+/// is compared by ezdxf too, as there are few.
+#[test]
+fn autocad_drawings_from_npm_packages_round_trip() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/dxf_samples");
+    let mut files = Vec::new();
+    dxf_files(&root, &mut files);
+    files.sort();
+    let names: Vec<String> = files
+        .iter()
+        .filter_map(|f| f.file_name()?.to_str().map(str::to_string))
+        .collect();
+    assert_eq!(
+        files.len(),
+        7,
+        "the npm packages' drawings are missing or changed ({names:?}): run `bash .ci/setup`"
+    );
+    // Who wrote them, as their headers say (an update of the packages must not silently
+    // swap in other producers' files).
+    let mut versions: Vec<String> = files
+        .iter()
+        .map(|f| {
+            let d = read_dxf(&std::fs::read(f).unwrap(), false).unwrap();
+            let doc = d.document().unwrap();
+            let by = doc.header_var("$LASTSAVEDBY").is_some()
+                && doc.header_var("$ACADMAINTVER").is_some();
+            format!("{}{}", doc.version, if by { " AutoCAD" } else { "" })
+        })
+        .collect();
+    versions.sort();
+    assert_eq!(
+        versions,
+        [
+            "AC1009",
+            "AC1021 AutoCAD",
+            "AC1027 AutoCAD",
+            "AC1027 AutoCAD",
+            "AC1027 AutoCAD",
+            "AC1027 AutoCAD",
+            "AC1032 AutoCAD"
+        ]
+    );
+    let (bad, recovered) = check_all(&files);
+    assert_eq!(recovered, 0);
     assert!(
         bad.is_empty(),
         "{} files differ:\n{}",

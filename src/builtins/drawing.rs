@@ -321,19 +321,20 @@ fn dxf_import(it: &mut Interp, a: &[Value]) -> LResult {
     // Entities kept as their groups (INSERT, HATCH...) can only be written with the document
     // they came from: the R2000 writer of new drawings would drop them. An untouched drawing
     // takes the file whole (with its handles, which nothing yet refers to); any other
-    // drawing made from scratch refuses rather than lose them at save.
+    // drawing made from scratch takes it with every record relocated above its own handles.
     let added = if d.document().is_some() || !other.has_kept_entities() {
         d.import(&other)
     } else if d.is_untouched() && other.document().is_some() {
         *d = other;
         d.entities().map(|e| e.handle).collect()
     } else {
-        return Err(err(format!(
-            "dxf-import: {} has entities lispcad keeps only as read (INSERT, HATCH, MTEXT, \
-             DIMENSION...), which a drawing made from scratch cannot write; import it first \
-             into an empty drawing, or dxf-open a drawing and import into that",
-            path.display()
-        )));
+        d.import_relocated(&other).map_err(|e| {
+            err(format!(
+                "dxf-import: {} has entities lispcad keeps only as read (INSERT, HATCH, MTEXT, \
+                 DIMENSION...) and {e}",
+                path.display()
+            ))
+        })?
     };
     if added.is_empty() {
         return Ok(Value::Nil);

@@ -42,10 +42,12 @@ fn owned(ty: &str) -> Option<Owned> {
     };
     let (run, flag_bits): (fn(i32) -> bool, i64) = match ty {
         "LWPOLYLINE" => (|c| matches!(c, 10 | 20 | 42), 1),
-        // The planar bit (8) is a hint readers recompute; the one read is kept.
+        // The planar bit (8) follows the edited control points, with the normal (210),
+        // as AutoCAD recomputes both on an edit (the linear bit is settled in
+        // `merge_changed`).
         "SPLINE" => (
             |c| matches!(c, 10 | 20 | 30 | 11 | 21 | 31 | 40 | 41),
-            1 | 4,
+            1 | 4 | 8,
         ),
         "POLYLINE" => (none, 1 | 8),
         _ => (none, 0),
@@ -80,6 +82,9 @@ pub fn merge_changed(orig: &TagList, new: &TagList, e: &Entity, was: &Entity) ->
     let mut first = merge_record(&o0, &n0, &own, ty == "LWPOLYLINE");
     if ty == "TEXT" {
         shift_alignment_point(&mut first, e, was);
+    }
+    if let EntityKind::Spline { curve, .. } = &e.kind {
+        settle_linear_bit(&mut first, &curve.ctrl);
     }
     for (c, v) in &first {
         out.push(*c, v);
@@ -117,6 +122,43 @@ pub fn merge_changed(orig: &TagList, new: &TagList, e: &Entity, was: &Entity) ->
         }
     }
     Some(out)
+}
+
+/// A SPLINE read as linear (bit 16, with the planar bit) stays so while its control points
+/// are on one line; one bent off it is neither linear nor, by that bit, planar.
+fn settle_linear_bit(first: &mut [(i32, String)], ctrl: &[DVec3]) {
+    let Some((_, v)) = first.iter_mut().find(|(c, _)| *c == 70) else {
+        return;
+    };
+    let flags: i64 = v.trim().parse().unwrap_or(0);
+    if flags & 16 == 0 {
+        return;
+    }
+    let flags = if collinear(ctrl) {
+        flags | 8
+    } else {
+        flags & !16
+    };
+    *v = flags.to_string();
+}
+
+fn collinear(pts: &[DVec3]) -> bool {
+    let Some(&o) = pts.first() else {
+        return true;
+    };
+    let far = pts
+        .iter()
+        .copied()
+        .max_by(|a, b| (*a - o).length().total_cmp(&(*b - o).length()))
+        .unwrap_or(o);
+    let span = far - o;
+    let len = span.length();
+    if len == 0.0 {
+        return true;
+    }
+    let dir = span / len;
+    pts.iter()
+        .all(|p| (*p - o).cross(dir).length() <= 1e-9 * len)
 }
 
 fn is(t: &TagList, r: &std::ops::Range<usize>, ty: &str) -> bool {
@@ -189,14 +231,33 @@ fn merge_record(
         .iter()
         .position(|(c, _)| *c >= 1000)
         .unwrap_or(out.len());
+    // An extrusion is left out only when the whole vector is the default (0, 0, 1).
+    let default_extrusion = [210, 220, 230].iter().all(|&c| {
+        n.iter()
+            .find(|g| g.0 == c)
+            .is_none_or(|g| is_default(c, g.1))
+    });
     for j in 1..n.len() {
         let c = n[j].0;
-        if used[j] || !(owned_fixed(c) || (own.run)(c)) || is_default(c, n[j].1) {
+        let default = if matches!(c, 210 | 220 | 230) {
+            default_extrusion
+        } else {
+            is_default(c, n[j].1)
+        };
+        if used[j] || !(owned_fixed(c) || (own.run)(c)) || default {
             continue;
         }
+        // After the nearest earlier group of the new record that is placed: an owned one,
+        // or its subclass marker (so a normal lands in its subclass, not AcDbEntity's).
         let at = (0..j)
             .rev()
-            .find_map(|i| placed[i])
+            .find_map(|i| {
+                placed[i].or_else(|| {
+                    (n[i].0 == 100)
+                        .then(|| out.iter().position(|(c, v)| *c == 100 && v == n[i].1))
+                        .flatten()
+                })
+            })
             .map_or(tail_at, |p| p + 1);
         out.insert(at, (c, n[j].1.to_string()));
         for p in placed.iter_mut().flatten() {
@@ -303,5 +364,34 @@ fn shift_alignment_point(g: &mut [(i32, String)], e: &Entity, was: &Entity) {
             v.clear();
             super::dxf_writer::push_float(v, x + off);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn flags_after(flags: &str, ctrl: &[DVec3]) -> String {
+        let mut first = vec![(0, "SPLINE".to_string()), (70, flags.to_string())];
+        settle_linear_bit(&mut first, ctrl);
+        first[1].1.clone()
+    }
+
+    #[test]
+    fn a_linear_spline_stays_linear_only_on_its_line() {
+        let line = [
+            DVec3::ZERO,
+            DVec3::new(1.0, 1.0, 1.0),
+            DVec3::new(3.0, 3.0, 3.0),
+        ];
+        let bent = [
+            DVec3::ZERO,
+            DVec3::new(1.0, 1.2, 1.0),
+            DVec3::new(3.0, 3.0, 3.0),
+        ];
+        assert_eq!(flags_after("24", &line), "24");
+        assert_eq!(flags_after("16", &line), "24");
+        assert_eq!(flags_after("24", &bent), "8");
+        assert_eq!(flags_after("9", &bent), "9");
     }
 }

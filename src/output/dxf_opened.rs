@@ -52,6 +52,7 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
     }
     let layers = layer_records(d, doc, &mut alloc);
     let styles = new_style_records(d, doc, &mut alloc);
+    let linetypes = new_linetype_records(d, doc, &mut alloc);
     let handseed = format!("{:X}", alloc());
 
     let mut out = String::with_capacity(ents.len() + (1 << 16));
@@ -85,10 +86,14 @@ pub fn write_opened(d: &Drawing, doc: &DxfDocument) -> Vec<u8> {
                         for r in &layers {
                             r.write_to(&mut out);
                         }
-                    } else if t.name.eq_ignore_ascii_case("STYLE") && !styles.is_empty() {
-                        let n = t.records.len() + styles.len();
+                    } else if let Some(added) = [("STYLE", &styles), ("LTYPE", &linetypes)]
+                        .into_iter()
+                        .find(|(n, a)| t.name.eq_ignore_ascii_case(n) && !a.is_empty())
+                        .map(|(_, a)| a)
+                    {
+                        let n = t.records.len() + added.len();
                         t.head.with(70, &n.to_string(), 2).write_to(&mut out);
-                        for r in t.records.iter().chain(&styles) {
+                        for r in t.records.iter().chain(added) {
                             r.write_to(&mut out);
                         }
                     } else {
@@ -186,7 +191,7 @@ fn write_one(
             }
             let mut t = s.tags.clone();
             if e.layer != s.original.layer {
-                t = t.with(8, &e.layer, 100);
+                t = followers_on_layer(&t.with(8, &e.layer, 100), &e.layer);
             }
             if e.color != s.original.color {
                 t = match e.color {
@@ -227,7 +232,7 @@ fn write_one(
     let mut t = TagList::from_dxf_text(&w.out);
     if let Some(s) = src {
         t = match super::dxf_merge::merge_changed(&s.tags, &t, e, &s.original) {
-            Some(m) => m,
+            Some(m) => followers_on_layer(&m, &e.layer),
             None => keep_from_original(&t, &s.tags),
         };
     }
@@ -417,6 +422,44 @@ fn new_style_records(
         .collect()
 }
 
+/// LTYPE records for the line types the drawing's layers name and the file lacks (a layer
+/// made by a script): solid ones, copies of the file's "Continuous" record under the new
+/// name, as the writer of new drawings defines them.
+fn new_linetype_records(
+    d: &Drawing,
+    doc: &DxfDocument,
+    alloc: &mut impl FnMut() -> u64,
+) -> Vec<TagList> {
+    let old = doc.table_records("LTYPE");
+    let Some(template) = old.iter().find(|r| {
+        r.get(2)
+            .is_some_and(|n| n.eq_ignore_ascii_case("Continuous"))
+    }) else {
+        return Vec::new();
+    };
+    let mut names: Vec<&str> = Vec::new();
+    for l in d.layers() {
+        let known = |n: &str| n.eq_ignore_ascii_case(&l.linetype);
+        let builtin = ["ByLayer", "ByBlock", "Continuous"].into_iter().any(known);
+        if !builtin
+            && !old.iter().any(|r| r.get(2).is_some_and(known))
+            && !names.iter().any(|n| known(n))
+        {
+            names.push(&l.linetype);
+        }
+    }
+    names
+        .into_iter()
+        .map(|name| {
+            let mut r = without_app_data(template).with(2, name, 100);
+            if r.get(5).is_some() {
+                r = r.with(5, &format!("{:X}", alloc()), 0);
+            }
+            r
+        })
+        .collect()
+}
+
 /// A record minus its application data (reactors, extension dictionary) and extended data,
 /// which belong to the record it was copied from.
 fn without_app_data(r: &TagList) -> TagList {
@@ -457,6 +500,26 @@ fn renumber_followers(t: &TagList, parent: u64, alloc: &mut impl FnMut() -> u64)
             5 if i == record_start + 1 => out.push(5, &format!("{:X}", alloc())),
             330 if !in_app => out.push(330, &format!("{parent:X}")),
             _ => out.push(c, v),
+        }
+    }
+    out
+}
+
+/// A POLYLINE's VERTEX and SEQEND records, and an INSERT's SEQEND, on their entity's layer
+/// (AutoCAD keeps them there, and ezdxf's audit moves them back); an INSERT's ATTRIBs keep
+/// their own, as AutoCAD's CHPROP leaves them.
+fn followers_on_layer(t: &TagList, layer: &str) -> TagList {
+    let first = t.first_record_end();
+    let mut out = TagList::new();
+    let mut follows = false;
+    for (i, (c, v)) in t.iter().enumerate() {
+        if c == 0 {
+            follows = i >= first && matches!(v, "VERTEX" | "SEQEND");
+        }
+        if follows && c == 8 {
+            out.push(8, layer);
+        } else {
+            out.push(c, v);
         }
     }
     out

@@ -49,6 +49,18 @@ impl Extras {
             && self.blocks.is_empty()
             && self.props.is_empty()
     }
+
+    /// Whether a drawing with these extras can take an opened file's document: the
+    /// extended data and applications move into it; its own objects and table handles
+    /// cannot yet.
+    pub fn is_adoptable(&self) -> bool {
+        self.objects.is_empty() && self.table_handles.is_empty()
+    }
+
+    /// The registered applications, moved out (into a document's APPID table).
+    pub fn take_appids(&mut self) -> Vec<String> {
+        std::mem::take(&mut self.appids)
+    }
 }
 
 /// The extended data of an entity's group list: its first record's groups from the first
