@@ -12,6 +12,7 @@ pub mod drawing_import;
 pub mod dxf;
 pub mod dxf_merge;
 pub mod dxf_opened;
+pub mod dxf_spline;
 pub mod dxf_writer;
 pub mod dxfin;
 pub mod entity;
