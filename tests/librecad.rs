@@ -90,11 +90,15 @@ fn librecad_opens_the_temple_and_the_example_routine() {
     }
 }
 
-/// The CUT layer's bounding box (x0, y0, x1, y1) in mm, as ezdxf reads the file.
+/// The CUT layer's bounding box (x0, y0, x1, y1) in mm, as ezdxf reads the file (SPLINEs
+/// flattened finely: ezdxf's own bounding box of one is coarse).
 fn cut_box(dxf: &Path) -> [f64; 4] {
     let code = format!(
         "import ezdxf\nfrom ezdxf import bbox\ndoc = ezdxf.readfile(r'{}')\n\
-         b = bbox.extents(doc.modelspace().query('*[layer==\"CUT\"]'))\n\
+         b = bbox.BoundingBox()\n\
+         for e in doc.modelspace().query('*[layer==\"CUT\"]'):\n\
+         \x20   x = bbox.extents([e])\n\
+         \x20   b.extend(e.flattening(0.0005) if e.dxftype() == 'SPLINE' else [x.extmin, x.extmax])\n\
          print(b.extmin.x, b.extmin.y, b.extmax.x, b.extmax.y)",
         dxf.display()
     );
