@@ -2,12 +2,14 @@
 # The main-job benchmark (issue 5): 1000 temple variants to DXF + SVG with lispcad (batch,
 # -j 1 and -j 2) and with the same temple in Python + ezdxf; then (issue 15) the same batch
 # with a contact sheet (--sheet sheet.pdf), and DXF + PDF per variant against Python + ezdxf
-# with its matplotlib PDF backend. Prints wall and CPU times and the ratios.
-# Usage: bench/run-temple.sh [ROWS.csv]
+# with its matplotlib PDF backend (those two with -j $JOBS, default 2). Prints wall and CPU
+# times, the ratios and the load average before and after (the machine is shared).
+# Usage: [JOBS=N] bench/run-temple.sh [ROWS.csv]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 table=${1:-bench/temple/variants.csv}
 rows=$(( $(wc -l < "$table") - 1 ))
+jobs=${JOBS:-2}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 cargo build --release -q
@@ -27,33 +29,37 @@ measure() {
   echo "$(echo "$t1 - $t0" | bc -l) $cpu"
 }
 
+load0=$(cut -d' ' -f1-3 /proc/loadavg)
 read -r lc1_wall lc1_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/j1/t-{row}.dxf" -o "$out/j1/t-{row}.svg" -j 1)
 read -r lc2_wall lc2_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/j2/t-{row}.dxf" -o "$out/j2/t-{row}.svg" -j 2)
 read -r py_wall py_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" -o "$out/py")
 read -r sh_wall sh_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
-  -o "$out/sh/t-{row}.dxf" -o "$out/sh/t-{row}.svg" -j 1 --sheet "$out/sheet.pdf")
+  -o "$out/sh/t-{row}.dxf" -o "$out/sh/t-{row}.svg" -j "$jobs" --sheet "$out/sheet.pdf")
 read -r pdf_wall pdf_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
-  -o "$out/pdf/t-{row}.dxf" -o "$out/pdf/t-{row}.pdf" -j 1)
+  -o "$out/pdf/t-{row}.dxf" -o "$out/pdf/t-{row}.pdf" -j "$jobs")
 read -r pypdf_wall pypdf_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" \
   -o "$out/pypdf" --pdf)
 
+load1=$(cut -d' ' -f1-3 /proc/loadavg)
 cmp -s <(cd "$out/j1" && cat $(ls | sort)) <(cd "$out/j2" && cat $(ls | sort)) \
   && same="identical" || same="DIFFERENT"
 
 printf '%d variants, DXF + SVG each (outputs of -j 1 and -j 2: %s)\n\n' "$rows" "$same"
 printf '| run | wall s | CPU s | CPU ms/variant |\n|---|---|---|---|\n'
 for r in "lispcad -j 1:$lc1_wall:$lc1_cpu" "lispcad -j 2:$lc2_wall:$lc2_cpu" \
-  "Python+ezdxf:$py_wall:$py_cpu" "lispcad -j 1 + --sheet sheet.pdf:$sh_wall:$sh_cpu" \
-  "lispcad -j 1 DXF + PDF:$pdf_wall:$pdf_cpu" "Python+ezdxf DXF + PDF (matplotlib):$pypdf_wall:$pypdf_cpu"; do
+  "Python+ezdxf:$py_wall:$py_cpu" "lispcad -j $jobs + --sheet sheet.pdf:$sh_wall:$sh_cpu" \
+  "lispcad -j $jobs DXF + PDF:$pdf_wall:$pdf_cpu" "Python+ezdxf DXF + PDF (matplotlib):$pypdf_wall:$pypdf_cpu"; do
   IFS=: read -r name w c <<< "$r"
   printf '| %s | %.2f | %.2f | %.3f |\n' "$name" "$w" "$c" "$(echo "$c * 1000 / $rows" | bc -l)"
 done
 printf '\nPython/lispcad (CPU, -j 1): %.1fx   (wall, -j 1): %.1fx\n' \
   "$(echo "$py_cpu / $lc1_cpu" | bc -l)" "$(echo "$py_wall / $lc1_wall" | bc -l)"
 printf 'speed-up -j 1 -> -j 2 (wall): %.2fx\n' "$(echo "$lc1_wall / $lc2_wall" | bc -l)"
-printf 'contact sheet: %s bytes; its cost over the plain batch (wall): %.2f s\n' \
-  "$(stat -c %s "$out/sheet.pdf")" "$(echo "$sh_wall - $lc1_wall" | bc -l)"
+printf 'Python/lispcad (CPU, -j 2): %.1fx\n' "$(echo "$py_cpu / $lc2_cpu" | bc -l)"
+printf 'contact sheet: %s bytes; its cost over the plain batch (CPU): %.2f s\n' \
+  "$(stat -c %s "$out/sheet.pdf")" "$(echo "$sh_cpu - $lc2_cpu" | bc -l)"
 printf 'PDF: Python+matplotlib/lispcad (CPU): %.1fx   (wall): %.1fx\n' \
   "$(echo "$pypdf_cpu / $pdf_cpu" | bc -l)" "$(echo "$pypdf_wall / $pdf_wall" | bc -l)"
+printf 'load average (1/5/15 min) before: %s   after: %s\n' "$load0" "$load1"

@@ -262,3 +262,117 @@ fn no_overshoot_between_type_value_points() {
         }
     }
 }
+
+/// The CUT layer of `lispcad run` DXF files as ezdxf reads them: per file, the entities in
+/// order, a LINE as its ends and a SPLINE as ezdxf's own Bézier decomposition of it.
+const READ_CUT: &str = r#"
+import sys, json, ezdxf
+out = []
+for f in sys.argv[1:]:
+    doc = ezdxf.readfile(f)
+    audit = doc.audit()
+    assert not audit.has_errors and not audit.has_fixes, f
+    pieces = []
+    for e in doc.modelspace():
+        if e.dxf.layer != 'CUT':
+            continue
+        if e.dxftype() == 'LINE':
+            pieces.append({'line': [list(e.dxf.start)[:2], list(e.dxf.end)[:2]]})
+        elif e.dxftype() == 'SPLINE':
+            b = e.construction_tool()
+            pieces.append({'beziers': [[[p.x, p.y] for p in c] for c in b.bezier_decomposition()]})
+        else:
+            pieces.append({'other': e.dxftype()})
+    out.append(pieces)
+print(json.dumps(out))
+"#;
+
+fn xy(v: &serde_json::Value) -> DVec3 {
+    DVec3::new(v[0].as_f64().unwrap(), v[1].as_f64().unwrap(), 0.0)
+}
+
+/// The CAD file holds the bent outline exactly as ezdxf reads it: the CUT layer is a chain,
+/// in the outline's order from the lower hinge corner, of SPLINEs whose Bézier pieces are the
+/// outline's own segments (to 1e-6 mm) and LINEs each covering a run of straight segments
+/// (the straight ends next to the hinge corners and the butt), so the hinge corners are
+/// entity ends, which LibreCAD draws sharp (tests/librecad.rs).
+#[test]
+fn the_cad_file_traces_the_outline_exactly_with_the_hinge_corners_as_entity_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let temples = all_temples();
+    let mut files = Vec::new();
+    for (i, t) in temples.iter().enumerate() {
+        let f = dir.path().join(format!("t{i}.dxf"));
+        let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_lispcad"));
+        cmd.args(["run", SCRIPT, "-o"]).arg(&f);
+        for (k, v) in &t.vars {
+            cmd.arg("--set").arg(format!("{k}={v}"));
+        }
+        let o = cmd.output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        files.push(f);
+    }
+    let py = concat!(env!("CARGO_MANIFEST_DIR"), "/.venv/bin/python");
+    let o = std::process::Command::new(py)
+        .args(["-c", READ_CUT])
+        .args(&files)
+        .output()
+        .expect("validator python missing: run `bash .ci/setup` first");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let read: Vec<serde_json::Value> = serde_json::from_slice(&o.stdout).unwrap();
+    // The SPLINEs have simple knots (LibreCAD mishandles repeated ones), which put each joint
+    // on the line through its two controls; the refit's joints sit off that line by up to
+    // ~1e-9 of the outline's size (the writer's previous single SPLINE did too): 2e-7 mm seen.
+    let close = |a: DVec3, b: DVec3| a.distance(b) <= 1e-6;
+    for (t, pieces) in temples.iter().zip(&read) {
+        let what = format!("{:?}", t.vars);
+        let segs = &t.bent.segments;
+        let mut next = 0;
+        let mut ends = Vec::new();
+        for piece in pieces.as_array().unwrap() {
+            if let Some(l) = piece.get("line") {
+                let (a, b) = (xy(&l[0]), xy(&l[1]));
+                assert!(close(a, segs[next][0]), "{what}: line starts off the chain");
+                let on_line = |p: DVec3| (p - a).cross(b - a).length() <= 1e-9 * a.distance(b);
+                loop {
+                    let s = segs[next];
+                    assert!(
+                        on_line(s[1]) && on_line(s[2]),
+                        "{what}: a line over a curve"
+                    );
+                    next += 1;
+                    if close(s[2], b) {
+                        break;
+                    }
+                }
+                ends.push((a, b));
+            } else if let Some(bz) = piece.get("beziers") {
+                let bz = bz.as_array().unwrap();
+                ends.push((xy(&bz[0][0]), xy(&bz[bz.len() - 1][2])));
+                for c in bz {
+                    let s = segs[next];
+                    for k in 0..3 {
+                        assert!(
+                            close(xy(&c[k]), s[k]),
+                            "{what}: segment {next} read as {c} for {s:?}"
+                        );
+                    }
+                    next += 1;
+                }
+            } else {
+                panic!("{what}: unexpected CUT entity {piece}");
+            }
+        }
+        assert_eq!(next, segs.len(), "{what}: the chain stops short");
+        for w in ends.windows(2) {
+            assert!(close(w[0].1, w[1].0), "{what}: chain broken");
+        }
+        // The hinge corners begin and end entities.
+        for c in hinge_corners(t) {
+            assert!(
+                ends.iter().any(|(a, _)| close(*a, c)) && ends.iter().any(|(_, b)| close(*b, c)),
+                "{what}: hinge corner {c} inside an entity"
+            );
+        }
+    }
+}

@@ -601,7 +601,7 @@ fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i
     w.handle(330, rec);
 }
 
-fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, owner: u64, e: &Entity) {
+pub(crate) fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, owner: u64, e: &Entity) {
     w.str(0, kind);
     w.handle(5, handle);
     w.handle(330, owner);
@@ -747,45 +747,7 @@ pub(crate) fn write_entity(
             curve,
             fit_points,
             closed,
-        } => {
-            entity_head(w, "SPLINE", e.handle, owner, e);
-            w.str(100, "AcDbSpline");
-            let plane = plane_normal(&curve.ctrl);
-            if let Some(n) = plane {
-                w.point(210, n);
-            }
-            let mut flags = *closed as i64;
-            if plane.is_some() {
-                flags |= 8;
-            }
-            if curve.weights.is_some() {
-                flags |= 4;
-            }
-            w.int(70, flags);
-            w.int(71, curve.degree as i64);
-            w.int(72, curve.knots.len() as i64);
-            w.int(73, curve.ctrl.len() as i64);
-            w.int(74, fit_points.len() as i64);
-            w.float(42, 1e-10);
-            w.float(43, 1e-10);
-            if !fit_points.is_empty() {
-                w.float(44, 1e-10);
-            }
-            for k in &curve.knots {
-                w.float(40, *k);
-            }
-            if let Some(ws) = &curve.weights {
-                for x in ws {
-                    w.float(41, *x);
-                }
-            }
-            for p in &curve.ctrl {
-                w.point(10, *p);
-            }
-            for p in fit_points {
-                w.point(11, *p);
-            }
-        }
+        } => super::dxf_spline::write_spline(w, e, owner, alloc, curve, fit_points, *closed),
         EntityKind::Face3d { corners } => {
             write_face(w, e.handle, owner, e, corners);
         }

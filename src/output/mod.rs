@@ -15,6 +15,7 @@ pub mod dxf;
 pub mod dxf_merge;
 pub mod dxf_opened;
 pub mod dxf_relocate;
+pub mod dxf_spline;
 pub mod dxf_upgrade;
 pub mod dxf_writer;
 pub mod dxfin;
