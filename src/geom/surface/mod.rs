@@ -8,6 +8,7 @@
 
 mod analytic;
 mod coaxial;
+mod cone;
 mod contact;
 mod error;
 mod hits;

@@ -109,11 +109,23 @@ pub fn surface_section_seeded(
         }
         Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol, geom_tol) {
             Some(curves) => Ok(curves),
-            None => Ok(refined(section(
-                &mesh_surface(s, seed_tol)?,
-                plane_point,
-                plane_normal,
-            )?)),
+            None => match super::cone::Cone::of(r).filter(|_| {
+                plane_point.is_finite() && plane_normal.is_finite() && plane_normal.length() > 0.0
+            }) {
+                Some(k) => Ok(super::cone::cone_plane(
+                    &k,
+                    plane_point,
+                    plane_normal.normalize(),
+                    None,
+                    geom_tol,
+                    tol,
+                )),
+                None => Ok(refined(section(
+                    &mesh_surface(s, seed_tol)?,
+                    plane_point,
+                    plane_normal,
+                )?)),
+            },
         },
         Surface::Plane(_) => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
         _ => Ok(refined(section(
