@@ -55,14 +55,22 @@ pub fn surface_section_seeded(
 ) -> Result<Vec<Polyline3>, SurfaceError> {
     let tol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
-    let refined = |seeds: Vec<Polyline3>| -> Vec<Polyline3> {
+    // The mesh's section seeds the curves, refined on the true surface; the points where the
+    // plane touches without crossing (which the section misses) are searched for beside them.
+    let refined = |m: Mesh| -> Result<Vec<Polyline3>, SurfaceError> {
+        let seeds = section(&m, plane_point, plane_normal)?;
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
-        seeds
+        let mut curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
             .filter(|c| !c.points.is_empty())
-            .collect()
+            .collect();
+        let touch = (plane_point, n);
+        let tols = (seed_tol, tol);
+        let contacts = super::contact::plane_contacts(&patch, &m, touch, &curves, tols, geom_tol);
+        curves.extend(contacts);
+        Ok(curves)
     };
     match s {
         Surface::Cylinder(c) => {
@@ -84,12 +92,14 @@ pub fn surface_section_seeded(
             // Sphere ∩ plane: the circle about the centre's projection, radius √(r² − d²).
             let d = n.dot(sp.center - plane_point);
             let rad2 = sp.radius * sp.radius - d * d;
-            if rad2 < 0.0 {
+            let c = sp.center - n * d;
+            // Touching within GEOMTOL: the point of contact, on the plane.
+            let touching = (d.abs() - sp.radius).abs() <= geom_tol;
+            if rad2 < 0.0 && !touching {
                 return Ok(Vec::new());
             }
-            let c = sp.center - n * d;
-            let rad = rad2.sqrt();
-            if rad <= tol {
+            let rad = rad2.max(0.0).sqrt();
+            if rad <= tol || touching {
                 return Ok(vec![Polyline3 {
                     points: vec![c],
                     closed: false,
@@ -120,19 +130,11 @@ pub fn surface_section_seeded(
                     geom_tol,
                     tol,
                 )),
-                None => Ok(refined(section(
-                    &mesh_surface(s, seed_tol)?,
-                    plane_point,
-                    plane_normal,
-                )?)),
+                None => refined(mesh_surface(s, seed_tol)?),
             },
         },
         Surface::Plane(_) => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
-        _ => Ok(refined(section(
-            &mesh_surface(s, seed_tol)?,
-            plane_point,
-            plane_normal,
-        )?)),
+        _ => refined(mesh_surface(s, seed_tol)?),
     }
 }
 
