@@ -8,6 +8,7 @@
 
 mod analytic;
 mod coaxial;
+mod coincide;
 mod cone;
 mod contact;
 mod error;
