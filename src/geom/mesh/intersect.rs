@@ -16,9 +16,10 @@
 //!    neighbouring pairs share it bit for bit and chaining is exact (paper 001 step 4). Touching
 //!    through vertices or along edges and coplanar facets fall under the tie-break (step 5).
 //!
-//! Known limit: where the meshes coincide with collinear shared edges (a region of overlap, not
-//! a curve) the translation tie-break cannot separate parallel edges and the result there may
-//! be fragments; a mesh against an identical copy gives no curve.
+//! Where the meshes coincide (exactly coplanar facets overlapping: a region, not a curve) the
+//! translation tie-break pushes them apart; the region's boundary loops are added by
+//! [`super::coplanar`]. Known limit: where coincident facets have collinear shared edges the
+//! tie-break cannot separate parallel edges and stray fragments may come with the loops.
 //!
 //! The output is canonicalised by coordinates ([`chain_segments`]), so it does not depend on
 //! triangle or vertex order or on which mesh comes first.
@@ -73,11 +74,14 @@ impl Side<'_> {
 
 /// Like [`intersect_meshes`], also returning the phase counts.
 pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, IntersectStats) {
-    let (pieces, stats) = intersection_pieces(a, b);
+    let (pieces, stats, pairs) = pieces_and_pairs(a, b);
     let segs = pieces.into_iter().map(|p| p.seg).collect();
     // Crossings through a vertex or an edge/edge touch are found from several (edge, triangle)
     // keys with the same exact point; they are one node of the curve.
-    (chain_segments(merge_keys_by_point(segs)), stats)
+    let mut out = chain_segments(merge_keys_by_point(segs));
+    // Where the meshes coincide: the region's boundary loops.
+    out.extend(super::coplanar::coincident_loops(a, b, &pairs));
+    (out, stats)
 }
 
 /// One intersecting triangle pair's segment, with where its ends lie on `a`.
@@ -91,12 +95,20 @@ pub(crate) struct Piece {
 
 /// The segments of every truly intersecting triangle pair (before chaining).
 pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
-    // A surface coincides with itself everywhere: a region, not a curve.
-    if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
-        return (Vec::new(), IntersectStats::default());
-    }
+    let (pieces, stats, _) = pieces_and_pairs(a, b);
+    (pieces, stats)
+}
+
+/// [`intersection_pieces`] with the box-overlapping triangle pairs.
+#[allow(clippy::type_complexity)]
+fn pieces_and_pairs(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats, Vec<(u32, u32)>) {
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
+    // A surface coincides with itself everywhere: a region (its boundary, found by the
+    // coincident pass), not a curve.
+    if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
+        return (Vec::new(), IntersectStats::default(), pairs);
+    }
     // Which mesh the tie-break translates is chosen from the meshes' contents, not from the
     // argument order, so swapping the arguments cannot change a degenerate decision.
     let a_moves = moving_first(a, b);
@@ -151,7 +163,7 @@ pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectS
     let mut segs = acc.segs;
     // Deterministic order whatever the thread scheduling.
     segs.sort_unstable_by_key(|p| (p.ta, p.seg.keys));
-    (segs, stats)
+    (segs, stats, pairs)
 }
 
 enum PairResult {
