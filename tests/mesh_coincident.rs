@@ -94,3 +94,37 @@ fn two_meshes_of_one_cylinder_give_the_band_boundary() {
         assert!((l.length() - foot.length()).abs() <= 1e-12);
     }
 }
+
+#[test]
+fn a_trim_by_a_coincident_cutter_cuts_along_the_region_boundary() {
+    use lispcad::geom::mesh::trim;
+    // The square [0, 2]² cut by the coincident rectangle [1, 3] × [0.5, 1.5]: the overlap
+    // (area 1) on one side, the rest (area 3) on the other, sharing the cut exactly.
+    let (a, b) = (rect(0.0, 2.0, 0.0, 2.0), rect(1.0, 3.0, 0.5, 1.5));
+    let t = trim(&a, &b, DVec3::new(0.1, 0.1, 0.0)).unwrap();
+    assert!((t.kept.area() - 3.0).abs() <= 1e-12, "{}", t.kept.area());
+    assert!(
+        (t.removed.area() - 1.0).abs() <= 1e-12,
+        "{}",
+        t.removed.area()
+    );
+    let t = trim(&a, &b, DVec3::new(1.5, 1.0, 0.0)).unwrap();
+    assert!((t.kept.area() - 1.0).abs() <= 1e-12, "{}", t.kept.area());
+    // A cylinder mesh cut by a coincident piece of itself at z = 3: its strips are planar
+    // rectangles, so the parts hold 3/5 and 2/5 of its area.
+    let c = Surface::cylinder(DVec3::ZERO, DVec3::Z, 1.0, 5.0).unwrap();
+    let d = Surface::cylinder(DVec3::new(0.0, 0.0, 3.0), DVec3::Z, 1.0, 5.0).unwrap();
+    let (mc, md) = (
+        mesh_surface(&c, 0.01).unwrap(),
+        mesh_surface(&d, 0.01).unwrap(),
+    );
+    let whole = mc.area();
+    let t = trim(&mc, &md, DVec3::new(1.0, 0.0, 1.0)).unwrap();
+    assert!(
+        (t.kept.area() - 0.6 * whole).abs() <= 1e-12 * whole,
+        "{}",
+        t.kept.area()
+    );
+    assert!((t.removed.area() - 0.4 * whole).abs() <= 1e-12 * whole);
+    assert!(t.kept.vertices().iter().all(|p| p.z <= 3.0));
+}

@@ -11,6 +11,7 @@
 //! each way and cancels, and the edges left are the region's boundary, chained into loops.
 
 use super::chain::{chain_segments, cmp_point, Polyline3, Segment};
+use super::intersect::Piece;
 use super::Mesh;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
@@ -45,49 +46,104 @@ fn dominant(n: DVec3) -> usize {
     }
 }
 
-/// The boundary loops of the regions where `a` and `b` coincide, from their box-overlapping
-/// triangle pairs.
-pub(crate) fn coincident_loops(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<Polyline3> {
-    let pieces: Vec<Vec<DVec3>> = pairs
+/// A point of a common piece and the edge of its facet of `a` it lies on (vertex indices; None
+/// for a corner or an interior point).
+type Corner = (DVec3, Option<(u32, u32)>);
+
+/// The boundary of the coincident regions as directed edges, each with the facet of `a` it
+/// crosses.
+fn boundary_edges(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<(u32, Corner, Corner)> {
+    let pieces: Vec<(u32, Vec<Corner>)> = pairs
         .par_iter()
         .with_min_len(256)
         .filter_map(|&(ta, tb)| {
             let (pa, pb) = (a.corners_of(ta as usize), b.corners_of(tb as usize));
-            coplanar(&pa, &pb).then(|| common_piece(&pa, &pb))
+            if !coplanar(&pa, &pb) {
+                return None;
+            }
+            let piece = common_piece(&pa, &pb, a.triangles()[ta as usize]);
+            (piece.len() >= 3).then_some((ta, piece))
         })
-        .filter(|p| p.len() >= 3)
         .collect();
-    if pieces.is_empty() {
-        return Vec::new();
-    }
     // Directed edges; one each way cancels.
     let key = |p: DVec3| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
     let mut count: HashMap<([u64; 3], [u64; 3]), i32> = HashMap::new();
-    for piece in &pieces {
+    for (_, piece) in &pieces {
         for i in 0..piece.len() {
-            let (p, q) = (piece[i], piece[(i + 1) % piece.len()]);
+            let (p, q) = (piece[i].0, piece[(i + 1) % piece.len()].0);
             *count.entry((key(p), key(q))).or_default() += 1;
             *count.entry((key(q), key(p))).or_default() -= 1;
         }
     }
-    let mut ids: HashMap<[u64; 3], u128> = HashMap::new();
-    let mut segs = Vec::new();
-    for piece in &pieces {
+    let mut out = Vec::new();
+    for (ta, piece) in &pieces {
         for i in 0..piece.len() {
             let (p, q) = (piece[i], piece[(i + 1) % piece.len()]);
-            if count.get(&(key(p), key(q))).copied().unwrap_or(0) > 0 {
-                let n = ids.len() as u128;
-                let kp = *ids.entry(key(p)).or_insert(n);
-                let n = ids.len() as u128;
-                let kq = *ids.entry(key(q)).or_insert(n);
-                segs.push(Segment {
-                    keys: [kp, kq],
-                    points: [p, q],
-                });
+            if count.get(&(key(p.0), key(q.0))).copied().unwrap_or(0) > 0 {
+                out.push((*ta, p, q));
             }
         }
     }
+    out
+}
+
+/// The boundary loops of the regions where `a` and `b` coincide, from their box-overlapping
+/// triangle pairs.
+pub(crate) fn coincident_loops(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<Polyline3> {
+    let mut ids: HashMap<[u64; 3], u128> = HashMap::new();
+    let mut id = |p: DVec3| {
+        let n = ids.len() as u128;
+        *ids.entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+            .or_insert(n)
+    };
+    let segs = boundary_edges(a, b, pairs)
+        .into_iter()
+        .map(|(_, p, q)| Segment {
+            keys: [id(p.0), id(q.0)],
+            points: [p.0, q.0],
+        })
+        .collect();
     chain_segments(segs)
+}
+
+/// The boundary of the coincident regions as cut pieces for a trim of `a`: keyed by point (in
+/// a key space of their own), with the edges of `a` their ends lie on. Boundary edges running
+/// along an edge of `a` are left out (the facets there are not crossed).
+pub(crate) fn coincident_pieces(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<Piece> {
+    let mut ids: HashMap<[u64; 3], u128> = HashMap::new();
+    let mut id = |p: DVec3| {
+        let n = ids.len() as u128;
+        (1u128 << 127)
+            | *ids
+                .entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+                .or_insert(n)
+    };
+    let mut out = Vec::new();
+    for (ta, p, q) in boundary_edges(a, b, pairs) {
+        let tri = a.triangles()[ta as usize];
+        let on = |c: &Corner, e: (u32, u32)| {
+            c.1.is_some_and(|f| f == e)
+                || tri
+                    .iter()
+                    .any(|&w| (w == e.0 || w == e.1) && a.vertices()[w as usize] == c.0)
+        };
+        let along = (0..3).any(|k| {
+            let e = (tri[k], tri[(k + 1) % 3]);
+            on(&p, e) && on(&q, e)
+        });
+        if along {
+            continue;
+        }
+        out.push(Piece {
+            ta,
+            seg: Segment {
+                keys: [id(p.0), id(q.0)],
+                points: [p.0, q.0],
+            },
+            a_edge: [p.1, q.1],
+        });
+    }
+    out
 }
 
 /// Whether the triangles lie in one plane exactly (and are not degenerate).
@@ -102,8 +158,9 @@ fn coplanar(pa: &[DVec3; 3], pb: &[DVec3; 3]) -> bool {
     pb.iter().all(|q| orient3d(a, b, c, c3(*q)) == 0.0)
 }
 
-/// The common piece of two coplanar triangles, wound as `pa`.
-fn common_piece(pa: &[DVec3; 3], pb: &[DVec3; 3]) -> Vec<DVec3> {
+/// The common piece of two coplanar triangles, wound as `pa` (`ia`: its vertex indices), each
+/// corner with the edge of `pa` it lies on.
+fn common_piece(pa: &[DVec3; 3], pb: &[DVec3; 3], ia: [u32; 3]) -> Vec<Corner> {
     let n = (pa[1] - pa[0]).cross(pa[2] - pa[0]);
     let k = dominant(n);
     let o =
@@ -118,18 +175,33 @@ fn common_piece(pa: &[DVec3; 3], pb: &[DVec3; 3]) -> Vec<DVec3> {
     }
     let inside =
         |t: &[DVec3; 3], s: f64, p: DVec3| (0..3).all(|i| o(t[i], t[(i + 1) % 3], p) * s >= 0.0);
-    let mut pts: Vec<DVec3> = Vec::new();
-    pts.extend(pa.iter().copied().filter(|p| inside(pb, sb, *p)));
-    pts.extend(pb.iter().copied().filter(|p| inside(pa, sa, *p)));
+    let edge_of_a = |p: DVec3| {
+        (0..3)
+            .find(|&i| o(pa[i], pa[(i + 1) % 3], p) == 0.0)
+            .map(|i| (ia[i], ia[(i + 1) % 3]))
+    };
+    let mut pts: Vec<Corner> = Vec::new();
+    pts.extend(
+        pa.iter()
+            .copied()
+            .filter(|p| inside(pb, sb, *p))
+            .map(|p| (p, None)),
+    );
+    pts.extend(
+        pb.iter()
+            .copied()
+            .filter(|p| inside(pa, sa, *p))
+            .map(|p| (p, edge_of_a(p))),
+    );
     for i in 0..3 {
         for j in 0..3 {
             if let Some(x) = crossing((pa[i], pa[(i + 1) % 3]), (pb[j], pb[(j + 1) % 3])) {
-                pts.push(x);
+                pts.push((x, Some((ia[i], ia[(i + 1) % 3]))));
             }
         }
     }
-    pts.sort_by(|p, q| cmp_point(*p, *q));
-    pts.dedup();
+    pts.sort_by(|p, q| cmp_point(p.0, q.0));
+    pts.dedup_by(|p, q| p.0 == q.0);
     if pts.len() < 3 {
         return Vec::new();
     }
@@ -138,15 +210,16 @@ fn common_piece(pa: &[DVec3; 3], pb: &[DVec3; 3]) -> Vec<DVec3> {
         let c = drop_axis(p, k);
         DVec2::new(c.x, c.y)
     };
-    let g = pts.iter().map(|p| to2(*p)).fold(DVec2::ZERO, |s, p| s + p) / pts.len() as f64;
-    let ang = |p: &DVec3| {
-        let d = to2(*p) - g;
+    let g = pts.iter().map(|p| to2(p.0)).fold(DVec2::ZERO, |s, p| s + p) / pts.len() as f64;
+    let ang = |p: &Corner| {
+        let d = to2(p.0) - g;
         d.y.atan2(d.x) * sa
     };
     pts.sort_by(|p, q| ang(p).total_cmp(&ang(q)));
     // No area (touching along an edge or at a corner): nothing in common.
-    let area: f64 = (0..pts.len())
-        .map(|i| to2(pts[i] - pts[0]).perp_dot(to2(pts[(i + 1) % pts.len()] - pts[0])))
+    let m = pts.len();
+    let area: f64 = (0..m)
+        .map(|i| to2(pts[i].0 - pts[0].0).perp_dot(to2(pts[(i + 1) % m].0 - pts[0].0)))
         .sum();
     if area == 0.0 {
         return Vec::new();

@@ -93,15 +93,13 @@ pub(crate) struct Piece {
     pub a_edge: [Option<(u32, u32)>; 2],
 }
 
-/// The segments of every truly intersecting triangle pair (before chaining).
-pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
-    let (pieces, stats, _) = pieces_and_pairs(a, b);
-    (pieces, stats)
-}
-
-/// [`intersection_pieces`] with the box-overlapping triangle pairs.
+/// The segments of every truly intersecting triangle pair (before chaining), and the
+/// box-overlapping triangle pairs.
 #[allow(clippy::type_complexity)]
-fn pieces_and_pairs(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats, Vec<(u32, u32)>) {
+pub(crate) fn pieces_and_pairs(
+    a: &Mesh,
+    b: &Mesh,
+) -> (Vec<Piece>, IntersectStats, Vec<(u32, u32)>) {
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
     // A surface coincides with itself everywhere: a region (its boundary, found by the
