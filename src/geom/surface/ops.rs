@@ -53,6 +53,31 @@ pub fn surface_section_seeded(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
+    let plane = (plane_point, plane_normal);
+    section_seeded(s, plane, (seed_tol, chord_tol, geom_tol), true)
+}
+
+/// [`surface_section_seeded`] without the tangent-contact search: for benchmarks, which measure
+/// what the search costs.
+#[doc(hidden)]
+pub fn surface_section_without_contacts(
+    s: &Surface,
+    plane_point: DVec3,
+    plane_normal: DVec3,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let plane = (plane_point, plane_normal);
+    section_seeded(s, plane, (seed_tol, chord_tol, geom_tol), false)
+}
+
+fn section_seeded(
+    s: &Surface,
+    (plane_point, plane_normal): (DVec3, DVec3),
+    (seed_tol, chord_tol, geom_tol): (f64, f64, f64),
+    contacts: bool,
+) -> Result<Vec<Polyline3>, SurfaceError> {
     let tol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     // The mesh's section seeds the curves, refined on the true surface; the points where the
@@ -66,6 +91,9 @@ pub fn surface_section_seeded(
             .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
             .filter(|c| !c.points.is_empty())
             .collect();
+        if !contacts {
+            return Ok(curves);
+        }
         let touch = (plane_point, n);
         let tols = (seed_tol, tol);
         let contacts = super::contact::plane_contacts(&patch, &m, touch, &curves, tols, geom_tol);
@@ -236,6 +264,28 @@ pub fn surface_intersect_seeded(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), true)
+}
+
+/// [`surface_intersect_seeded`] without the tangent-contact search: for benchmarks, which
+/// measure what the search costs.
+#[doc(hidden)]
+pub fn surface_intersect_without_contacts(
+    a: &Surface,
+    b: &Surface,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), false)
+}
+
+fn intersect_seeded(
+    a: &Surface,
+    b: &Surface,
+    (seed_tol, chord_tol, geom_tol): (f64, f64, f64),
+    contacts: bool,
+) -> Result<Vec<Polyline3>, SurfaceError> {
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
@@ -254,6 +304,9 @@ pub fn surface_intersect_seeded(
         })
         .filter(|c| !c.points.is_empty())
         .collect();
+    if !contacts {
+        return Ok(curves);
+    }
     // Touching without crossing: the meshes miss each other there.
     let contacts = super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol);
     curves.extend(contacts.into_iter().map(|p| Polyline3 {
