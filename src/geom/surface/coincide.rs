@@ -181,8 +181,12 @@ fn revolve_on_sphere(r: &Revolve, s: &Sphere, tol: f64, chord_tol: f64) -> Optio
     if ax.meridian(s.center).x > tol {
         return None;
     }
-    let (ts, pts) = super::sampled::sample_curve(r.profile.as_ref(), chord_tol, 16);
     let on = |p: DVec3| (p.distance(s.center) - s.radius).abs() <= tol;
+    // A quick look before sampling the profile to the chord tolerance.
+    if !(0..=16).all(|i| on(r.profile.eval(i as f64 / 16.0))) {
+        return None;
+    }
+    let (ts, pts) = super::sampled::sample_curve(r.profile.as_ref(), chord_tol, 16);
     let mids = ts.windows(2).map(|w| r.profile.eval(0.5 * (w[0] + w[1])));
     if !pts.iter().copied().chain(mids).all(on) {
         return None;
