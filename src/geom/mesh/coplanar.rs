@@ -51,16 +51,13 @@ fn dominant(n: DVec3) -> usize {
 type Corner = (DVec3, Option<(u32, u32)>);
 
 /// The boundary of the coincident regions as directed edges, each with the facet of `a` it
-/// crosses.
+/// crosses, from the exactly coplanar triangle pairs.
 fn boundary_edges(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<(u32, Corner, Corner)> {
     let pieces: Vec<(u32, Vec<Corner>)> = pairs
         .par_iter()
         .with_min_len(256)
         .filter_map(|&(ta, tb)| {
             let (pa, pb) = (a.corners_of(ta as usize), b.corners_of(tb as usize));
-            if !coplanar(&pa, &pb) {
-                return None;
-            }
             let piece = common_piece(&pa, &pb, a.triangles()[ta as usize]);
             (piece.len() >= 3).then_some((ta, piece))
         })
@@ -87,7 +84,7 @@ fn boundary_edges(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<(u32, Corner,
     out
 }
 
-/// The boundary loops of the regions where `a` and `b` coincide, from their box-overlapping
+/// The boundary loops of the regions where `a` and `b` coincide, from their exactly coplanar
 /// triangle pairs.
 pub(crate) fn coincident_loops(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec<Polyline3> {
     let mut ids: HashMap<[u64; 3], u128> = HashMap::new();
@@ -146,12 +143,17 @@ pub(crate) fn coincident_pieces(a: &Mesh, b: &Mesh, pairs: &[(u32, u32)]) -> Vec
     out
 }
 
-/// Whether the triangles lie in one plane exactly (and are not degenerate).
-fn coplanar(pa: &[DVec3; 3], pb: &[DVec3; 3]) -> bool {
-    // A cheap float screen first: most pairs are far from coplanar.
+/// Whether triangle `ta` of `a` and `tb` of `b` lie in one plane exactly (and are not
+/// degenerate).
+pub(crate) fn coplanar_pair(a: &Mesh, ta: u32, b: &Mesh, tb: u32) -> bool {
+    let (pa, pb) = (a.corners_of(ta as usize), b.corners_of(tb as usize));
+    // A cheap float screen first (no square roots): most pairs are far from coplanar.
     let n = (pa[1] - pa[0]).cross(pa[2] - pa[0]);
-    let scale = n.length() * (pa[1] - pa[0]).length().max((pa[2] - pa[0]).length());
-    if scale == 0.0 || pb.iter().any(|q| n.dot(*q - pa[0]).abs() > 1e-9 * scale) {
+    let l2 = (pa[1] - pa[0])
+        .length_squared()
+        .max((pa[2] - pa[0]).length_squared());
+    let bound = 1e-18 * n.length_squared() * l2;
+    if bound == 0.0 || pb.iter().any(|q| n.dot(*q - pa[0]).powi(2) > bound) {
         return false;
     }
     let (a, b, c) = (c3(pa[0]), c3(pa[1]), c3(pa[2]));

@@ -93,8 +93,8 @@ pub(crate) struct Piece {
     pub a_edge: [Option<(u32, u32)>; 2],
 }
 
-/// The segments of every truly intersecting triangle pair (before chaining), and the
-/// box-overlapping triangle pairs.
+/// The segments of every truly intersecting triangle pair (before chaining), and the exactly
+/// coplanar triangle pairs.
 #[allow(clippy::type_complexity)]
 pub(crate) fn pieces_and_pairs(
     a: &Mesh,
@@ -105,7 +105,11 @@ pub(crate) fn pieces_and_pairs(
     // A surface coincides with itself everywhere: a region (its boundary, found by the
     // coincident pass), not a curve.
     if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
-        return (Vec::new(), IntersectStats::default(), pairs);
+        let flat = pairs
+            .into_iter()
+            .filter(|&(ta, tb)| super::coplanar::coplanar_pair(a, ta, b, tb))
+            .collect();
+        return (Vec::new(), IntersectStats::default(), flat);
     }
     // Which mesh the tie-break translates is chosen from the meshes' contents, not from the
     // argument order, so swapping the arguments cannot change a degenerate decision.
@@ -127,13 +131,20 @@ pub(crate) fn pieces_and_pairs(
         segs: Vec<Piece>,
         plane: usize,
         irregular: usize,
+        /// Exactly coplanar pairs (the tie-break rejects them): for the coincident pass.
+        flat: Vec<(u32, u32)>,
     }
     let acc = pairs
         .par_iter()
         .with_min_len(256)
         .fold(Acc::default, |mut acc, &(ta, tb)| {
             match pair_segment(&sa, ta, &sb, tb) {
-                PairResult::Rejected => {}
+                PairResult::Rejected => {
+                    // Checked here, while the corners are in cache.
+                    if super::coplanar::coplanar_pair(a, ta, b, tb) {
+                        acc.flat.push((ta, tb));
+                    }
+                }
                 PairResult::Miss => acc.plane += 1,
                 PairResult::Segment(s) => {
                     acc.plane += 1;
@@ -150,6 +161,7 @@ pub(crate) fn pieces_and_pairs(
             x.segs.append(&mut y.segs);
             x.plane += y.plane;
             x.irregular += y.irregular;
+            x.flat.append(&mut y.flat);
             x
         });
     let stats = IntersectStats {
@@ -161,7 +173,9 @@ pub(crate) fn pieces_and_pairs(
     let mut segs = acc.segs;
     // Deterministic order whatever the thread scheduling.
     segs.sort_unstable_by_key(|p| (p.ta, p.seg.keys));
-    (segs, stats, pairs)
+    let mut flat = acc.flat;
+    flat.sort_unstable();
+    (segs, stats, flat)
 }
 
 enum PairResult {
