@@ -76,8 +76,57 @@ fn refine(c: &mut Criterion) {
     g.bench_function("cone_cylinder_refined", |bch| {
         bch.iter(|| surface_intersect(black_box(&cone), black_box(&cyl), tol).unwrap())
     });
+    // The same without the tangent-contact search: the difference is what the search adds.
+    g.bench_function("cone_cylinder_refined_no_contacts", |bch| {
+        bch.iter(|| {
+            lispcad::geom::surface::surface_intersect_without_contacts(
+                black_box(&cone),
+                black_box(&cyl),
+                tol,
+                tol,
+                lispcad::geom::GEOMTOL,
+            )
+            .unwrap()
+        })
+    });
     g.finish();
 }
 
-criterion_group!(benches, bench, refine);
+/// A section through the mesh (a torus cut by a plane beside its axis, which no closed form
+/// covers): with and without the search for the points where the plane touches.
+fn section_contacts(c: &mut Criterion) {
+    use lispcad::geom::curve::Curve;
+    use lispcad::geom::surface::{
+        surface_section_seeded, surface_section_without_contacts, Surface,
+    };
+    let tube = Curve::circle(DVec3::new(3.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap();
+    let torus = Surface::revolve(
+        std::sync::Arc::new(tube),
+        DVec3::ZERO,
+        DVec3::Z,
+        std::f64::consts::TAU,
+    )
+    .unwrap();
+    let (p, n) = (DVec3::new(3.5, 0.0, 0.0), DVec3::X);
+    let (seed, tol, gtol) = (1e-3, 1e-3, lispcad::geom::GEOMTOL);
+    let points: usize = surface_section_seeded(&torus, p, n, seed, tol, gtol)
+        .unwrap()
+        .iter()
+        .map(|c| c.points.len())
+        .sum();
+    eprintln!("section: torus at x = 3.5, {points} points at CHORDTOL {tol}");
+    let mut g = c.benchmark_group("torus_section");
+    g.sample_size(10);
+    g.bench_function("with_contacts", |bch| {
+        bch.iter(|| surface_section_seeded(black_box(&torus), p, n, seed, tol, gtol).unwrap())
+    });
+    g.bench_function("without_contacts", |bch| {
+        bch.iter(|| {
+            surface_section_without_contacts(black_box(&torus), p, n, seed, tol, gtol).unwrap()
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, refine, section_contacts);
 criterion_main!(benches);

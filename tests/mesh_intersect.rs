@@ -82,12 +82,20 @@ fn crossing_planes_give_a_line() {
 }
 
 #[test]
-fn coplanar_and_disjoint_meshes_give_no_curve() {
+fn coplanar_overlap_is_its_boundary_and_disjoint_meshes_give_no_curve() {
     let a = grid(3, 1.0, 0.0);
     let b = grid(5, 0.7, 0.0);
     let r = intersect_meshes(&a, &b);
-    // Overlapping coplanar regions are not a curve: the tie-break separates them.
-    assert!(r.is_empty(), "{r:?}");
+    // Overlapping coplanar regions are a region, not a curve: its boundary loop, the square
+    // |x|, |y| <= 0.7 (its sides split where the facets of a cross them).
+    assert_eq!(r.len(), 1, "{r:?}");
+    assert!(r[0].closed);
+    assert!((r[0].length() - 5.6).abs() <= 1e-12, "{}", r[0].length());
+    assert!(r[0]
+        .points
+        .iter()
+        .all(|p| p.z == 0.0
+            && ((p.x.abs() - 0.7).abs() <= 1e-15 || (p.y.abs() - 0.7).abs() <= 1e-15)));
     let c = grid(3, 1.0, 2.0);
     assert!(intersect_meshes(&a, &c).is_empty());
     let empty = Mesh::new(vec![], vec![]).unwrap();

@@ -16,9 +16,10 @@
 //!    neighbouring pairs share it bit for bit and chaining is exact (paper 001 step 4). Touching
 //!    through vertices or along edges and coplanar facets fall under the tie-break (step 5).
 //!
-//! Known limit: where the meshes coincide with collinear shared edges (a region of overlap, not
-//! a curve) the translation tie-break cannot separate parallel edges and the result there may
-//! be fragments; a mesh against an identical copy gives no curve.
+//! Where the meshes coincide (exactly coplanar facets overlapping: a region, not a curve) the
+//! translation tie-break pushes them apart; the region's boundary loops are added by
+//! [`super::coplanar`]. Known limit: where coincident facets have collinear shared edges the
+//! tie-break cannot separate parallel edges and stray fragments may come with the loops.
 //!
 //! The output is canonicalised by coordinates ([`chain_segments`]), so it does not depend on
 //! triangle or vertex order or on which mesh comes first.
@@ -73,11 +74,14 @@ impl Side<'_> {
 
 /// Like [`intersect_meshes`], also returning the phase counts.
 pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, IntersectStats) {
-    let (pieces, stats) = intersection_pieces(a, b);
+    let (pieces, stats, pairs) = pieces_and_pairs(a, b);
     let segs = pieces.into_iter().map(|p| p.seg).collect();
     // Crossings through a vertex or an edge/edge touch are found from several (edge, triangle)
     // keys with the same exact point; they are one node of the curve.
-    (chain_segments(merge_keys_by_point(segs)), stats)
+    let mut out = chain_segments(merge_keys_by_point(segs));
+    // Where the meshes coincide: the region's boundary loops.
+    out.extend(super::coplanar::coincident_loops(a, b, &pairs));
+    (out, stats)
 }
 
 /// One intersecting triangle pair's segment, with where its ends lie on `a`.
@@ -89,14 +93,24 @@ pub(crate) struct Piece {
     pub a_edge: [Option<(u32, u32)>; 2],
 }
 
-/// The segments of every truly intersecting triangle pair (before chaining).
-pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectStats) {
-    // A surface coincides with itself everywhere: a region, not a curve.
-    if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
-        return (Vec::new(), IntersectStats::default());
-    }
+/// The segments of every truly intersecting triangle pair (before chaining), and the exactly
+/// coplanar triangle pairs.
+#[allow(clippy::type_complexity)]
+pub(crate) fn pieces_and_pairs(
+    a: &Mesh,
+    b: &Mesh,
+) -> (Vec<Piece>, IntersectStats, Vec<(u32, u32)>) {
     let (ba, bb) = rayon::join(|| a.bvh(), || b.bvh());
     let pairs = ba.overlapping_pairs(bb);
+    // A surface coincides with itself everywhere: a region (its boundary, found by the
+    // coincident pass), not a curve.
+    if a.vertices() == b.vertices() && a.triangles() == b.triangles() {
+        let flat = pairs
+            .into_iter()
+            .filter(|&(ta, tb)| super::coplanar::coplanar_pair(a, ta, b, tb))
+            .collect();
+        return (Vec::new(), IntersectStats::default(), flat);
+    }
     // Which mesh the tie-break translates is chosen from the meshes' contents, not from the
     // argument order, so swapping the arguments cannot change a degenerate decision.
     let a_moves = moving_first(a, b);
@@ -117,13 +131,20 @@ pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectS
         segs: Vec<Piece>,
         plane: usize,
         irregular: usize,
+        /// Exactly coplanar pairs (the tie-break rejects them): for the coincident pass.
+        flat: Vec<(u32, u32)>,
     }
     let acc = pairs
         .par_iter()
         .with_min_len(256)
         .fold(Acc::default, |mut acc, &(ta, tb)| {
             match pair_segment(&sa, ta, &sb, tb) {
-                PairResult::Rejected => {}
+                PairResult::Rejected => {
+                    // Checked here, while the corners are in cache.
+                    if super::coplanar::coplanar_pair(a, ta, b, tb) {
+                        acc.flat.push((ta, tb));
+                    }
+                }
                 PairResult::Miss => acc.plane += 1,
                 PairResult::Segment(s) => {
                     acc.plane += 1;
@@ -140,6 +161,7 @@ pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectS
             x.segs.append(&mut y.segs);
             x.plane += y.plane;
             x.irregular += y.irregular;
+            x.flat.append(&mut y.flat);
             x
         });
     let stats = IntersectStats {
@@ -151,7 +173,9 @@ pub(crate) fn intersection_pieces(a: &Mesh, b: &Mesh) -> (Vec<Piece>, IntersectS
     let mut segs = acc.segs;
     // Deterministic order whatever the thread scheduling.
     segs.sort_unstable_by_key(|p| (p.ta, p.seg.keys));
-    (segs, stats)
+    let mut flat = acc.flat;
+    flat.sort_unstable();
+    (segs, stats, flat)
 }
 
 enum PairResult {

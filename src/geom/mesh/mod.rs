@@ -9,6 +9,7 @@
 mod adjacency;
 mod bvh;
 mod chain;
+mod coplanar;
 mod error;
 mod extend;
 mod intersect;

@@ -19,6 +19,9 @@ pub(crate) fn analytic_intersect(
     tol: f64,
     chord_tol: f64,
 ) -> Option<Vec<Polyline3>> {
+    if let Some(loops) = super::coincide::coincident(a, b, tol, chord_tol) {
+        return Some(loops);
+    }
     match (a, b) {
         (Surface::Sphere(s1), Surface::Sphere(s2)) => Some(sphere_sphere(s1, s2, tol, chord_tol)),
         (Surface::Sphere(s), Surface::Plane(p)) | (Surface::Plane(p), Surface::Sphere(s)) => {
@@ -37,6 +40,19 @@ pub(crate) fn analytic_intersect(
         }
         (Surface::Sphere(s), Surface::Cylinder(c)) | (Surface::Cylinder(c), Surface::Sphere(s)) => {
             super::quadrics::sphere_cylinder(s, c, tol, chord_tol)
+        }
+        (Surface::Revolve(r), Surface::Plane(p)) | (Surface::Plane(p), Surface::Revolve(r)) => {
+            match super::cone::Cone::of(r) {
+                Some(k) => Some(super::cone::cone_plane(
+                    &k,
+                    p.boundary[0],
+                    p.normal,
+                    Some(p),
+                    tol,
+                    chord_tol,
+                )),
+                None => super::coaxial::coaxial_intersect(a, b, tol, chord_tol),
+            }
         }
         _ => super::coaxial::coaxial_intersect(a, b, tol, chord_tol),
     }
@@ -166,7 +182,7 @@ fn sphere_plane(s: &Sphere, p: &PlaneRegion, tol: f64, chord_tol: f64) -> Vec<Po
 
 /// The parameter intervals of the line `o + t·d` inside a planar region (the line lies in its
 /// plane).
-fn line_in_region(o: DVec3, d: DVec3, p: &PlaneRegion, tol: f64) -> Vec<(f64, f64)> {
+pub(crate) fn line_in_region(o: DVec3, d: DVec3, p: &PlaneRegion, tol: f64) -> Vec<(f64, f64)> {
     let (x, y) = arbitrary_axis(p.normal);
     let to2 = |q: DVec3| DVec2::new(q.dot(x), q.dot(y));
     let (o2, d2) = (to2(o), DVec2::new(d.dot(x), d.dot(y)));

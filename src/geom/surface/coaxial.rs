@@ -16,41 +16,41 @@ use glam::{DVec2, DVec3};
 use std::f64::consts::TAU;
 
 /// The axis line and its frame.
-struct Axis {
-    o: DVec3,
-    a: DVec3,
+pub(super) struct Axis {
+    pub(super) o: DVec3,
+    pub(super) a: DVec3,
     x: DVec3,
     y: DVec3,
 }
 
 impl Axis {
-    fn new(o: DVec3, a: DVec3) -> Axis {
+    pub(super) fn new(o: DVec3, a: DVec3) -> Axis {
         let (x, y) = arbitrary_axis(a);
         Axis { o, a, x, y }
     }
 
     /// (ρ, z) of a point.
-    fn meridian(&self, p: DVec3) -> DVec2 {
+    pub(super) fn meridian(&self, p: DVec3) -> DVec2 {
         let d = p - self.o;
         let z = d.dot(self.a);
         DVec2::new((d - self.a * z).length(), z)
     }
 
     /// The angle of a point about the axis, in [0, 2π).
-    fn angle(&self, p: DVec3) -> f64 {
+    pub(super) fn angle(&self, p: DVec3) -> f64 {
         let d = p - self.o;
         d.dot(self.y).atan2(d.dot(self.x)).rem_euclid(TAU)
     }
 
     /// Whether the line through `p` along `dir` is this axis line.
-    fn same_line(&self, p: DVec3, dir: DVec3, tol: f64) -> bool {
+    pub(super) fn same_line(&self, p: DVec3, dir: DVec3, tol: f64) -> bool {
         let d = p - self.o;
         self.a.cross(dir).length() <= 1e-12 && (d - self.a * d.dot(self.a)).length() <= tol
     }
 }
 
 /// The angular span a surface covers about the axis at a meridian crossing: (start, sweep).
-type Span = (f64, f64);
+pub(super) type Span = (f64, f64);
 
 /// What the other surface looks like in the meridian plane.
 enum Meridian<'a> {
@@ -149,7 +149,7 @@ pub(crate) fn revolve_plane_perpendicular(
 
 /// The span of a revolution at the profile point `q`: from q's own angle, `angle` about the
 /// revolution's axis (reversed when that axis points against `ax`).
-fn span_of(ax: &Axis, r: &Revolve, q: DVec3) -> Span {
+pub(super) fn span_of(ax: &Axis, r: &Revolve, q: DVec3) -> Span {
     let t = ax.angle(q);
     if r.angle >= TAU {
         (0.0, TAU)
@@ -161,7 +161,7 @@ fn span_of(ax: &Axis, r: &Revolve, q: DVec3) -> Span {
 }
 
 /// The common part of two angular spans (up to two pieces).
-fn overlap(a: Span, b: Span) -> Vec<Span> {
+pub(super) fn overlap(a: Span, b: Span) -> Vec<Span> {
     if a.1 >= TAU {
         return vec![b];
     }
@@ -180,7 +180,14 @@ fn overlap(a: Span, b: Span) -> Vec<Span> {
 }
 
 /// The circle (or arc, or point on the axis) through the meridian point `m`.
-fn circle(ax: &Axis, m: DVec2, start: f64, sweep: f64, tol: f64, chord_tol: f64) -> Polyline3 {
+pub(super) fn circle(
+    ax: &Axis,
+    m: DVec2,
+    start: f64,
+    sweep: f64,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
     let c = ax.o + ax.a * m.y;
     if m.x <= tol {
         return Polyline3 {

@@ -6,6 +6,11 @@
 //! of the distance from `S_a(u, v)` to surface b on the true surfaces (Nelder–Mead in (u, v);
 //! the distance is smooth and quadratic about a contact), and a minimum within the tolerance is
 //! a contact point.
+//!
+//! A plane section is searched the same way, on `|n·(S(u, v) − p)|`; the minimiser's point is
+//! then levelled by Newton to where the surface is parallel to the plane, which tells a contact
+//! (level within the tolerance) from a loop smaller than the seeding mesh (level beyond the plane),
+//! traced from the extremum.
 
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
@@ -23,7 +28,7 @@ pub(crate) fn tangent_contacts(
     seed_tol: f64,
     tol: f64,
 ) -> Vec<DVec3> {
-    let (va, ta) = (ma.vertices(), ma.triangles());
+    let va = ma.vertices();
     if va.is_empty() || mb.is_empty() {
         return Vec::new();
     }
@@ -46,46 +51,178 @@ pub(crate) fn tangent_contacts(
             best
         })
         .collect();
-    // Each vertex's neighbours and the longest edge at it.
-    let mut nbrs: Vec<Vec<u32>> = vec![Vec::new(); va.len()];
-    let mut reach = vec![0.0f64; va.len()];
-    for t in ta {
-        for k in 0..3 {
-            let (i, j) = (t[k], t[(k + 1) % 3]);
-            nbrs[i as usize].push(j);
-            nbrs[j as usize].push(i);
-            let l = va[i as usize].distance(va[j as usize]);
-            reach[i as usize] = reach[i as usize].max(l);
-            reach[j as usize] = reach[j as usize].max(l);
-        }
-    }
     let mut out: Vec<DVec3> = Vec::new();
-    for i in 0..va.len() {
-        let d = dist[i];
-        if d > gap || nbrs[i].is_empty() {
-            continue;
-        }
-        let lowest = nbrs[i].iter().all(|&j| {
-            let dj = dist[j as usize];
-            d < dj || (d == dj && i < j as usize)
-        });
-        if !lowest {
-            continue;
-        }
-        let near_curve = curves
-            .iter()
-            .flat_map(|c| c.points.iter())
-            .any(|q| q.distance(va[i]) <= 4.0 * reach[i]);
-        if near_curve {
-            continue;
-        }
+    for (i, reach) in low_vertices(ma, &dist, gap, curves) {
         if let Some(p) = touch(a, b, va[i], tol) {
-            if !out.iter().any(|q| q.distance(p) <= 4.0 * reach[i]) {
+            if !out.iter().any(|q| q.distance(p) <= 4.0 * reach) {
                 out.push(p);
             }
         }
     }
     out
+}
+
+/// The points where the plane through `p0` with unit normal `n` touches `a` (meshed as `ma`
+/// within `seed_tol`) without crossing it, away from the section `curves`: zero minima of
+/// `|n·(S(u, v) − p0)|`, each on the true surface and within `tol` of the plane.
+pub(crate) fn plane_contacts(
+    a: &Patch,
+    ma: &Mesh,
+    (p0, n): (DVec3, DVec3),
+    curves: &[Polyline3],
+    (seed_tol, chord_tol): (f64, f64),
+    tol: f64,
+) -> Vec<Polyline3> {
+    let gap = 8.0 * seed_tol;
+    let dist: Vec<f64> = ma.vertices().iter().map(|v| n.dot(*v - p0).abs()).collect();
+    let h = |uv: DVec2| {
+        let mut uv = uv;
+        a.normalise(&mut uv);
+        n.dot(a.eval(uv) - p0)
+    };
+    let mut out: Vec<Polyline3> = Vec::new();
+    let mut seen: Vec<DVec3> = Vec::new();
+    for (i, reach) in low_vertices(ma, &dist, gap, curves) {
+        let mut uv = nelder_mead(&|uv| h(uv).abs(), a.project(ma.vertices()[i], None), 1e-3);
+        a.normalise(&mut uv);
+        let top = level(a, uv, n);
+        let p = a.eval(top);
+        if seen.iter().any(|q| q.distance(p) <= 4.0 * reach) {
+            continue;
+        }
+        if h(top).abs() <= tol {
+            seen.push(p);
+            out.push(Polyline3 {
+                points: vec![p],
+                closed: false,
+            });
+        } else if h(uv).abs() <= tol {
+            // The surface reaches through the plane in a loop smaller than the seeding mesh:
+            // rays in (u, v) from the extremum to the sign change seed it.
+            if let Some(c) = small_loop(a, top, uv.distance(top), &h) {
+                let c = super::refine::refine_section_curve(a, &c, p0, n, tol, chord_tol);
+                if c.points.len() > 2 {
+                    seen.push(p);
+                    out.push(c);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// A closed seed polyline about the extremum `top` of `h`: on 16 rays in (u, v), the point where
+/// h changes sign, searched out to 4·r (r: the distance to a known zero) and bisected.
+fn small_loop(a: &Patch, top: DVec2, r: f64, h: &dyn Fn(DVec2) -> f64) -> Option<Polyline3> {
+    let sign = h(top).signum();
+    let mut points = Vec::with_capacity(16);
+    for k in 0..16 {
+        let ang = std::f64::consts::TAU * k as f64 / 16.0;
+        let dir = DVec2::new(ang.cos(), ang.sin());
+        let step = 0.25 * r;
+        let mut lo = 0.0;
+        let hi = (1..=16).map(|j| j as f64 * step).find(|&t| {
+            let inside = h(top + dir * t).signum() == sign;
+            if inside {
+                lo = t;
+            }
+            !inside
+        })?;
+        let (mut lo, mut hi) = (lo, hi);
+        for _ in 0..60 {
+            let m = 0.5 * (lo + hi);
+            if h(top + dir * m).signum() == sign {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        let mut uv = top + dir * (0.5 * (lo + hi));
+        a.normalise(&mut uv);
+        points.push(a.eval(uv));
+    }
+    Some(Polyline3 {
+        points,
+        closed: true,
+    })
+}
+
+/// Newton on `S_u·n = S_v·n = 0` from the minimiser's `uv`: the minimum of `|n·S|` is flat,
+/// so the minimiser leaves the point about √tol off along the surface; the contact is where the
+/// surface is parallel to the plane (the minimiser's point when Newton wanders off or does not
+/// settle).
+fn level(a: &Patch, uv0: DVec2, n: DVec3) -> DVec2 {
+    const H: f64 = 1e-5;
+    // Iterates unwrapped (a step across a periodic seam is a small step), evaluates wrapped.
+    let g = |uv: DVec2| {
+        let mut uv = uv;
+        a.normalise(&mut uv);
+        let (su, sv) = a.derivs(uv);
+        DVec2::new(su.dot(n), sv.dot(n))
+    };
+    let mut uv = uv0;
+    for _ in 0..20 {
+        let g0 = g(uv);
+        let (gu, gv) = (
+            (g(uv + DVec2::X * H) - g(uv - DVec2::X * H)) / (2.0 * H),
+            (g(uv + DVec2::Y * H) - g(uv - DVec2::Y * H)) / (2.0 * H),
+        );
+        let det = gu.x * gv.y - gv.x * gu.y;
+        if det.abs() <= 1e-300 || !det.is_finite() {
+            return uv0;
+        }
+        let step = DVec2::new(
+            (g0.x * gv.y - gv.x * g0.y) / det,
+            (gu.x * g0.y - g0.x * gu.y) / det,
+        );
+        uv -= step;
+        if uv.distance(uv0) > 0.05 {
+            return uv0;
+        }
+        // The derivatives are differences: steps settle at their noise, about 1e-10.
+        if step.length() <= 1e-10 {
+            a.normalise(&mut uv);
+            return uv;
+        }
+    }
+    uv0
+}
+
+/// The vertices of `m` whose `dist` is within `gap` and lowest among their neighbours (ties to
+/// the lower index), away from every point of `curves`: with the longest edge at each.
+fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(usize, f64)> {
+    let (va, ta) = (m.vertices(), m.triangles());
+    // One pass over the edges, with no neighbour lists: a vertex stays a candidate while every
+    // neighbour is farther (a section of a large mesh has few vertices within the gap).
+    let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
+    let mut has_edge = vec![false; va.len()];
+    let mut reach = vec![0.0f64; va.len()];
+    for t in ta {
+        for k in 0..3 {
+            let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            if !(dist[i] <= gap || dist[j] <= gap) {
+                continue;
+            }
+            let l = va[i].distance(va[j]);
+            for (x, y) in [(i, j), (j, i)] {
+                has_edge[x] = true;
+                reach[x] = reach[x].max(l);
+                if !(dist[x] < dist[y] || (dist[x] == dist[y] && x < y)) {
+                    low[x] = false;
+                }
+            }
+        }
+    }
+    (0..va.len())
+        .filter(|&i| low[i] && has_edge[i])
+        .filter(|&i| {
+            !curves
+                .iter()
+                .flat_map(|c| c.points.iter())
+                .any(|q| q.distance(va[i]) <= 4.0 * reach[i])
+        })
+        .map(|i| (i, reach[i]))
+        .collect()
 }
 
 /// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the contact

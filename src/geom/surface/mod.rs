@@ -8,6 +8,8 @@
 
 mod analytic;
 mod coaxial;
+mod coincide;
+mod cone;
 mod contact;
 mod error;
 mod hits;
@@ -34,6 +36,8 @@ pub use ops::{
     surface_intersect_seeded, surface_intersect_tol, surface_section, surface_section_seeded,
     surface_section_tol,
 };
+#[doc(hidden)]
+pub use ops::{surface_intersect_without_contacts, surface_section_without_contacts};
 pub use planar::triangulate_polygon;
 pub use sampled::{sample_curve, SampledCurve};
 pub use sweep::{rotation_minimizing_frames, Frame};

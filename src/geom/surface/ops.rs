@@ -53,16 +53,52 @@ pub fn surface_section_seeded(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
+    let plane = (plane_point, plane_normal);
+    section_seeded(s, plane, (seed_tol, chord_tol, geom_tol), true)
+}
+
+/// [`surface_section_seeded`] without the tangent-contact search: for benchmarks, which measure
+/// what the search costs.
+#[doc(hidden)]
+pub fn surface_section_without_contacts(
+    s: &Surface,
+    plane_point: DVec3,
+    plane_normal: DVec3,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    let plane = (plane_point, plane_normal);
+    section_seeded(s, plane, (seed_tol, chord_tol, geom_tol), false)
+}
+
+fn section_seeded(
+    s: &Surface,
+    (plane_point, plane_normal): (DVec3, DVec3),
+    (seed_tol, chord_tol, geom_tol): (f64, f64, f64),
+    contacts: bool,
+) -> Result<Vec<Polyline3>, SurfaceError> {
     let tol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
-    let refined = |seeds: Vec<Polyline3>| -> Vec<Polyline3> {
+    // The mesh's section seeds the curves, refined on the true surface; the points where the
+    // plane touches without crossing (which the section misses) are searched for beside them.
+    let refined = |m: Mesh| -> Result<Vec<Polyline3>, SurfaceError> {
+        let seeds = section(&m, plane_point, plane_normal)?;
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
-        seeds
+        let mut curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
             .filter(|c| !c.points.is_empty())
-            .collect()
+            .collect();
+        if !contacts {
+            return Ok(curves);
+        }
+        let touch = (plane_point, n);
+        let tols = (seed_tol, tol);
+        let contacts = super::contact::plane_contacts(&patch, &m, touch, &curves, tols, geom_tol);
+        curves.extend(contacts);
+        Ok(curves)
     };
     match s {
         Surface::Cylinder(c) => {
@@ -84,12 +120,14 @@ pub fn surface_section_seeded(
             // Sphere ∩ plane: the circle about the centre's projection, radius √(r² − d²).
             let d = n.dot(sp.center - plane_point);
             let rad2 = sp.radius * sp.radius - d * d;
-            if rad2 < 0.0 {
+            let c = sp.center - n * d;
+            // Touching within GEOMTOL: the point of contact, on the plane.
+            let touching = (d.abs() - sp.radius).abs() <= geom_tol;
+            if rad2 < 0.0 && !touching {
                 return Ok(Vec::new());
             }
-            let c = sp.center - n * d;
-            let rad = rad2.sqrt();
-            if rad <= tol {
+            let rad = rad2.max(0.0).sqrt();
+            if rad <= tol || touching {
                 return Ok(vec![Polyline3 {
                     points: vec![c],
                     closed: false,
@@ -109,18 +147,22 @@ pub fn surface_section_seeded(
         }
         Surface::Revolve(r) => match revolve_section(r, plane_point, plane_normal, tol, geom_tol) {
             Some(curves) => Ok(curves),
-            None => Ok(refined(section(
-                &mesh_surface(s, seed_tol)?,
-                plane_point,
-                plane_normal,
-            )?)),
+            None => match super::cone::Cone::of(r).filter(|_| {
+                plane_point.is_finite() && plane_normal.is_finite() && plane_normal.length() > 0.0
+            }) {
+                Some(k) => Ok(super::cone::cone_plane(
+                    &k,
+                    plane_point,
+                    plane_normal.normalize(),
+                    None,
+                    geom_tol,
+                    tol,
+                )),
+                None => refined(mesh_surface(s, seed_tol)?),
+            },
         },
         Surface::Plane(_) => Ok(section(&mesh_surface(s, tol)?, plane_point, plane_normal)?),
-        _ => Ok(refined(section(
-            &mesh_surface(s, seed_tol)?,
-            plane_point,
-            plane_normal,
-        )?)),
+        _ => refined(mesh_surface(s, seed_tol)?),
     }
 }
 
@@ -222,6 +264,28 @@ pub fn surface_intersect_seeded(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), true)
+}
+
+/// [`surface_intersect_seeded`] without the tangent-contact search: for benchmarks, which
+/// measure what the search costs.
+#[doc(hidden)]
+pub fn surface_intersect_without_contacts(
+    a: &Surface,
+    b: &Surface,
+    seed_tol: f64,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), false)
+}
+
+fn intersect_seeded(
+    a: &Surface,
+    b: &Surface,
+    (seed_tol, chord_tol, geom_tol): (f64, f64, f64),
+    contacts: bool,
+) -> Result<Vec<Polyline3>, SurfaceError> {
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
@@ -240,6 +304,9 @@ pub fn surface_intersect_seeded(
         })
         .filter(|c| !c.points.is_empty())
         .collect();
+    if !contacts {
+        return Ok(curves);
+    }
     // Touching without crossing: the meshes miss each other there.
     let contacts = super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol);
     curves.extend(contacts.into_iter().map(|p| Polyline3 {

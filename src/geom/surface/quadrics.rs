@@ -14,7 +14,7 @@ use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
 /// Roots θ of `a cos θ + b sin θ + c = 0` in [0, 2π) (one for a double root within `eps`).
-fn trig_roots(a: f64, b: f64, c: f64, eps: f64) -> Vec<f64> {
+pub(crate) fn trig_roots(a: f64, b: f64, c: f64, eps: f64) -> Vec<f64> {
     let r = a.hypot(b);
     if r == 0.0 {
         return Vec::new();

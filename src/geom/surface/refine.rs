@@ -61,7 +61,7 @@ impl<'a> Patch<'a> {
     }
 
     /// Partial derivatives by central differences (one-sided at a domain edge).
-    fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
+    pub(crate) fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
         const H: f64 = 1e-6;
         let d = |k: usize| {
             let (mut a, mut b) = (uv, uv);

@@ -11,6 +11,10 @@
 //!    never across a cut edge (paper 001: walk adjacent facets of the same class, then the
 //!    untouched facets). The facets reached form the kept part; the rest the other part.
 //!
+//! Where the cutter coincides with the surface over a region (exactly coplanar overlapping
+//! facets), the cut runs along that region's boundary ([`super::coplanar`]), so the region
+//! comes off whole; boundary stretches lying along an edge of the surface are not cut.
+//!
 //! Cut points are vertices shared by the facets on both sides, so the two parts share the
 //! discrete cut edge exactly (same coordinates bit for bit).
 
@@ -18,7 +22,7 @@ mod nodes;
 mod split;
 
 use super::adjacency::edge_key;
-use super::intersect::{intersection_pieces, merge_keys_by_point};
+use super::intersect::{merge_keys_by_point, pieces_and_pairs};
 use super::{Mesh, MeshError};
 use glam::DVec3;
 use nodes::CutNodes;
@@ -53,7 +57,9 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
     if mesh.is_empty() {
         return Err(MeshError::Invalid("cannot trim an empty mesh".into()));
     }
-    let (mut pieces, _) = intersection_pieces(mesh, cutter);
+    let (mut pieces, _, pairs) = pieces_and_pairs(mesh, cutter);
+    // Where the cutter coincides with the surface, the cut runs along the region's boundary.
+    pieces.extend(super::coplanar::coincident_pieces(mesh, cutter, &pairs));
     {
         let segs: Vec<_> = pieces.iter().map(|p| p.seg).collect();
         let merged = merge_keys_by_point(segs);
