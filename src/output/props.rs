@@ -59,11 +59,32 @@ fn groups(p: &EntityProps) -> (Vec<(i32, String)>, Option<String>) {
     (head, p.thickness.map(real))
 }
 
+/// Whether a written property group holds what its absence means.
+fn is_default(code: i32, v: &str) -> bool {
+    match code {
+        6 => v.eq_ignore_ascii_case("ByLayer"),
+        48 => v.trim().parse::<f64>() == Ok(1.0),
+        370 => v.trim() == "-1",
+        39 => v.trim().parse::<f64>() == Ok(0.0),
+        _ => false,
+    }
+}
+
 /// The record's groups with `p` set in its first record (existing groups replaced).
 pub fn patch_tags(t: &TagList, p: &EntityProps, thickness_ok: bool) -> TagList {
     let (head, thick) = groups(p);
-    let thick = thick.filter(|_| thickness_ok);
     let first = t.first_record_end();
+    // A property at its default is written only over a group the record had: adding
+    // (370 . -1) or (48 . 1.0) would put groups an R12 file cannot hold into one that never
+    // asked for them.
+    let had = |code: i32| t.iter().take(first).any(|(c, _)| c == code);
+    let head: Vec<(i32, String)> = head
+        .into_iter()
+        .filter(|(c, v)| had(*c) || !is_default(*c, v))
+        .collect();
+    let thick = thick
+        .filter(|_| thickness_ok)
+        .filter(|v| had(39) || !is_default(39, v));
     let replaced = |c: i32| head.iter().any(|(h, _)| *h == c) || (c == 39 && thick.is_some());
     let mut out = TagList::new();
     let mut markers = 0;
