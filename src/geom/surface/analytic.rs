@@ -118,28 +118,7 @@ fn circle_pieces(
     let inside = |t: f64| {
         region.is_none_or(|p| point_in_polygon(arc.point(t), &p.boundary, p.normal, tol).is_in())
     };
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup_by(|a, b| (*a - *b).abs() <= 1e-15);
-    if cuts.is_empty() {
-        return if inside(0.0) {
-            vec![sample(0.0, TAU, true)]
-        } else {
-            Vec::new()
-        };
-    }
-    let mut out = Vec::new();
-    for i in 0..cuts.len() {
-        let t0 = cuts[i];
-        let t1 = if i + 1 < cuts.len() {
-            cuts[i + 1]
-        } else {
-            cuts[0] + TAU
-        };
-        if t1 - t0 > 0.0 && inside(0.5 * (t0 + t1)) {
-            out.push(sample(t0, t1, false));
-        }
-    }
-    out
+    super::quadrics::split_turn(cuts, inside, sample)
 }
 
 fn sphere_sphere(a: &Sphere, b: &Sphere, tol: f64, chord_tol: f64) -> Vec<Polyline3> {

@@ -238,24 +238,7 @@ fn adaptive_pieces(
     for c in cuts.iter_mut() {
         *c = c.rem_euclid(TAU);
     }
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup_by(|a, b| (*a - *b).abs() <= 1e-15);
-    if cuts.is_empty() {
-        return if inside(0.0) {
-            vec![sample(0.0, TAU, true)]
-        } else {
-            Vec::new()
-        };
-    }
-    let mut out = Vec::new();
-    for i in 0..cuts.len() {
-        let a = cuts[i];
-        let b = cuts.get(i + 1).copied().unwrap_or(cuts[0] + TAU);
-        if b > a && inside((0.5 * (a + b)).rem_euclid(TAU)) {
-            out.push(sample(a, b, false));
-        }
-    }
-    out
+    super::quadrics::split_turn(cuts, |t: f64| inside(t.rem_euclid(TAU)), sample)
 }
 
 /// Appends the points after `a` up to `b`, bisecting where the chord strays from the curve.

@@ -34,7 +34,7 @@ pub(crate) fn trig_roots(a: f64, b: f64, c: f64, eps: f64) -> Vec<f64> {
 /// A closed curve `pt(θ)`, θ in [0, 2π), split at `cuts` into the pieces where `inside` holds at
 /// their middle; each sampled at most `step` apart in θ. No cut: the whole loop or nothing.
 fn pieces(
-    mut cuts: Vec<f64>,
+    cuts: Vec<f64>,
     step: f64,
     pt: impl Fn(f64) -> DVec3,
     inside: impl Fn(f64) -> bool,
@@ -49,6 +49,18 @@ fn pieces(
             closed,
         }
     };
+    split_turn(cuts, inside, sample)
+}
+
+/// A full turn θ in [0, 2π) split at the angles `cuts` into the pieces where `inside` holds at
+/// their middle, each made by `sample(from, to, closed)`; with no cut, the whole closed turn or
+/// nothing. The one rule for every circle-like curve clipped to a region (quadrics, analytic
+/// circles, conics), so they cannot differ on a cut through a corner.
+pub(super) fn split_turn<T>(
+    mut cuts: Vec<f64>,
+    inside: impl Fn(f64) -> bool,
+    sample: impl Fn(f64, f64, bool) -> T,
+) -> Vec<T> {
     cuts.sort_by(f64::total_cmp);
     cuts.dedup_by(|a, b| (*a - *b).abs() <= 1e-15);
     if cuts.is_empty() {
