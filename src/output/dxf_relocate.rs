@@ -117,11 +117,7 @@ mod tests {
     use std::collections::HashMap;
 
     fn tags(groups: &[(i32, &str)]) -> TagList {
-        let mut t = TagList::new();
-        for (c, v) in groups {
-            t.push(*c, v);
-        }
-        t
+        TagList::of(groups)
     }
 
     #[test]

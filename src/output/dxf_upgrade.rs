@@ -166,11 +166,7 @@ mod tests {
     use super::*;
 
     fn tags(groups: &[(i32, &str)]) -> TagList {
-        let mut t = TagList::new();
-        for (c, v) in groups {
-            t.push(*c, v);
-        }
-        t
+        TagList::of(groups)
     }
 
     #[test]

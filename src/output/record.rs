@@ -13,6 +13,16 @@ pub struct TagList {
 }
 
 impl TagList {
+    /// A list of the given groups (tests build records this way).
+    #[cfg(test)]
+    pub fn of(groups: &[(i32, &str)]) -> TagList {
+        let mut t = TagList::new();
+        for (c, v) in groups {
+            t.push(*c, v);
+        }
+        t
+    }
+
     pub fn new() -> TagList {
         TagList::default()
     }
