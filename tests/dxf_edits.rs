@@ -43,6 +43,42 @@ const EDIT: &str = r#"
 (entmake '((0 . "TEXT") (8 . "ZZ") (10 0.0 0.0 0.0) (40 . 1.0) (1 . "new") (7 . "Mono")))
 "#;
 
+/// Runs `tests/validate/dxf_edits.py MODE ARGS...` and gives its output.
+fn edits_py(args: &[&std::path::Path], mode: &str) -> Vec<u8> {
+    let o = Command::new(python())
+        .arg(manifest().join("tests/validate/dxf_edits.py"))
+        .arg(mode)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    o.stdout
+}
+
+/// `(dxf-import "o.dxf")` into `t.dxf` opened, saved as `result`.
+fn import_o_into_t(d: &std::path::Path, result: &std::path::Path) {
+    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
+    let o = lispcad(
+        d,
+        &[
+            "run",
+            "import.lsp",
+            "--open",
+            "t.dxf",
+            "-o",
+            result.to_str().unwrap(),
+        ],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+/// A check's verdict: no differences, and ezdxf's audit found no error and fixed nothing.
+fn assert_clean(r: &serde_json::Value, what: &str) {
+    assert!(strs(&r["diffs"]).is_empty(), "{what}: {r:#}");
+    assert!(strs(&r["audit_errors"]).is_empty(), "{what}: {r:#}");
+    assert!(strs(&r["audit_fixes"]).is_empty(), "{what}: {r:#}");
+}
+
 fn edits(dir: &std::path::Path, version: &str) -> serde_json::Value {
     let script = manifest().join("tests/validate/dxf_edits.py");
     let orig = dir.join(format!("{version}.dxf"));
@@ -84,9 +120,7 @@ fn entmod_changes_only_the_given_groups() {
     std::fs::write(dir.path().join("edit.lsp"), EDIT).unwrap();
     for version in ["R12", "R2000", "R2018"] {
         let r = edits(dir.path(), version);
-        assert!(strs(&r["diffs"]).is_empty(), "{version}: {r:#}");
-        assert!(strs(&r["audit_errors"]).is_empty(), "{version}: {r:#}");
-        assert!(strs(&r["audit_fixes"]).is_empty(), "{version}: {r:#}");
+        assert_clean(&r, version);
         assert!(strs(&r["styles"]).contains(&"Mono".to_string()), "{r}");
     }
 }
@@ -95,37 +129,12 @@ fn entmod_changes_only_the_given_groups() {
 fn dxf_import_brings_the_block_definitions_its_inserts_need() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let script = manifest().join("tests/validate/dxf_edits.py");
     let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
-    let py = |args: &[&std::path::Path], mode: &str| {
-        let o = Command::new(python())
-            .arg(&script)
-            .arg(mode)
-            .args(args)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        o.stdout
-    };
-    py(&[&target, &other], "import-make");
-    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
-    let o = lispcad(
-        d,
-        &[
-            "run",
-            "import.lsp",
-            "--open",
-            "t.dxf",
-            "-o",
-            result.to_str().unwrap(),
-        ],
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    edits_py(&[&target, &other], "import-make");
+    import_o_into_t(d, &result);
     let r: serde_json::Value =
-        serde_json::from_slice(&py(&[&target, &other, &result], "import-check")).unwrap();
-    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+        serde_json::from_slice(&edits_py(&[&target, &other, &result], "import-check")).unwrap();
+    assert_clean(&r, "");
 }
 
 /// Into a drawing made from scratch, an import of INSERTs with ATTRIBs, DIMENSIONs and the
@@ -159,9 +168,7 @@ fn dxf_import_into_a_new_drawing_keeps_its_inserts() {
         .unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+    assert_clean(&r, "");
 }
 
 /// Into a drawing made from scratch that already has entities (a script holds their
@@ -213,9 +220,7 @@ fn dxf_import_into_a_drawing_with_content_relocates_handles() {
     let paths = ["o.dxf", "alone.dxf", "late.dxf"].map(|f| d.join(f).display().to_string());
     let r: serde_json::Value =
         serde_json::from_slice(&py(&["late-check", &paths[0], &paths[1], &paths[2]])).unwrap();
-    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+    assert_clean(&r, "");
 }
 
 /// An R12 file's records imported into an R2018 drawing get the subclass markers ezdxf
@@ -226,38 +231,13 @@ fn dxf_import_into_a_drawing_with_content_relocates_handles() {
 fn dxf_import_of_r12_into_r2018_adds_subclass_markers() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let script = manifest().join("tests/validate/dxf_edits.py");
-    let py = |args: &[&std::path::Path], mode: &str| {
-        let o = Command::new(python())
-            .arg(&script)
-            .arg(mode)
-            .args(args)
-            .output()
-            .unwrap();
-        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-        o.stdout
-    };
     let (target, other, result) = (d.join("t.dxf"), d.join("o.dxf"), d.join("r.dxf"));
-    py(&[&target, &d.join("unused.dxf")], "import-make");
-    py(&[&other], "r12-make");
-    std::fs::write(d.join("import.lsp"), "(dxf-import \"o.dxf\")").unwrap();
-    let o = lispcad(
-        d,
-        &[
-            "run",
-            "import.lsp",
-            "--open",
-            "t.dxf",
-            "-o",
-            result.to_str().unwrap(),
-        ],
-    );
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    edits_py(&[&target, &d.join("unused.dxf")], "import-make");
+    edits_py(&[&other], "r12-make");
+    import_o_into_t(d, &result);
     let r: serde_json::Value =
-        serde_json::from_slice(&py(&[&target, &other, &result], "r12-check")).unwrap();
-    assert!(strs(&r["diffs"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_errors"]).is_empty(), "{r:#}");
-    assert!(strs(&r["audit_fixes"]).is_empty(), "{r:#}");
+        serde_json::from_slice(&edits_py(&[&target, &other, &result], "r12-check")).unwrap();
+    assert_clean(&r, "");
 }
 
 /// A POLYLINE or INSERT whose only change is its layer takes its VERTEX and SEQEND records
@@ -311,9 +291,7 @@ fn a_new_layer_takes_the_followers_along() {
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-        assert!(strs(&r["diffs"]).is_empty(), "{version}: {r:#}");
-        assert!(strs(&r["audit_errors"]).is_empty(), "{version}: {r:#}");
-        assert!(strs(&r["audit_fixes"]).is_empty(), "{version}: {r:#}");
+        assert_clean(&r, version);
     }
 }
 

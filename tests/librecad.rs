@@ -90,35 +90,6 @@ fn librecad_opens_the_temple_and_the_example_routine() {
     }
 }
 
-/// The CUT layer's bounding box (x0, y0, x1, y1) in mm, as ezdxf reads the file (SPLINEs
-/// flattened finely: ezdxf's own bounding box of one is coarse).
-fn cut_box(dxf: &Path) -> [f64; 4] {
-    let code = format!(
-        "import ezdxf\nfrom ezdxf import bbox\ndoc = ezdxf.readfile(r'{}')\n\
-         b = bbox.BoundingBox()\n\
-         for e in doc.modelspace().query('*[layer==\"CUT\"]'):\n\
-         \x20   x = bbox.extents([e])\n\
-         \x20   b.extend(e.flattening(0.0005) if e.dxftype() == 'SPLINE' else [x.extmin, x.extmax])\n\
-         print(b.extmin.x, b.extmin.y, b.extmax.x, b.extmax.y)",
-        dxf.display()
-    );
-    let out = Command::new(support::python())
-        .args(["-c", &code])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: Vec<f64> = String::from_utf8(out.stdout)
-        .unwrap()
-        .split_whitespace()
-        .map(|x| x.parse().unwrap())
-        .collect();
-    [v[0], v[1], v[2], v[3]]
-}
-
 /// The red (CUT, ACI 1) pixels of a PNG as (x, y), with the image's width.
 fn red_pixels(png_path: &Path) -> Vec<(f64, f64)> {
     let dec = png::Decoder::new(std::io::BufReader::new(
@@ -164,7 +135,7 @@ fn librecad_draws_the_hinge_corners_sharp() {
     assert!(st.success());
     let red = red_pixels(&dir.path().join("page.png"));
     assert!(!red.is_empty(), "no CUT pixels");
-    let [x0, y0, x1, y1] = cut_box(&dxf);
+    let [x0, y0, x1, y1] = support::ezdxf_cut_extent(&dxf).0;
     let lo_x = red.iter().map(|p| p.0).fold(f64::MAX, f64::min);
     let hi_x = red.iter().map(|p| p.0).fold(f64::MIN, f64::max);
     let lo_y = red.iter().map(|p| p.1).fold(f64::MAX, f64::min);

@@ -44,38 +44,6 @@ fn red_extent_mm(png_path: &Path, dpi: f64) -> (f64, f64) {
     (((x1 - x0 + 1) as f64) * mm, ((y1 - y0 + 1) as f64) * mm)
 }
 
-/// The CUT layer's extent (drawing units) and $INSUNITS/$MEASUREMENT, read by ezdxf. SPLINEs
-/// are flattened to 0.5 µm: ezdxf's own bounding box of a SPLINE flattens it coarsely (0.4 mm
-/// inside the temple's ear tip for one spline, 0.02 mm outside for another).
-fn dxf_cut_extent(dxf: &Path) -> (f64, f64, i64, i64) {
-    let code = format!(
-        "import ezdxf\nfrom ezdxf import bbox\ndoc = ezdxf.readfile(r'{}')\n\
-         b = bbox.BoundingBox()\n\
-         for e in doc.modelspace().query('*[layer==\"CUT\"]'):\n\
-         \x20   x = bbox.extents([e])\n\
-         \x20   b.extend(e.flattening(0.0005) if e.dxftype() == 'SPLINE' else [x.extmin, x.extmax])\n\
-         print(b.size.x, b.size.y, doc.header['$INSUNITS'], doc.header['$MEASUREMENT'])",
-        dxf.display()
-    );
-    let out = Command::new(support::python())
-        .args(["-c", &code])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let s = String::from_utf8(out.stdout).unwrap();
-    let f: Vec<&str> = s.split_whitespace().collect();
-    (
-        f[0].parse().unwrap(),
-        f[1].parse().unwrap(),
-        f[2].parse().unwrap(),
-        f[3].parse().unwrap(),
-    )
-}
-
 fn pdftoppm(pdf: &Path, dpi: u32, stem: &Path) -> std::path::PathBuf {
     let st = Command::new("pdftoppm")
         .args(["-r", &dpi.to_string(), "-png", "-singlefile"])
@@ -98,7 +66,8 @@ fn check_true_scale(dir: &Path, script: &str, unit_mm: f64, insunits: i64) {
         ],
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let (w, h, units, measurement) = dxf_cut_extent(&dir.join("s.dxf"));
+    let ([x0, y0, x1, y1], units, measurement) = support::ezdxf_cut_extent(&dir.join("s.dxf"));
+    let (w, h) = (x1 - x0, y1 - y0);
     assert_eq!(units, insunits);
     assert_eq!(measurement, if insunits == 1 { 0 } else { 1 });
     let (w_mm, h_mm) = (w * unit_mm + STROKE_MM, h * unit_mm + STROKE_MM);

@@ -23,6 +23,36 @@ pub fn python() -> PathBuf {
     p
 }
 
+/// The CUT layer's extent as ezdxf reads it ([min x, min y, max x, max y]) and the header's
+/// `$INSUNITS` and `$MEASUREMENT`. SPLINEs are flattened to 0.5 µm: ezdxf's own bounding box
+/// flattens them coarsely (0.37 mm inside a temple's ear tip).
+pub fn ezdxf_cut_extent(dxf: &Path) -> ([f64; 4], i64, i64) {
+    let code = format!(
+        "import ezdxf\nfrom ezdxf import bbox\ndoc = ezdxf.readfile(r'{}')\n\
+         b = bbox.BoundingBox()\n\
+         for e in doc.modelspace().query('*[layer==\"CUT\"]'):\n\
+         \x20   x = bbox.extents([e])\n\
+         \x20   b.extend(e.flattening(0.0005) if e.dxftype() == 'SPLINE' else [x.extmin, x.extmax])\n\
+         print(b.extmin.x, b.extmin.y, b.extmax.x, b.extmax.y, \
+         doc.header.get('$INSUNITS', 0), doc.header.get('$MEASUREMENT', 0))",
+        dxf.display()
+    );
+    let out = Command::new(python()).args(["-c", &code]).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let s = String::from_utf8(out.stdout).unwrap();
+    let f: Vec<&str> = s.split_whitespace().collect();
+    let x = |i: usize| -> f64 { f[i].parse().unwrap() };
+    (
+        [x(0), x(1), x(2), x(3)],
+        f[4].parse().unwrap(),
+        f[5].parse().unwrap(),
+    )
+}
+
 /// Run tests/validate/check_dxf.py on one file and check the verdict (see `check_dxf_many`).
 pub fn check_dxf(path: &Path, cam: bool) -> serde_json::Value {
     check_dxf_many(&[path], cam).remove(0)
