@@ -13,42 +13,11 @@ use output_support::{manifest, python};
 use serde_json::Value;
 
 fn ezdxf(mode: &str, path: &Path) -> Value {
-    let out = Command::new(python())
-        .arg(manifest().join("tests/validate/blocks_dump.py"))
-        .arg(mode)
-        .arg(path)
-        .output()
-        .expect("running blocks_dump.py");
-    assert!(
-        out.status.success(),
-        "blocks_dump.py {mode} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    if mode == "make" {
-        return Value::Null;
-    }
-    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON from blocks_dump.py");
-    assert_eq!(v["audit_errors"], 0, "audit: {}", v["messages"]);
-    assert_eq!(v["audit_fixes"], 0, "audit: {}", v["messages"]);
-    v
+    output_support::validator_json("blocks_dump.py", mode, path)
 }
 
 fn lispcad(dir: &Path, script: &str, args: &[&str]) -> String {
-    std::fs::write(dir.join("s.lsp"), script).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .current_dir(dir)
-        .arg("run")
-        .arg("s.lsp")
-        .args(args)
-        .output()
-        .expect("running lispcad");
-    assert!(
-        out.status.success(),
-        "lispcad failed:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).to_string()
+    output_support::run_script(dir, script, args)
 }
 
 fn close(a: &Value, b: &[f64]) {

@@ -6,48 +6,15 @@
 mod output_support;
 
 use std::path::Path;
-use std::process::Command;
 
-use output_support::{manifest, python};
 use serde_json::{json, Value};
 
 fn ezdxf(mode: &str, path: &Path) -> Value {
-    let out = Command::new(python())
-        .arg(manifest().join("tests/validate/xdata_dicts.py"))
-        .arg(mode)
-        .arg(path)
-        .output()
-        .expect("running xdata_dicts.py");
-    assert!(
-        out.status.success(),
-        "xdata_dicts.py {mode} failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    if mode == "make" {
-        return Value::Null;
-    }
-    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON from xdata_dicts.py");
-    assert_eq!(v["audit_errors"], 0, "audit: {}", v["messages"]);
-    assert_eq!(v["audit_fixes"], 0, "audit: {}", v["messages"]);
-    v
+    output_support::validator_json("xdata_dicts.py", mode, path)
 }
 
 fn lispcad(dir: &Path, script: &str, args: &[&str]) -> String {
-    std::fs::write(dir.join("s.lsp"), script).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .current_dir(dir)
-        .arg("run")
-        .arg("s.lsp")
-        .args(args)
-        .output()
-        .expect("running lispcad");
-    assert!(
-        out.status.success(),
-        "lispcad failed:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).to_string()
+    output_support::run_script(dir, script, args)
 }
 
 /// The xdata of the one model-space entity of `ty` matching `pick`.

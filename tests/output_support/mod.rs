@@ -23,6 +23,50 @@ pub fn python() -> PathBuf {
     p
 }
 
+/// Runs `tests/validate/SCRIPT MODE PATH`; for any mode but `make`, its JSON, whose ezdxf audit
+/// must show 0 errors and 0 fixes.
+pub fn validator_json(script: &str, mode: &str, path: &Path) -> serde_json::Value {
+    let out = Command::new(python())
+        .arg(manifest().join("tests/validate").join(script))
+        .arg(mode)
+        .arg(path)
+        .output()
+        .unwrap_or_else(|e| panic!("running {script}: {e}"));
+    assert!(
+        out.status.success(),
+        "{script} {mode} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    if mode == "make" {
+        return serde_json::Value::Null;
+    }
+    let v: serde_json::Value =
+        serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("JSON from {script}: {e}"));
+    assert_eq!(v["audit_errors"], 0, "audit: {}", v["messages"]);
+    assert_eq!(v["audit_fixes"], 0, "audit: {}", v["messages"]);
+    v
+}
+
+/// `lispcad run s.lsp ARGS` in `dir` with `script` as s.lsp; its standard output. A failure
+/// fails the test with both outputs.
+pub fn run_script(dir: &Path, script: &str, args: &[&str]) -> String {
+    std::fs::write(dir.join("s.lsp"), script).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .current_dir(dir)
+        .arg("run")
+        .arg("s.lsp")
+        .args(args)
+        .output()
+        .expect("running lispcad");
+    assert!(
+        out.status.success(),
+        "lispcad failed:\n{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).to_string()
+}
+
 /// The CUT layer's extent as ezdxf reads it ([min x, min y, max x, max y]) and the header's
 /// `$INSUNITS` and `$MEASUREMENT`. SPLINEs are flattened to 0.5 µm: ezdxf's own bounding box
 /// flattens them coarsely (0.37 mm inside a temple's ear tip).
