@@ -12,13 +12,12 @@
 use glam::{DVec2, DVec3};
 
 use super::biarc::{fit_bspline, fit_span, BulgeChain, Projected};
+use super::cam_overlap::{remove_overlaps, same_closed, Edge, Seg, EPS};
 use super::cam_tidy;
 use super::drawing::{bulge_arc, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
 use super::dxf::{degrees, DxfWriter};
 use crate::geom::frame::Ocs;
-
-/// Edges closer than this (drawing units) count as coincident.
-const EPS: f64 = 1e-6;
+use crate::geom::ParamCurve as _;
 
 /// An R12-safe layer name: upper case, letters, digits, `$`, `-`, `_`; at most 31 characters.
 pub fn r12_layer_name(name: &str) -> String {
@@ -244,246 +243,6 @@ fn to_prims(e: &Entity, tol: f64) -> Vec<Prim> {
     }
 }
 
-use crate::geom::ParamCurve as _;
-
-// ---------------------------------------------------------------- overlap removal
-
-/// A line or circular arc, parameterized by s in [0, 1] from its start to its end.
-#[derive(Clone, Copy, Debug)]
-enum Seg {
-    Line {
-        a: DVec2,
-        b: DVec2,
-    },
-    /// Angle a0 + s·sweep (sweep signed: negative = clockwise).
-    Arc {
-        c: DVec2,
-        r: f64,
-        a0: f64,
-        sweep: f64,
-    },
-}
-
-impl Seg {
-    fn from_bulge(a: DVec2, b: DVec2, bulge: f64) -> Seg {
-        match bulge_arc(a, b, bulge) {
-            Some((c, r, a0, a1)) => Seg::Arc {
-                c,
-                r,
-                a0,
-                sweep: a1 - a0,
-            },
-            None => Seg::Line { a, b },
-        }
-    }
-
-    fn circle(c: DVec2, r: f64) -> Seg {
-        Seg::Arc {
-            c,
-            r,
-            a0: 0.0,
-            sweep: std::f64::consts::TAU,
-        }
-    }
-
-    fn at(&self, s: f64) -> DVec2 {
-        match *self {
-            Seg::Line { a, b } => a.lerp(b, s),
-            Seg::Arc { c, r, a0, sweep } => {
-                let t = a0 + sweep * s;
-                c + DVec2::new(t.cos(), t.sin()) * r
-            }
-        }
-    }
-
-    fn length(&self) -> f64 {
-        match *self {
-            Seg::Line { a, b } => (b - a).length(),
-            Seg::Arc { r, sweep, .. } => r * sweep.abs(),
-        }
-    }
-
-    fn bbox(&self) -> (DVec2, DVec2) {
-        match *self {
-            Seg::Line { a, b } => (a.min(b), a.max(b)),
-            // The arc's own box: its ends and the quarter-turn points inside its sweep (a
-            // whole-circle box would make the nearly straight arcs of biarc chains, whose radii
-            // are huge, overlap everything).
-            Seg::Arc { c, r, a0, sweep } => {
-                let (s0, e0) = (self.at(0.0), self.at(1.0));
-                let (mut lo, mut hi) = (s0.min(e0), s0.max(e0));
-                let (from, to) = if sweep > 0.0 {
-                    (a0, a0 + sweep)
-                } else {
-                    (a0 + sweep, a0)
-                };
-                let quarter = std::f64::consts::FRAC_PI_2;
-                let mut k = (from / quarter).ceil();
-                while k * quarter < to {
-                    let p = c + DVec2::from_angle(k * quarter) * r;
-                    lo = lo.min(p);
-                    hi = hi.max(p);
-                    k += 1.0;
-                }
-                (lo, hi)
-            }
-        }
-    }
-
-    /// The bulge segment of the part s0..s1.
-    fn piece(&self, s0: f64, s1: f64) -> (DVec2, DVec2, f64) {
-        let (a, b) = (self.at(s0), self.at(s1));
-        match *self {
-            Seg::Line { .. } => (a, b, 0.0),
-            Seg::Arc { sweep, .. } => (a, b, (sweep * (s1 - s0) / 4.0).tan()),
-        }
-    }
-
-    /// The parameter intervals of `self` that `other` covers (within EPS).
-    fn covered_by(&self, other: &Seg) -> Vec<(f64, f64)> {
-        match (*self, *other) {
-            (Seg::Line { a, b }, Seg::Line { a: oa, b: ob }) => {
-                let d = b - a;
-                let len = d.length();
-                if len == 0.0 {
-                    return vec![];
-                }
-                let u = d / len;
-                let off = |p: DVec2| (p - a).perp_dot(u).abs();
-                if off(oa) > EPS || off(ob) > EPS {
-                    return vec![];
-                }
-                let ta = (oa - a).dot(u) / len;
-                let tb = (ob - a).dot(u) / len;
-                // Exact ends (no widening): the uncovered rest must start where the cover ends.
-                vec![(ta.min(tb), ta.max(tb))]
-            }
-            (
-                Seg::Arc { c, r, a0, sweep },
-                Seg::Arc {
-                    c: oc,
-                    r: or,
-                    a0: oa0,
-                    sweep: osweep,
-                },
-            ) => {
-                if (c - oc).length() > EPS || (r - or).abs() > EPS {
-                    return vec![];
-                }
-                let tau = std::f64::consts::TAU;
-                let span = sweep.abs();
-                // Both as CCW angular intervals [lo, lo + span].
-                let lo = if sweep > 0.0 { a0 } else { a0 + sweep };
-                let olo = if osweep > 0.0 { oa0 } else { oa0 + osweep };
-                let ospan = osweep.abs();
-                let start = (olo - lo).rem_euclid(tau);
-                let mut out = Vec::new();
-                for shift in [-tau, 0.0, tau] {
-                    let (u0, u1) = (start + shift, start + shift + ospan);
-                    if u1 >= 0.0 && u0 <= span {
-                        let (s0, s1) = (u0 / span, u1 / span);
-                        out.push(if sweep > 0.0 {
-                            (s0, s1)
-                        } else {
-                            (1.0 - s1, 1.0 - s0)
-                        });
-                    }
-                }
-                out
-            }
-            _ => vec![],
-        }
-    }
-}
-
-/// Remove (lo, hi) from a sorted list of disjoint kept intervals.
-fn subtract(keep: &mut Vec<(f64, f64)>, lo: f64, hi: f64) {
-    let mut out = Vec::with_capacity(keep.len() + 1);
-    for &(a, b) in keep.iter() {
-        if hi <= a || lo >= b {
-            out.push((a, b));
-            continue;
-        }
-        if lo > a {
-            out.push((a, lo));
-        }
-        if hi < b {
-            out.push((hi, b));
-        }
-    }
-    *keep = out;
-}
-
-/// An edge taking part in overlap removal.
-struct Edge {
-    seg: Seg,
-    /// Open edges can be trimmed; fixed ones (closed outlines, circles) cannot.
-    open: bool,
-    /// Position in drawing order: an open edge yields to every fixed edge and to earlier
-    /// open edges.
-    order: usize,
-    keep: Vec<(f64, f64)>,
-}
-
-/// Sweep over x to find overlapping boxes, trimming open edges by what covers them.
-fn remove_overlaps(edges: &mut [Edge]) {
-    let boxes: Vec<(DVec2, DVec2)> = edges.iter().map(|e| e.seg.bbox()).collect();
-    let mut idx: Vec<usize> = (0..edges.len()).collect();
-    idx.sort_by(|&i, &j| boxes[i].0.x.total_cmp(&boxes[j].0.x).then(i.cmp(&j)));
-    let mut active: Vec<usize> = Vec::new();
-    let mut cuts: Vec<(usize, f64, f64)> = Vec::new();
-    for &i in &idx {
-        let (lo, hi) = boxes[i];
-        active.retain(|&j| boxes[j].1.x >= lo.x - EPS);
-        for &j in &active {
-            let (jlo, jhi) = boxes[j];
-            if jlo.y > hi.y + EPS || jhi.y < lo.y - EPS {
-                continue;
-            }
-            for (victim, cover) in [(i, j), (j, i)] {
-                let (v, c) = (&edges[victim], &edges[cover]);
-                let yields = v.open && (!c.open || c.order < v.order);
-                if yields {
-                    for (s0, s1) in v.seg.covered_by(&c.seg) {
-                        cuts.push((victim, s0, s1));
-                    }
-                }
-            }
-        }
-        active.push(i);
-    }
-    for (v, s0, s1) in cuts {
-        subtract(&mut edges[v].keep, s0, s1);
-    }
-    for e in edges.iter_mut() {
-        let len = e.seg.length();
-        e.keep.retain(|(a, b)| (b - a) * len > EPS);
-    }
-}
-
-fn same_closed(a: &BulgeChain, b: &BulgeChain) -> bool {
-    let n = a.points.len();
-    if n != b.points.len() {
-        return false;
-    }
-    let close = |p: DVec2, q: DVec2| (p - q).length() <= EPS;
-    let bul = |i: usize, v: &BulgeChain| v.bulges.get(i).copied().unwrap_or(0.0);
-    (0..n).any(|k| {
-        let fwd = (0..n).all(|i| {
-            close(a.points[i], b.points[(i + k) % n])
-                && (bul(i, a) - bul((i + k) % n, b)).abs() <= 1e-9
-        });
-        // Reversed traversal: vertex i of a is vertex (k - i) of b, and segment i of a is
-        // segment (k - i - 1) of b with the opposite bulge.
-        let rev = (0..n).all(|i| {
-            let j = (k + n - i) % n;
-            let sj = (k + 2 * n - i - 1) % n;
-            close(a.points[i], b.points[j]) && (bul(i, a) + bul(sj, b)).abs() <= 1e-9
-        });
-        fwd || rev
-    })
-}
-
 // ---------------------------------------------------------------- writing
 
 struct Item<'a> {
@@ -515,13 +274,9 @@ pub fn write_cam(d: &Drawing, tol: f64) -> String {
 /// counter-clockwise and holes clockwise, each started on its smoothest stretch; text on its
 /// own layer; a warning for whatever was left out.
 pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
-    let tol = opts.cam_tol;
-    let min_seg = opts.cam_min_seg;
-    let fit_tol = if min_seg > 0.0 { 0.5 * tol } else { tol };
     let mut warnings = Vec::new();
     let mut left_out: std::collections::BTreeMap<&str, usize> = Default::default();
     let mut texts: Vec<&Entity> = Vec::new();
-    let mut items: Vec<Item> = Vec::new();
     for e in d.entities() {
         match &e.kind {
             EntityKind::Text { .. } => texts.push(e),
@@ -530,81 +285,10 @@ pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
             }
             _ => {}
         }
-        for mut prim in to_prims(e, fit_tol) {
-            let short = match &mut prim {
-                Prim::Closed(ch) => cam_tidy::merge_short(ch, true, min_seg, tol - fit_tol),
-                Prim::Open(ch) => cam_tidy::merge_short(ch, false, min_seg, tol - fit_tol),
-                Prim::Circle(..) => 0,
-            };
-            if short > 0 {
-                warnings.push(format!(
-                    "{short} segment(s) of a {} on layer {} are shorter than {min_seg}: the \
-                     geometry itself is that small",
-                    e.kind.type_name(),
-                    e.layer
-                ));
-            }
-            items.push(Item {
-                entity: e,
-                prim,
-                edges: 0..0,
-                dropped: false,
-            });
-        }
     }
-    // Identical closed outlines and circles: keep the first.
-    for i in 0..items.len() {
-        for j in 0..i {
-            if items[j].dropped {
-                continue;
-            }
-            let dup = match (&items[i].prim, &items[j].prim) {
-                (Prim::Circle(c1, r1), Prim::Circle(c2, r2)) => {
-                    (*c1 - *c2).length() <= EPS && (r1 - r2).abs() <= EPS
-                }
-                (Prim::Closed(a), Prim::Closed(b)) => same_closed(a, b),
-                _ => false,
-            };
-            if dup {
-                items[i].dropped = true;
-                break;
-            }
-        }
-    }
-    let mut edges: Vec<Edge> = Vec::new();
-    for (order, it) in items.iter_mut().enumerate() {
-        if it.dropped {
-            continue;
-        }
-        let start = edges.len();
-        let mut push = |seg: Seg, open: bool| {
-            edges.push(Edge {
-                seg,
-                open,
-                order,
-                keep: vec![(0.0, 1.0)],
-            })
-        };
-        match &it.prim {
-            Prim::Circle(c, r) => push(Seg::circle(*c, *r), false),
-            Prim::Closed(ch) => {
-                let n = ch.points.len();
-                for i in 0..n {
-                    push(
-                        Seg::from_bulge(ch.points[i], ch.points[(i + 1) % n], ch.bulges[i]),
-                        false,
-                    );
-                }
-            }
-            Prim::Open(ch) => {
-                for (w, b) in ch.points.windows(2).zip(&ch.bulges) {
-                    push(Seg::from_bulge(w[0], w[1], *b), true);
-                }
-            }
-        }
-        it.edges = start..edges.len();
-    }
-    remove_overlaps(&mut edges);
+    let mut items = cut_items(d, opts, &mut warnings);
+    drop_duplicates(&mut items);
+    let edges = edges_of(&mut items);
     let dups = items.iter().filter(|it| it.dropped).count();
     if dups > 0 {
         warnings.push(format!(
@@ -644,55 +328,158 @@ pub fn write_cam_with(d: &Drawing, opts: &super::OutputOptions) -> CamOutput {
                 w.float(40, *r);
             }
             Prim::Closed(ch) => write_polyline(&mut w, &layer, color, ch, true),
-            Prim::Open(_) => {
-                // Consecutive surviving pieces that still join form one run.
-                let mut run = BulgeChain::default();
-                let mut last_end: Option<DVec2> = None;
-                for e in &edges[it.edges.clone()] {
-                    for &(s0, s1) in &e.keep {
-                        let (a, b, bu) = e.seg.piece(s0.max(0.0), s1.min(1.0));
-                        let joins = last_end.is_some_and(|p| (p - a).length() <= EPS) && s0 <= 0.0;
-                        if !joins && !run.points.is_empty() {
-                            write_run(&mut w, &layer, color, &run);
-                            run = BulgeChain::default();
-                        }
-                        if run.points.is_empty() {
-                            run.points.push(a);
-                        }
-                        run.points.push(b);
-                        run.bulges.push(bu);
-                        last_end = (s1 >= 1.0).then_some(b);
-                    }
-                }
-                if !run.points.is_empty() {
-                    write_run(&mut w, &layer, color, &run);
-                }
-            }
+            Prim::Open(_) => write_open(&mut w, &layer, color, &edges[it.edges.clone()]),
         }
     }
     for (e, layer) in texts.iter().zip(&extra) {
-        if let EntityKind::Text {
-            insert,
-            height,
-            value,
-            rotation,
-            ..
-        } = &e.kind
-        {
-            head(&mut w, "TEXT", layer, e.color);
-            w.point(10, insert.truncate().extend(0.0));
-            w.float(40, *height);
-            w.str(1, value);
-            if *rotation != 0.0 {
-                w.float(50, degrees(*rotation));
-            }
-        }
+        write_text(&mut w, e, layer);
     }
     w.str(0, "ENDSEC");
     w.str(0, "EOF");
     CamOutput {
         dxf: w.out,
         warnings,
+    }
+}
+
+/// Every entity's cutting primitives, fitted within half the tolerance when short segments
+/// are merged within the other half.
+fn cut_items<'a>(
+    d: &'a Drawing,
+    opts: &super::OutputOptions,
+    warnings: &mut Vec<String>,
+) -> Vec<Item<'a>> {
+    let (tol, min_seg) = (opts.cam_tol, opts.cam_min_seg);
+    let fit_tol = if min_seg > 0.0 { 0.5 * tol } else { tol };
+    let mut items = Vec::new();
+    for e in d.entities() {
+        for mut prim in to_prims(e, fit_tol) {
+            let short = match &mut prim {
+                Prim::Closed(ch) => cam_tidy::merge_short(ch, true, min_seg, tol - fit_tol),
+                Prim::Open(ch) => cam_tidy::merge_short(ch, false, min_seg, tol - fit_tol),
+                Prim::Circle(..) => 0,
+            };
+            if short > 0 {
+                warnings.push(format!(
+                    "{short} segment(s) of a {} on layer {} are shorter than {min_seg}: the \
+                     geometry itself is that small",
+                    e.kind.type_name(),
+                    e.layer
+                ));
+            }
+            items.push(Item {
+                entity: e,
+                prim,
+                edges: 0..0,
+                dropped: false,
+            });
+        }
+    }
+    items
+}
+
+/// Identical closed outlines and circles: keep the first.
+fn drop_duplicates(items: &mut [Item]) {
+    for i in 0..items.len() {
+        for j in 0..i {
+            if items[j].dropped {
+                continue;
+            }
+            let dup = match (&items[i].prim, &items[j].prim) {
+                (Prim::Circle(c1, r1), Prim::Circle(c2, r2)) => {
+                    (*c1 - *c2).length() <= EPS && (r1 - r2).abs() <= EPS
+                }
+                (Prim::Closed(a), Prim::Closed(b)) => same_closed(a, b),
+                _ => false,
+            };
+            if dup {
+                items[i].dropped = true;
+                break;
+            }
+        }
+    }
+}
+
+/// The edges of the surviving items, each item told its range, with overlaps removed.
+fn edges_of(items: &mut [Item]) -> Vec<Edge> {
+    let mut edges: Vec<Edge> = Vec::new();
+    for (order, it) in items.iter_mut().enumerate() {
+        if it.dropped {
+            continue;
+        }
+        let start = edges.len();
+        let mut push = |seg: Seg, open: bool| {
+            edges.push(Edge {
+                seg,
+                open,
+                order,
+                keep: vec![(0.0, 1.0)],
+            })
+        };
+        match &it.prim {
+            Prim::Circle(c, r) => push(Seg::circle(*c, *r), false),
+            Prim::Closed(ch) => {
+                let n = ch.points.len();
+                for i in 0..n {
+                    push(
+                        Seg::from_bulge(ch.points[i], ch.points[(i + 1) % n], ch.bulges[i]),
+                        false,
+                    );
+                }
+            }
+            Prim::Open(ch) => {
+                for (w, b) in ch.points.windows(2).zip(&ch.bulges) {
+                    push(Seg::from_bulge(w[0], w[1], *b), true);
+                }
+            }
+        }
+        it.edges = start..edges.len();
+    }
+    remove_overlaps(&mut edges);
+    edges
+}
+
+/// An open chain's surviving pieces: consecutive pieces that still join form one run.
+fn write_open(w: &mut DxfWriter, layer: &str, color: Option<i16>, edges: &[Edge]) {
+    let mut run = BulgeChain::default();
+    let mut last_end: Option<DVec2> = None;
+    for e in edges {
+        for &(s0, s1) in &e.keep {
+            let (a, b, bu) = e.seg.piece(s0.max(0.0), s1.min(1.0));
+            let joins = last_end.is_some_and(|p| (p - a).length() <= EPS) && s0 <= 0.0;
+            if !joins && !run.points.is_empty() {
+                write_run(w, layer, color, &run);
+                run = BulgeChain::default();
+            }
+            if run.points.is_empty() {
+                run.points.push(a);
+            }
+            run.points.push(b);
+            run.bulges.push(bu);
+            last_end = (s1 >= 1.0).then_some(b);
+        }
+    }
+    if !run.points.is_empty() {
+        write_run(w, layer, color, &run);
+    }
+}
+
+fn write_text(w: &mut DxfWriter, e: &Entity, layer: &str) {
+    if let EntityKind::Text {
+        insert,
+        height,
+        value,
+        rotation,
+        ..
+    } = &e.kind
+    {
+        head(w, "TEXT", layer, e.color);
+        w.point(10, insert.truncate().extend(0.0));
+        w.float(40, *height);
+        w.str(1, value);
+        if *rotation != 0.0 {
+            w.float(50, degrees(*rotation));
+        }
     }
 }
 

@@ -6,6 +6,7 @@ pub mod atomic;
 pub mod biarc;
 pub mod blocks;
 pub mod cam;
+mod cam_overlap;
 pub mod cam_tidy;
 pub mod document;
 pub mod drawing;
