@@ -132,7 +132,8 @@ fn walk(
         a.normalise(&mut w);
         let (su, sv) = a.derivs(w);
         let speed = (su * t.x + sv * t.y).length();
-        if !(speed > 0.0) {
+        // Zero or NaN (a degenerate point of the parameterisation): no way on.
+        if speed.is_nan() || speed <= 0.0 {
             break;
         }
         let mut step = frac * len / speed;
@@ -192,7 +193,9 @@ pub(crate) fn contact_curve(
 ) -> Option<Polyline3> {
     let h = |uv: DVec2| gap(uv).signed;
     let [(big, across), (small, along)] = eigen(hessian(&h, uv0));
-    if !(small.abs() <= FLAT * big.abs()) {
+    // Curved both ways (or NaN): an isolated contact.
+    let flat = small.abs() <= FLAT * big.abs();
+    if !flat {
         return None;
     }
     // The seed lies on the contact to about √tol across it: settle it there first.
