@@ -1,9 +1,10 @@
 //! Intersections through the mesh path between the parametric kinds (issue 13, "Checked by"):
-//! ruled/plane, ruled/cylinder, sweep/ruled, sweep/plane and Coons/plane pairs give points
+//! ruled/plane, ruled/cylinder, sweep/ruled, sweep/plane, Coons/plane and revolve/cylinder
+//! pairs give points
 //! within 1e-9 of both true surfaces and curve lengths within 1e-6 of a quadrature reference,
 //! and a proptest moves the plane at random, half the time onto heights where the seeding mesh
 //! has vertices. The true surfaces are written out implicitly here: the twisted ruled surface
-//! z = 0.3·y − 0.06·x·y, the cylinder (x − 5)² + (y − 5)² = r², the plane.
+//! z = 0.3·y − 0.06·x·y, the cylinder (x − 5)² + (y − 5)² = r², the torus, the plane.
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::line::Line;
@@ -180,6 +181,36 @@ fn a_swept_tube_and_a_coons_patch_meet_an_oblique_plane_on_both() {
     }
     let want = quad(0.0, PI / 2.0, |t| (25.0 + t.sin() * t.sin()).sqrt());
     assert_len("Coons ∩ plane", total(&r), want);
+}
+
+#[test]
+fn a_torus_meets_an_off_axis_cylinder_on_both() {
+    // The torus (ρ − 3)² + z² = 1 as a surface of revolution, and the vertical cylinder of
+    // radius 0.5 about (3, 0): two closed curves z = ±√(1 − (ρ − 3)²) over the circle
+    // x = 3 + 0.5 cos t, y = 0.5 sin t.
+    let tube = Curve::circle(DVec3::new(3.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap();
+    let torus = Surface::revolve(c(tube), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cyl = Surface::cylinder(DVec3::new(3.0, 0.0, -2.0), DVec3::Z, 0.5, 4.0).unwrap();
+    let r = intersect(&torus, &cyl);
+    assert_eq!(r.len(), 2, "{r:?}");
+    for p in r.iter().flat_map(|c| c.points.iter()) {
+        let on_torus = ((p.x.hypot(p.y) - 3.0).hypot(p.z) - 1.0).abs();
+        let on_cyl = ((p.x - 3.0).hypot(p.y) - 0.5).abs();
+        assert!(on_torus <= 1e-9 && on_cyl <= 1e-9, "{p}");
+    }
+    let one = quad(0.0, 2.0 * PI, |t| {
+        let (x, y) = (3.0 + 0.5 * t.cos(), 0.5 * t.sin());
+        let (dx, dy) = (-0.5 * t.sin(), 0.5 * t.cos());
+        let rho = x.hypot(y);
+        let drho = (x * dx + y * dy) / rho;
+        let z = (1.0 - (rho - 3.0) * (rho - 3.0)).sqrt();
+        let dz = -(rho - 3.0) * drho / z;
+        (dx * dx + dy * dy + dz * dz).sqrt()
+    });
+    assert!(r.iter().all(|c| c.closed));
+    for cv in &r {
+        assert_len("torus ∩ cylinder", cv.length(), one);
+    }
 }
 
 use proptest::prelude::*;
