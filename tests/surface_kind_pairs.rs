@@ -1,9 +1,9 @@
 //! Intersections through the mesh path between the parametric kinds (issue 13, "Checked by"):
 //! ruled/plane, ruled/cylinder, sweep/ruled, sweep/plane, Coons/plane and revolve/cylinder
-//! pairs give points
-//! within 1e-9 of both true surfaces and curve lengths within 1e-6 of a quadrature reference,
-//! and a proptest moves the plane at random, half the time onto heights where the seeding mesh
-//! has vertices. The true surfaces are written out implicitly here: the twisted ruled surface
+//! pairs give points within 1e-9 of both true surfaces and curve lengths within 1e-6 of a
+//! quadrature reference, and a proptest moves the plane at random, half the time onto heights
+//! where the seeding mesh has vertices. The true surfaces are written out implicitly here: the
+//! twisted ruled surface
 //! z = 0.3·y − 0.06·x·y, the cylinder (x − 5)² + (y − 5)² = r², the torus, the plane.
 
 use lispcad::geom::curve::Curve;
