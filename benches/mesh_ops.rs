@@ -128,5 +128,40 @@ fn section_contacts(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench, refine, section_contacts);
+/// A contact along a curve reached through the mesh path: a torus under a plane region touching
+/// its top circle. The meshes' exact touch seeds fragments; the traced contact replaces them.
+fn contact_line(c: &mut Criterion) {
+    use lispcad::geom::curve::Curve;
+    use lispcad::geom::surface::{surface_intersect_seeded, Surface};
+    let tube = Curve::circle(DVec3::new(3.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap();
+    let torus = Surface::revolve(
+        std::sync::Arc::new(tube),
+        DVec3::ZERO,
+        DVec3::Z,
+        std::f64::consts::TAU,
+    )
+    .unwrap();
+    let top = Surface::plane(vec![
+        DVec3::new(-5.0, -5.0, 1.0),
+        DVec3::new(5.0, -5.0, 1.0),
+        DVec3::new(5.0, 5.0, 1.0),
+        DVec3::new(-5.0, 5.0, 1.0),
+    ])
+    .unwrap();
+    let (seed, tol, gtol) = (1e-2, 1e-3, lispcad::geom::GEOMTOL);
+    let r = surface_intersect_seeded(&torus, &top, seed, tol, gtol).unwrap();
+    let points: usize = r.iter().map(|c| c.points.len()).sum();
+    eprintln!(
+        "contact_line: torus top circle, {} curve(s), {points} points at CHORDTOL {tol}",
+        r.len()
+    );
+    let mut g = c.benchmark_group("contact_line");
+    g.sample_size(10);
+    g.bench_function("torus_top_circle", |bch| {
+        bch.iter(|| surface_intersect_seeded(black_box(&torus), &top, seed, tol, gtol).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, refine, section_contacts, contact_line);
 criterion_main!(benches);

@@ -1,6 +1,8 @@
 //! Trims decided by exact predicates with one symbolic perturbation (issue 13, item 1): cuts
 //! through mesh vertices and along mesh edges give the right areas (closed forms), the same
-//! answer on every run, no degenerate triangles, and non-manifold joins stay on their side.
+//! answer on every run, no degenerate triangles, and non-manifold joins stay on their side; a
+//! cutter coinciding with the surface over a region whose boundary runs on mesh edges cuts
+//! there too.
 
 use lispcad::geom::line::Line;
 use lispcad::geom::mesh::{trim, Mesh, Trimmed};
@@ -217,6 +219,92 @@ fn a_fin_joined_through_a_non_manifold_edge_stays_on_its_side() {
     assert!((r.kept.area() - (1.5 + fin)).abs() < 1e-12);
 }
 
+/// The facets of `m` whose centroid passes `keep`, as a mesh of their own on the same vertices.
+fn facets_where(m: &Mesh, keep: impl Fn(DVec3) -> bool) -> Mesh {
+    let t: Vec<[u32; 3]> = (0..m.len())
+        .filter(|&i| {
+            let [a, b, c] = m.corners_of(i);
+            keep((a + b + c) / 3.0)
+        })
+        .map(|i| m.triangles()[i])
+        .collect();
+    Mesh::new(m.vertices().to_vec(), t).unwrap()
+}
+
+/// The rectangle [x0, x1] × [y0, y1] in z = 0, meshed by the surface mesher.
+fn rect(x0: f64, x1: f64, y0: f64, y1: f64) -> Mesh {
+    let s = Surface::plane(vec![
+        DVec3::new(x0, y0, 0.0),
+        DVec3::new(x1, y0, 0.0),
+        DVec3::new(x1, y1, 0.0),
+        DVec3::new(x0, y1, 0.0),
+    ])
+    .unwrap();
+    mesh_surface(&s, 0.01).unwrap()
+}
+
+/// Trims `whole` by the coincident `cutter` from a keep point outside the region of area
+/// `inner`: the region comes off whole, and every point of the cut (its boundary off the
+/// surface's own) is a boundary point of the rest, bit for bit.
+fn region_comes_off(name: &str, whole: &Mesh, cutter: &Mesh, outside: DVec3, inner: f64) {
+    let r = trim_checked(whole, cutter, outside);
+    let a = whole.area();
+    assert!(
+        (r.removed.area() - inner).abs() <= 1e-12 * a,
+        "{name}: removed {} want {inner}",
+        r.removed.area()
+    );
+    assert!((r.kept.area() - (a - inner)).abs() <= 1e-12 * a, "{name}");
+    let kept_bd = boundary_points(&r.kept);
+    // The removed part's boundary less the surface's own: the cut.
+    let outer = boundary_points(whole);
+    let mut cut = boundary_points(&r.removed);
+    cut.retain(|p| outer.binary_search(p).is_err());
+    assert!(
+        cut.iter().all(|p| kept_bd.binary_search(p).is_ok()),
+        "{name}: the parts do not share the cut"
+    );
+}
+
+#[test]
+fn a_coincident_region_bounded_by_mesh_edges_comes_off_whole() {
+    // The 4×4 grid over [-2, 2]²; the region [-1, 1]² has its whole boundary on grid lines.
+    let g = grid(4, 2.0, 0.0);
+    let out = DVec3::new(-1.9, -1.9, 0.0);
+    region_comes_off("sub-grid", &g, &grid(2, 1.0, 0.0), out, 4.0);
+    let r = trim_checked(&g, &grid(2, 1.0, 0.0), out);
+    assert_eq!(
+        boundary_points(&r.removed).len(),
+        8,
+        "the region's 8 grid vertices"
+    );
+    let own = facets_where(&g, |c| c.x.abs() < 1.0 && c.y.abs() < 1.0);
+    region_comes_off("own facets", &g, &own, out, 4.0);
+    // Boundary on grid lines at x = -1 and y = ±1, across cells at x = 0.5.
+    region_comes_off("partly on edges", &g, &rect(-1.0, 0.5, -1.0, 1.0), out, 3.0);
+    // Kept from inside, the region is what is kept.
+    let r = trim_checked(&g, &own, DVec3::new(0.2, 0.3, 0.0));
+    assert!((r.kept.area() - 4.0).abs() <= 1e-12, "{}", r.kept.area());
+    // A band across the whole grid, its ends on the grid's own boundary: three parts, the
+    // one below kept (area 4), the band and the part above it removed.
+    let r = trim_checked(&g, &rect(-2.0, 2.0, -1.0, 1.0), out);
+    assert!((r.kept.area() - 4.0).abs() <= 1e-12, "{}", r.kept.area());
+    // A cylinder cut by the half of its own facets with y > 0: along two rulings.
+    let c = mesh_surface(
+        &Surface::cylinder(DVec3::ZERO, DVec3::Z, 1.0, 2.0).unwrap(),
+        0.01,
+    )
+    .unwrap();
+    let half = facets_where(&c, |p| p.y > 0.0);
+    region_comes_off(
+        "cylinder",
+        &c,
+        &half,
+        DVec3::new(0.0, -1.0, 1.0),
+        half.area(),
+    );
+}
+
 use proptest::prelude::*;
 
 proptest! {
@@ -245,5 +333,29 @@ proptest! {
         let (lo, hi) = (r.kept.area().min(r.removed.area()), r.kept.area().max(r.removed.area()));
         prop_assert!((lo - exact.min(4.0 - exact)).abs() < 1e-6, "{} vs {}", lo, exact);
         prop_assert!((hi - exact.max(4.0 - exact)).abs() < 1e-6);
+    }
+
+    /// A coincident rectangle inside the grid, each side either on a grid line (snapped) or
+    /// anywhere: it comes off whole (its area exactly), sharing its boundary with the rest.
+    #[test]
+    fn grid_trimmed_by_a_coincident_rectangle_random_and_snapped(
+        n in 2usize..7,
+        i in [1usize..6, 1usize..6, 1usize..6, 1usize..6],
+        f in [-0.9f64..0.9, -0.9f64..0.9, -0.9f64..0.9, -0.9f64..0.9],
+        snap in [any::<bool>(), any::<bool>(), any::<bool>(), any::<bool>()],
+    ) {
+        let g = grid(n, 1.0, 0.0);
+        // The grid's own coordinates for a snapped side (same expression, same bits).
+        let side = |k: usize| if snap[k] {
+            -1.0 + 2.0 * (i[k] % n).max(1) as f64 / n as f64
+        } else {
+            f[k]
+        };
+        let (mut x0, mut x1, mut y0, mut y1) = (side(0), side(1), side(2), side(3));
+        if x0 > x1 { std::mem::swap(&mut x0, &mut x1); }
+        if y0 > y1 { std::mem::swap(&mut y0, &mut y1); }
+        prop_assume!(x1 - x0 >= 0.05 && y1 - y0 >= 0.05);
+        let inner = (x1 - x0) * (y1 - y0);
+        region_comes_off("random", &g, &rect(x0, x1, y0, y1), DVec3::new(-1.0, -1.0, 0.0), inner);
     }
 }

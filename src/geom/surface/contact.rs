@@ -11,14 +11,23 @@
 //! then levelled by Newton to where the surface is parallel to the plane, which tells a contact
 //! (level within the tolerance) from a loop smaller than the seeding mesh (level beyond the plane),
 //! traced from the extremum.
+//!
+//! Where the contact is a curve rather than a point (the gap flat along one direction), it is
+//! followed on the true surfaces and comes back as one polyline ([`line`]).
+
+mod line;
 
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use glam::{DVec2, DVec3};
+use line::{contact_curve, GapAt};
 use std::cell::Cell;
 
-/// The contact points of `a` and `b` (meshed as `ma`, `mb` within `seed_tol`) not on `curves`,
-/// each within `tol` of both surfaces.
+/// The contacts of `a` and `b` (meshed as `ma`, `mb` within `seed_tol`) not on `curves`: a
+/// one-point polyline for an isolated contact, the contact curve (closed when it closes) where
+/// the surfaces touch along one; every point within `tol` of both surfaces, curves densified
+/// within `chord_tol`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn tangent_contacts(
     a: &Patch,
     b: &Patch,
@@ -27,7 +36,8 @@ pub(crate) fn tangent_contacts(
     curves: &[Polyline3],
     seed_tol: f64,
     tol: f64,
-) -> Vec<DVec3> {
+    chord_tol: f64,
+) -> Vec<Polyline3> {
     let va = ma.vertices();
     if va.is_empty() || mb.is_empty() {
         return Vec::new();
@@ -51,15 +61,164 @@ pub(crate) fn tangent_contacts(
             best
         })
         .collect();
-    let mut out: Vec<DVec3> = Vec::new();
+    let warm: Cell<Option<DVec2>> = Cell::new(None);
+    let signed_gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
+    let mut out: Vec<Polyline3> = Vec::new();
     for (i, reach) in low_vertices(ma, &dist, gap, curves) {
-        if let Some(p) = touch(a, b, va[i], tol) {
-            if !out.iter().any(|q| q.distance(p) <= 4.0 * reach) {
-                out.push(p);
+        if near_any(va[i], &out, 4.0 * reach) {
+            continue;
+        }
+        if let Some((uv, p)) = touch(a, b, va[i], tol) {
+            if near_any(p, &out, 4.0 * reach) {
+                continue;
             }
+            out.push(
+                contact_curve(a, &signed_gap, uv, reach, tol, chord_tol).unwrap_or(Polyline3 {
+                    points: vec![p],
+                    closed: false,
+                }),
+            );
         }
     }
     out
+}
+
+/// The gap from `a(uv)` to `b`: signed along b's normal at the nearest point (found from
+/// `warm`, the last one, which it updates).
+fn pair_gap(a: &Patch, b: &Patch, warm: &Cell<Option<DVec2>>, uv: DVec2) -> GapAt {
+    let mut uv = uv;
+    a.normalise(&mut uv);
+    let pa = a.eval(uv);
+    let ub = b.project(pa, warm.get());
+    warm.set(Some(ub));
+    let pb = b.eval(ub);
+    GapAt {
+        signed: (pa - pb).dot(unit_normal(b, ub)),
+        dist: pa.distance(pb),
+        point: 0.5 * (pa + pb),
+    }
+}
+
+/// The gap from `a(uv)` to the plane through `p0` with unit normal `n`.
+fn plane_gap(a: &Patch, (p0, n): (DVec3, DVec3), uv: DVec2) -> GapAt {
+    let mut uv = uv;
+    a.normalise(&mut uv);
+    let p = a.eval(uv);
+    let d = n.dot(p - p0);
+    GapAt {
+        signed: d,
+        dist: d.abs(),
+        point: p,
+    }
+}
+
+fn unit_normal(a: &Patch, uv: DVec2) -> DVec3 {
+    let (su, sv) = a.derivs(uv);
+    su.cross(sv).normalize_or_zero()
+}
+
+/// Normals this close to parallel (sine of their angle) mark a refined curve as possibly lying
+/// on a tangent contact: points within GEOMTOL of both surfaces near a contact can be √GEOMTOL
+/// off it, where the normals differ by about that much. A crossing at so small an angle is not
+/// taken for a contact: the trace finds no zero extremum of the gap across it.
+const PARALLEL: f64 = 1e-3;
+
+/// The refined section `curves` with those on which the plane is tangent to `a` — the mesh's
+/// vertices lying exactly on the plane give such a contact in overlapping pieces — replaced by
+/// the contact curve traced through them on the true surface.
+pub(crate) fn regroup_section(
+    a: &Patch,
+    (p0, n): (DVec3, DVec3),
+    curves: Vec<Polyline3>,
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<Polyline3> {
+    let gap = |uv: DVec2| plane_gap(a, (p0, n), uv);
+    let tangent = |uv: DVec2| unit_normal(a, uv).cross(n).length() <= PARALLEL;
+    regroup(a, &gap, &tangent, curves, tol, chord_tol)
+}
+
+/// [`regroup_section`] for the refined intersection `curves` of `a` and `b`.
+pub(crate) fn regroup_pair(
+    a: &Patch,
+    b: &Patch,
+    curves: Vec<Polyline3>,
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<Polyline3> {
+    let warm: Cell<Option<DVec2>> = Cell::new(None);
+    let gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
+    let tangent = |uv: DVec2| {
+        let ub = b.project(a.eval(uv), None);
+        unit_normal(a, uv).cross(unit_normal(b, ub)).length() <= PARALLEL
+    };
+    regroup(a, &gap, &tangent, curves, tol, chord_tol)
+}
+
+fn regroup(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    tangent: &dyn Fn(DVec2) -> bool,
+    curves: Vec<Polyline3>,
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<Polyline3> {
+    let mut kept = Vec::with_capacity(curves.len());
+    let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
+    for c in curves {
+        let n = c.points.len();
+        if n == 0 {
+            continue;
+        }
+        // Its ends and middle: a curve that only meets a contact (a crossing running into a
+        // touch) stays as it is.
+        let probes = [c.points[0], c.points[n / 2], c.points[n - 1]].map(|p| a.project(p, None));
+        if probes.iter().all(|uv| tangent(*uv)) {
+            touching.push((c, probes[1]));
+        } else {
+            kept.push(c);
+        }
+    }
+    // A point within `tol` of both surfaces beside a contact can be √(tol·R) off it.
+    let near = 2.0 * chord_tol.max(tol) + 4.0 * (tol * a.scale()).sqrt();
+    let mut traced: Vec<Polyline3> = Vec::new();
+    for (c, uv) in &touching {
+        if c.points.len() < 2 || c.points.iter().all(|p| near_any(*p, &traced, near)) {
+            continue;
+        }
+        let len = c
+            .points
+            .windows(2)
+            .map(|w| w[0].distance(w[1]))
+            .fold(0.0, f64::max);
+        traced.extend(contact_curve(a, gap, *uv, len, tol, chord_tol));
+    }
+    // The pieces a traced contact covers go; any other stays.
+    kept.extend(
+        touching
+            .into_iter()
+            .map(|(c, _)| c)
+            .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
+    );
+    kept.extend(traced);
+    kept
+}
+
+/// Whether `p` lies within `r` of one of `curves` (points, or segments of polylines).
+fn near_any(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
+    curves.iter().any(|c| {
+        let n = c.points.len();
+        if n == 1 {
+            return c.points[0].distance(p) <= r;
+        }
+        let segs = if c.closed { n } else { n - 1 };
+        (0..segs).any(|k| {
+            let (s, e) = (c.points[k], c.points[(k + 1) % n]);
+            let d = e - s;
+            let f = ((p - s).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+            p.distance(s + d * f) <= r
+        })
+    })
 }
 
 /// The points where the plane through `p0` with unit normal `n` touches `a` (meshed as `ma`
@@ -80,18 +239,26 @@ pub(crate) fn plane_contacts(
         a.normalise(&mut uv);
         n.dot(a.eval(uv) - p0)
     };
+    let gap_at = |uv: DVec2| plane_gap(a, (p0, n), uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    let mut seen: Vec<DVec3> = Vec::new();
     for (i, reach) in low_vertices(ma, &dist, gap, curves) {
+        if near_any(ma.vertices()[i], &out, 4.0 * reach) {
+            continue;
+        }
         let mut uv = nelder_mead(&|uv| h(uv).abs(), a.project(ma.vertices()[i], None), 1e-3);
         a.normalise(&mut uv);
+        if h(uv).abs() <= tol {
+            if let Some(c) = contact_curve(a, &gap_at, uv, reach, tol, chord_tol) {
+                out.push(c);
+                continue;
+            }
+        }
         let top = level(a, uv, n);
         let p = a.eval(top);
-        if seen.iter().any(|q| q.distance(p) <= 4.0 * reach) {
+        if near_any(p, &out, 4.0 * reach) {
             continue;
         }
         if h(top).abs() <= tol {
-            seen.push(p);
             out.push(Polyline3 {
                 points: vec![p],
                 closed: false,
@@ -102,7 +269,6 @@ pub(crate) fn plane_contacts(
             if let Some(c) = small_loop(a, top, uv.distance(top), &h) {
                 let c = super::refine::refine_section_curve(a, &c, p0, n, tol, chord_tol);
                 if c.points.len() > 2 {
-                    seen.push(p);
                     out.push(c);
                 }
             }
@@ -225,9 +391,10 @@ fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(
         .collect()
 }
 
-/// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the contact
-/// point (midway between the surfaces) when the minimum is within `tol`.
-fn touch(a: &Patch, b: &Patch, p: DVec3, tol: f64) -> Option<DVec3> {
+/// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the
+/// parameters on `a` and the contact point (midway between the surfaces) when the minimum is
+/// within `tol`.
+fn touch(a: &Patch, b: &Patch, p: DVec3, tol: f64) -> Option<(DVec2, DVec3)> {
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let eval = |uv: DVec2| {
         let mut uv = uv;
@@ -241,7 +408,9 @@ fn touch(a: &Patch, b: &Patch, p: DVec3, tol: f64) -> Option<DVec3> {
     let start = a.project(p, None);
     let uv = nelder_mead(&|uv| eval(uv).0, start, 1e-3);
     let (d, pa, pb) = eval(uv);
-    (d <= tol).then(|| 0.5 * (pa + pb))
+    let mut uv = uv;
+    a.normalise(&mut uv);
+    (d <= tol).then(|| (uv, 0.5 * (pa + pb)))
 }
 
 /// Nelder–Mead minimisation in the plane from `x0` with an initial simplex of size `h`.

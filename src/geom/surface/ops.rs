@@ -86,11 +86,13 @@ fn section_seeded(
         let seeds = section(&m, plane_point, plane_normal)?;
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
-        let mut curves: Vec<Polyline3> = seeds
+        let curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
             .filter(|c| !c.points.is_empty())
             .collect();
+        let mut curves =
+            super::contact::regroup_section(&patch, (plane_point, n), curves, geom_tol, tol);
         if !contacts {
             return Ok(curves);
         }
@@ -295,7 +297,7 @@ fn intersect_seeded(
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
     let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
-    let mut curves: Vec<Polyline3> = seeds
+    let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
             let mut r = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
@@ -304,15 +306,18 @@ fn intersect_seeded(
         })
         .filter(|c| !c.points.is_empty())
         .collect();
+    let mut curves = super::contact::regroup_pair(&pa, &pb, curves, gtol, ctol);
     if !contacts {
         return Ok(curves);
     }
-    // Touching without crossing: the meshes miss each other there.
-    let contacts = super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol);
-    curves.extend(contacts.into_iter().map(|p| Polyline3 {
-        points: vec![p],
-        closed: false,
-    }));
+    // Touching without crossing: the meshes miss each other there. Seeded from both meshes'
+    // vertices (a coarse plane region has none near a contact on the other surface).
+    let contacts =
+        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol, ctol);
+    curves.extend(contacts);
+    let contacts =
+        super::contact::tangent_contacts(&pb, &pa, &mb, &ma, &curves, seed_tol, gtol, ctol);
+    curves.extend(contacts);
     Ok(curves)
 }
 

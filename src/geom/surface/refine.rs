@@ -60,6 +60,16 @@ impl<'a> Patch<'a> {
         self.s.eval(uv.x, uv.y)
     }
 
+    /// The diagonal of the surface's bounding box (from the seed grid).
+    pub(crate) fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Whether parameter `k` wraps (the surface closes on itself across it).
+    pub(crate) fn is_periodic(&self, k: usize) -> bool {
+        self.periodic[k]
+    }
+
     /// Partial derivatives by central differences (one-sided at a domain edge).
     pub(crate) fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
         const H: f64 = 1e-6;
@@ -193,7 +203,7 @@ fn min_norm(cols: &[DVec3], r: DVec3) -> Option<DVec3> {
 }
 
 /// The parameter midway between two, the short way round in a periodic direction.
-fn mid(p: &Patch, a: DVec2, b: DVec2) -> DVec2 {
+pub(crate) fn mid(p: &Patch, a: DVec2, b: DVec2) -> DVec2 {
     let mut m = 0.5 * (a + b);
     for k in 0..2 {
         if p.periodic[k] && (a[k] - b[k]).abs() > 0.5 {
@@ -205,7 +215,7 @@ fn mid(p: &Patch, a: DVec2, b: DVec2) -> DVec2 {
 
 /// Refined nodes joined into a polyline, each segment densified: a midpoint (from `mid`, None
 /// when it does not converge) is inserted while it lies farther than `chord_tol` from the chord.
-fn assemble<N: Copy>(
+pub(crate) fn assemble<N: Copy>(
     nodes: &[N],
     closed: bool,
     pos: impl Fn(&N) -> DVec3 + Copy,

@@ -13,11 +13,13 @@
 //!
 //! Where the cutter coincides with the surface over a region (exactly coplanar overlapping
 //! facets), the cut runs along that region's boundary ([`super::coplanar`]), so the region
-//! comes off whole; boundary stretches lying along an edge of the surface are not cut.
+//! comes off whole; stretches of that boundary lying along edges of the surface make those
+//! edges cut edges ([`along`]).
 //!
 //! Cut points are vertices shared by the facets on both sides, so the two parts share the
 //! discrete cut edge exactly (same coordinates bit for bit).
 
+mod along;
 mod nodes;
 mod split;
 
@@ -58,8 +60,13 @@ pub fn trim(mesh: &Mesh, cutter: &Mesh, keep_point: DVec3) -> Result<Trimmed, Me
         return Err(MeshError::Invalid("cannot trim an empty mesh".into()));
     }
     let (mut pieces, _, pairs) = pieces_and_pairs(mesh, cutter);
-    // Where the cutter coincides with the surface, the cut runs along the region's boundary.
+    // Where the cutter coincides with the surface, the cut runs along the region's boundary,
+    // stretches lying on the surface's edges included.
     pieces.extend(super::coplanar::coincident_pieces(mesh, cutter, &pairs));
+    if !pairs.is_empty() {
+        let loops = super::coplanar::coincident_loops(mesh, cutter, &pairs);
+        pieces.extend(along::along_edge_pieces(mesh, &loops));
+    }
     {
         let segs: Vec<_> = pieces.iter().map(|p| p.seg).collect();
         let merged = merge_keys_by_point(segs);

@@ -1,0 +1,240 @@
+//! Tangent contact along a curve (a cylinder lying on a plane, a torus under its top plane): the
+//! surfaces touch at every point of a line or loop without crossing, so neither the meshes'
+//! intersection nor the local minimum search sees more than scattered points of it.
+//!
+//! Seen from the parameters of surface `a`, the signed gap `h(u, v)` to the other surface has a
+//! zero extremum at a contact; along a contact curve its Hessian is singular, the null direction
+//! being the curve's tangent. From a contact point the curve is followed both ways: a step along
+//! the tangent, then the extremum of `h` across it (Newton on the transverse derivative, exact
+//! for the quadratic `h` of a tangency). A step is kept when the surfaces meet there within the
+//! tolerance; it is halved where they part (finding the contact's end), held at the edge of a
+//! bounded parameter, and the loop closes when the walk returns to its start. The nodes are then
+//! densified within the chord tolerance like every refined curve.
+
+use super::super::refine::{assemble, mid, Patch};
+use crate::geom::mesh::Polyline3;
+use glam::{DVec2, DVec3};
+
+/// The gap between the surfaces at a parameter pair of `a`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct GapAt {
+    /// Signed: smooth through a contact, where it has an extremum of value zero.
+    pub signed: f64,
+    /// The distance between the surfaces (it differs from |signed| off the other's extent).
+    pub dist: f64,
+    /// The point of contact (midway between the surfaces).
+    pub point: DVec3,
+}
+
+/// Difference step in (u, v) for the derivatives of the gap.
+const D: f64 = 1e-5;
+
+/// The smaller principal curvature of `h` over the larger below which the contact is a curve:
+/// along one the Hessian is zero but for difference noise (about 1e-7 of the other).
+const FLAT: f64 = 1e-4;
+
+/// Most nodes one walk makes before giving up (a curve thousands of steps long).
+const MAX_NODES: usize = 1 << 15;
+
+/// The Hessian of `h` at `uv` by central differences: `[h_uu, h_uv, h_vv]`.
+fn hessian(h: &dyn Fn(DVec2) -> f64, uv: DVec2) -> [f64; 3] {
+    let f = |du: f64, dv: f64| h(uv + DVec2::new(du, dv));
+    let h0 = f(0.0, 0.0);
+    let d2 = D * D;
+    [
+        (f(D, 0.0) - 2.0 * h0 + f(-D, 0.0)) / d2,
+        (f(D, D) - f(D, -D) - f(-D, D) + f(-D, -D)) / (4.0 * d2),
+        (f(0.0, D) - 2.0 * h0 + f(0.0, -D)) / d2,
+    ]
+}
+
+/// The eigenpairs of the symmetric `[[a, b], [b, c]]`, the larger |λ| first.
+fn eigen([a, b, c]: [f64; 3]) -> [(f64, DVec2); 2] {
+    let (m, r) = (0.5 * (a + c), (0.25 * (a - c) * (a - c) + b * b).sqrt());
+    let th = 0.5 * (2.0 * b).atan2(a - c);
+    let (e1, e2) = (
+        DVec2::new(th.cos(), th.sin()),
+        DVec2::new(-th.sin(), th.cos()),
+    );
+    let (p1, p2) = ((m + r, e1), (m - r, e2));
+    if p1.0.abs() >= p2.0.abs() {
+        [p1, p2]
+    } else {
+        [p2, p1]
+    }
+}
+
+/// The extremum of `h` on the line `uv + s·w` nearest `uv` (Newton on the derivative along `w`),
+/// with bounded parameters held in their domain.
+fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
+    let mut s = 0.0;
+    for _ in 0..10 {
+        let f = |x: f64| h(uv + w * x);
+        let (m, z, p) = (f(s - D), f(s), f(s + D));
+        let (g, c) = ((p - m) / (2.0 * D), (p - 2.0 * z + m) / (D * D));
+        if !(c.abs() > 0.0 && c.is_finite() && g.is_finite()) {
+            break;
+        }
+        let step = (g / c).clamp(-0.05, 0.05);
+        s -= step;
+        if step.abs() <= 1e-13 {
+            break;
+        }
+    }
+    clamp_bounded(a, uv + w * s)
+}
+
+fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
+    for k in 0..2 {
+        if !a.is_periodic(k) {
+            uv[k] = uv[k].clamp(0.0, 1.0);
+        }
+    }
+    uv
+}
+
+/// `y − x` the short way round in periodic directions.
+fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
+    let mut d = y - x;
+    for k in 0..2 {
+        if a.is_periodic(k) {
+            d[k] -= d[k].round();
+        }
+    }
+    d
+}
+
+/// The distance from `p` to the segment `ab`, and where along it (0 at a, 1 at b) it is nearest.
+fn to_segment(p: DVec3, a: DVec3, b: DVec3) -> (f64, f64) {
+    let d = b - a;
+    let f = ((p - a).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+    (p.distance(a + d * f), f)
+}
+
+/// Follows the contact from `start` along `dir` (in (u, v)) in steps of about `len` in space.
+/// Returns the nodes after `start` and whether the walk came back round to it.
+fn walk(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    start: DVec2,
+    dir: DVec2,
+    len: f64,
+    tol: f64,
+) -> (Vec<DVec2>, bool) {
+    let h = |uv: DVec2| gap(uv).signed;
+    let p_start = gap(start).point;
+    let (mut uv, mut t) = (start, dir.normalize());
+    let mut p_prev = p_start;
+    let mut nodes: Vec<DVec2> = Vec::new();
+    let mut frac = 1.0;
+    while nodes.len() < MAX_NODES {
+        let mut w = uv;
+        a.normalise(&mut w);
+        let (su, sv) = a.derivs(w);
+        let speed = (su * t.x + sv * t.y).length();
+        // Zero or NaN (a degenerate point of the parameterisation): no way on.
+        if speed.is_nan() || speed <= 0.0 {
+            break;
+        }
+        let mut step = frac * len / speed;
+        // A bounded parameter reaching its edge: the step ends there, and so does the walk.
+        let mut at_edge = false;
+        for k in 0..2 {
+            if a.is_periodic(k) || t[k] == 0.0 {
+                continue;
+            }
+            let room = ((if t[k] > 0.0 { 1.0 } else { 0.0 }) - uv[k]) / t[k];
+            if room <= 1e-12 {
+                return (nodes, false);
+            }
+            if room <= step {
+                step = room;
+                at_edge = true;
+            }
+        }
+        let cand = settle(a, &h, uv + t * step, t.perp());
+        let g = gap(cand);
+        let moved = cand - uv;
+        if g.dist <= tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step {
+            // Back round to the start (this step reaches or passes it): the loop closes there.
+            let (d, f) = to_segment(p_start, p_prev, g.point);
+            if nodes.len() >= 2 && d <= 0.1 * len && f > 0.0 {
+                return (nodes, true);
+            }
+            nodes.push(cand);
+            t = moved.normalize();
+            uv = cand;
+            p_prev = g.point;
+            if at_edge {
+                return (nodes, false);
+            }
+            frac = 1.0;
+        } else {
+            // The surfaces part (or the step left the curve): shorter steps find the end.
+            frac *= 0.5;
+            if frac < 1e-7 {
+                break;
+            }
+        }
+    }
+    (nodes, false)
+}
+
+/// The contact curve through the contact at `uv0` (parameters of `a`, `gap` within `tol` there)
+/// when the contact is a curve, densified within `chord_tol`; None when it is isolated (the gap
+/// curves up both ways). `len` is the step length in space (the seeding mesh's edge length).
+pub(crate) fn contact_curve(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    uv0: DVec2,
+    len: f64,
+    tol: f64,
+    chord_tol: f64,
+) -> Option<Polyline3> {
+    let h = |uv: DVec2| gap(uv).signed;
+    let [(big, across), (small, along)] = eigen(hessian(&h, uv0));
+    // Curved both ways (or NaN): an isolated contact.
+    let flat = small.abs() <= FLAT * big.abs();
+    if !flat {
+        return None;
+    }
+    // The seed lies on the contact to about √tol across it: settle it there first.
+    let uv0 = settle(a, &h, uv0, across);
+    if gap(uv0).dist > tol {
+        return None;
+    }
+    let (fwd, mut closed) = walk(a, gap, uv0, along, len, tol);
+    let mut nodes: Vec<DVec2> = Vec::new();
+    if !closed {
+        let (back, _) = walk(a, gap, uv0, -along, len, tol);
+        nodes.extend(back.into_iter().rev());
+    }
+    nodes.push(uv0);
+    nodes.extend(fwd);
+    if nodes.len() < 2 {
+        return None;
+    }
+    // Both ways ending on parameter edges that the surface joins (a sweep round a closed guide
+    // whose frames do not close to roundoff): one loop.
+    if !closed && nodes.len() >= 3 {
+        let (p, q) = (gap(nodes[0]).point, gap(nodes[nodes.len() - 1]).point);
+        if p.distance(q) <= 4.0 * tol {
+            nodes.pop();
+            closed = true;
+        }
+    }
+    let nodes: Vec<(DVec2, DVec3)> = nodes
+        .into_iter()
+        .map(|mut uv| {
+            a.normalise(&mut uv);
+            (uv, gap(uv).point)
+        })
+        .collect();
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| {
+        let across = delta(a, x.0, y.0).perp().normalize_or_zero();
+        let m = settle(a, &h, mid(a, x.0, y.0), across);
+        let g = gap(m);
+        (g.dist <= tol).then_some((m, g.point))
+    };
+    Some(assemble(&nodes, closed, |x| x.1, &mid_of, tol, chord_tol))
+}

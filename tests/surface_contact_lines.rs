@@ -1,0 +1,148 @@
+//! Tangent contacts along a curve reached through the mesh path (issue 13, item 3): a cylinder
+//! built as a ruled, swept or revolved surface lying on a plane gives its ruling as one curve,
+//! a torus under a plane region its top circle as one closed curve, whether or not the seeding
+//! mesh has vertices exactly on the contact; an isolated contact stays a point. References are
+//! the closed forms written out here (the ruling's ends, the circle ρ = 3, z = 1).
+
+use lispcad::geom::curve::Curve;
+use lispcad::geom::mesh::Polyline3;
+use lispcad::geom::surface::{surface_intersect_seeded, surface_section_seeded, Surface};
+use lispcad::geom::DVec3;
+use std::f64::consts::PI;
+use std::sync::Arc;
+
+/// Point counts, closure, lengths and ends: enough to see what came back.
+fn summary(r: &[Polyline3]) -> String {
+    r.iter()
+        .map(|c| {
+            format!(
+                "[{} pts{} len {:.9} {:?}..{:?}]",
+                c.points.len(),
+                if c.closed { " closed" } else { "" },
+                c.length(),
+                c.points.first(),
+                c.points.last()
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The square region of half-size `h` about `c` spanned by the unit vectors `e1`, `e2`.
+fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
+    Surface::plane(vec![
+        c - e1 * h - e2 * h,
+        c + e1 * h - e2 * h,
+        c + e1 * h + e2 * h,
+        c - e1 * h + e2 * h,
+    ])
+    .unwrap()
+}
+
+/// Three cylinders of radius 1 about the x axis through (0, 0, 1), from x = 0 to 4, built
+/// through the mesh-path kinds: ruled between two circles, a circle swept along a line, a line
+/// revolved about the axis.
+fn cylinders() -> Vec<(&'static str, Surface)> {
+    let c = DVec3::new(0.0, 0.0, 1.0);
+    let c0 = Curve::circle(c, 1.0, Some(DVec3::X)).unwrap();
+    let c1 = Curve::circle(c + DVec3::X * 4.0, 1.0, Some(DVec3::X)).unwrap();
+    let guide = Curve::line(c, c + DVec3::X * 4.0).unwrap();
+    let prof = Curve::line(DVec3::new(0.0, 1.0, 1.0), DVec3::new(4.0, 1.0, 1.0)).unwrap();
+    vec![
+        ("ruled", Surface::ruled(Arc::new(c0.clone()), Arc::new(c1))),
+        (
+            "sweep",
+            Surface::sweep(Arc::new(c0), Arc::new(guide)).unwrap(),
+        ),
+        (
+            "revolve",
+            Surface::revolve(Arc::new(prof), c, DVec3::X, 2.0 * PI).unwrap(),
+        ),
+    ]
+}
+
+/// One open curve: the ruling from (0, y, z) to (4, y, z), every point on the plane (p0, n)
+/// and on the cylinder to 1e-9.
+fn assert_ruling(name: &str, r: &[Polyline3], ruling: DVec3, n: DVec3) {
+    assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+    let c = &r[0];
+    assert!(!c.closed && c.points.len() >= 2, "{name}: {}", summary(r));
+    let (a, b) = (c.points[0], *c.points.last().unwrap());
+    let (e0, e1) = (ruling, ruling + DVec3::X * 4.0);
+    let ends = (a.distance(e0) <= 1e-9 && b.distance(e1) <= 1e-9)
+        || (a.distance(e1) <= 1e-9 && b.distance(e0) <= 1e-9);
+    assert!(ends, "{name}: ends {a} {b}, want {e0} {e1}");
+    for p in &c.points {
+        assert!(
+            n.dot(*p - ruling).abs() <= 1e-9,
+            "{name}: {p} off the plane"
+        );
+        let rho = (p.y * p.y + (p.z - 1.0) * (p.z - 1.0)).sqrt();
+        assert!((rho - 1.0).abs() <= 1e-9, "{name}: {p} off the cylinder");
+    }
+    assert!((c.length() - 4.0).abs() <= 1e-9, "{name}: {}", c.length());
+}
+
+#[test]
+fn a_cylinder_lying_on_a_plane_gives_its_ruling_as_one_curve() {
+    for (name, s) in cylinders() {
+        // z = 0 (the meshes have a row of vertices on it) and a plane tilted 0.1 rad about the
+        // axis (no vertex on it: the contact is found from the true surfaces alone).
+        for a in [0.0f64, 0.1] {
+            let m = DVec3::new(0.0, a.sin(), -a.cos());
+            let ruling = DVec3::new(0.0, 0.0, 1.0) + m;
+            let r = surface_section_seeded(&s, ruling, m, 1e-2, 1e-6, 1e-9).unwrap();
+            assert_ruling(&format!("{name} section at {a}"), &r, ruling, m);
+            let e2 = DVec3::new(0.0, a.cos(), a.sin());
+            let plane = region(ruling + DVec3::X * 2.0, DVec3::X, e2, 10.0);
+            for (x, y) in [(&s, &plane), (&plane, &s)] {
+                let r = surface_intersect_seeded(x, y, 1e-2, 1e-6, 1e-9).unwrap();
+                assert_ruling(&format!("{name} ∩ plane at {a}"), &r, ruling, m);
+            }
+            // Lifted 1e-3 off: nothing.
+            let lifted = surface_section_seeded(&s, ruling + m * 1e-3, m, 1e-2, 1e-6, 1e-9);
+            assert!(lifted.unwrap().is_empty(), "{name} lifted");
+        }
+    }
+}
+
+/// The torus of tube radius 1 about the circle ρ = 3 in z = 0, as a surface of revolution.
+fn torus() -> Surface {
+    let tube = Curve::circle(DVec3::new(3.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap();
+    Surface::revolve(Arc::new(tube), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap()
+}
+
+#[test]
+fn a_torus_under_a_plane_region_gives_its_top_circle_closed() {
+    let t = torus();
+    let top = region(DVec3::new(0.0, 0.0, 1.0), DVec3::X, DVec3::Y, 5.0);
+    let r = surface_intersect_seeded(&t, &top, 1e-2, 1e-6, 1e-9).unwrap();
+    assert_eq!(r.len(), 1, "{}", summary(&r));
+    assert!(r[0].closed, "{}", summary(&r));
+    for p in &r[0].points {
+        assert!((p.z - 1.0).abs() <= 1e-9, "{p}");
+        assert!((p.truncate().length() - 3.0).abs() <= 1e-9, "{p}");
+    }
+    // Inscribed within 1e-6 of the circle: its length to 1e-6.
+    let l = r[0].length();
+    assert!((l - 6.0 * PI).abs() <= 1e-6 * 6.0 * PI, "{l}");
+    // Lifted 1e-3: nothing.
+    let lifted = region(DVec3::new(0.0, 0.0, 1.001), DVec3::X, DVec3::Y, 5.0);
+    assert!(surface_intersect_seeded(&t, &lifted, 1e-2, 1e-6, 1e-9)
+        .unwrap()
+        .is_empty());
+}
+
+#[test]
+fn an_isolated_contact_through_the_mesh_path_stays_a_point() {
+    // x = 4 touches the torus at (4, 0, 0) only.
+    let t = torus();
+    let side = region(DVec3::new(4.0, 0.0, 0.0), DVec3::Y, DVec3::Z, 2.0);
+    let r = surface_intersect_seeded(&t, &side, 1e-2, 1e-6, 1e-9).unwrap();
+    assert_eq!(r.len(), 1, "{r:?}");
+    assert_eq!(r[0].points.len(), 1, "{r:?}");
+    assert!(
+        r[0].points[0].distance(DVec3::new(4.0, 0.0, 0.0)) <= 1e-6,
+        "{r:?}"
+    );
+}
