@@ -4,7 +4,9 @@
 # with a contact sheet (--sheet sheet.pdf), and DXF + PDF per variant against Python + ezdxf
 # with its matplotlib PDF backend (those two with -j $JOBS, default 2). Prints wall and CPU
 # times, the ratios and the load average before and after (the machine is shared).
-# Usage: [JOBS=N] bench/run-temple.sh [ROWS.csv]
+# BEFORE=path runs an older lispcad on the same -j 2 batch right after this build's and
+# compares every output file's SHA-256 with this build's (a speed change must not change a byte).
+# Usage: [JOBS=N] [BEFORE=path] bench/run-temple.sh [ROWS.csv]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 table=${1:-bench/temple/variants.csv}
@@ -34,6 +36,10 @@ read -r lc1_wall lc1_cpu < <(measure target/release/lispcad batch scripts/temple
   -o "$out/j1/t-{row}.dxf" -o "$out/j1/t-{row}.svg" -j 1)
 read -r lc2_wall lc2_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/j2/t-{row}.dxf" -o "$out/j2/t-{row}.svg" -j 2)
+if [[ -n "${BEFORE:-}" ]]; then
+  read -r bf_wall bf_cpu < <(measure "$BEFORE" batch scripts/temple.lsp --vary "$table" \
+    -o "$out/bf/t-{row}.dxf" -o "$out/bf/t-{row}.svg" -j 2)
+fi
 read -r py_wall py_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" -o "$out/py")
 read -r sh_wall sh_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/sh/t-{row}.dxf" -o "$out/sh/t-{row}.svg" -j "$jobs" --sheet "$out/sheet.pdf")
@@ -62,4 +68,10 @@ printf 'contact sheet: %s bytes; its cost over the plain batch (CPU): %.2f s\n' 
   "$(stat -c %s "$out/sheet.pdf")" "$(echo "$sh_cpu - $lc2_cpu" | bc -l)"
 printf 'PDF: Python+matplotlib/lispcad (CPU): %.1fx   (wall): %.1fx\n' \
   "$(echo "$pypdf_cpu / $pdf_cpu" | bc -l)" "$(echo "$pypdf_wall / $pdf_wall" | bc -l)"
+if [[ -n "${BEFORE:-}" ]]; then
+  digests() { (cd "$1" && ls | sort | xargs sha256sum); }
+  cmp -s <(digests "$out/j2") <(digests "$out/bf") && bsame="identical" || bsame="DIFFERENT"
+  printf 'BEFORE (%s) -j 2: wall %.2f s, CPU %.2f s; this build / BEFORE (CPU): %.2f; outputs (SHA-256 of %d files): %s\n' \
+    "$BEFORE" "$bf_wall" "$bf_cpu" "$(echo "$lc2_cpu / $bf_cpu" | bc -l)" "$(ls "$out/j2" | wc -l)" "$bsame"
+fi
 printf 'load average (1/5/15 min) before: %s   after: %s\n' "$load0" "$load1"

@@ -59,11 +59,15 @@ fn refused(path: &Path, access: Access, why: &str) -> String {
 }
 
 /// `path` made absolute against the current directory, `.` dropped; None if it has `..`.
-fn absolute(path: &Path) -> Option<PathBuf> {
+/// The current directory is asked of the kernel at most once across calls sharing `cwd`.
+fn absolute_in(path: &Path, cwd: &mut Option<PathBuf>) -> Option<PathBuf> {
     let abs = if path.is_absolute() {
         path.to_path_buf()
     } else {
-        std::env::current_dir().ok()?.join(path)
+        if cwd.is_none() {
+            *cwd = Some(std::env::current_dir().ok()?);
+        }
+        cwd.as_ref()?.join(path)
     };
     let mut out = PathBuf::new();
     for c in abs.components() {
@@ -119,10 +123,11 @@ impl FsPolicy {
         if free {
             return Ok(Place::Free);
         }
-        let abs = absolute(path).ok_or_else(|| refused(path, access, "contains `..`"))?;
+        let cwd = &mut None;
+        let abs = absolute_in(path, cwd).ok_or_else(|| refused(path, access, "contains `..`"))?;
         if access == Access::Read {
             for f in &self.read_files {
-                if absolute(f).as_deref() == Some(&abs) {
+                if absolute_in(f, cwd).as_deref() == Some(&abs) {
                     return Ok(Place::Free);
                 }
             }
@@ -131,17 +136,24 @@ impl FsPolicy {
         if access == Access::Read {
             roots.extend(self.read_roots.iter().cloned());
         }
+        // The roots as given, then as the kernel resolves them: the path may use either. The
+        // resolved forms only when no given form holds the path (resolving walks every
+        // component with a system call; a batch writes thousands of files).
+        let beneath = |r: &Path, root: &Path| {
+            abs.strip_prefix(r).ok().map(|rel| Place::Beneath {
+                root: r.to_path_buf(),
+                shown: root.to_path_buf(),
+                rel: rel.to_path_buf(),
+            })
+        };
         for root in &roots {
-            // The root as given and as the kernel resolves it: the path may use either.
-            let forms = [absolute(root), root.canonicalize().ok()];
-            for r in forms.iter().flatten() {
-                if let Ok(rel) = abs.strip_prefix(r) {
-                    return Ok(Place::Beneath {
-                        root: r.clone(),
-                        shown: root.clone(),
-                        rel: rel.to_path_buf(),
-                    });
-                }
+            if let Some(p) = absolute_in(root, cwd).and_then(|r| beneath(&r, root)) {
+                return Ok(p);
+            }
+        }
+        for root in &roots {
+            if let Some(p) = root.canonicalize().ok().and_then(|r| beneath(&r, root)) {
+                return Ok(p);
             }
         }
         Err(refused(

@@ -4,7 +4,7 @@ use crate::builtin;
 use crate::lang::builtin::{bad_arg, Builtin, MANY};
 use crate::lang::compile::Args;
 use crate::lang::error::{err, Exn, LResult};
-use crate::lang::value::ListBuilder;
+use crate::lang::value::{ConsRef, ListBuilder};
 use crate::lang::{Interp, Value};
 
 /// car/cdr compositions: the letters between c and r, applied right to left.
@@ -344,11 +344,34 @@ fn last(it: &mut Interp, a: &[Value]) -> LResult {
     Ok(Value::Nil)
 }
 
+/// `equal` without fuzz, deciding first the cases association-list code meets on every
+/// element — the same cell (`subst` of the pair `assoc` found), two pairs whose keys are
+/// different integers or symbols, two integers — and leaving the rest to `Value::equal`, whose
+/// answer these are: it compares two conses' atomic cars first and stops at the first
+/// difference.
+#[inline]
+fn equal0(x: &Value, y: &Value) -> bool {
+    match (x, y) {
+        (Value::Int(p), Value::Int(q)) => p == q,
+        (Value::Cons(a), Value::Cons(b)) => {
+            if ConsRef::ptr_eq(a, b) {
+                return true;
+            }
+            match (&a.car, &b.car) {
+                (Value::Int(p), Value::Int(q)) if p != q => false,
+                (Value::Sym(p), Value::Sym(q)) if p != q => false,
+                _ => x.equal(y, 0.0),
+            }
+        }
+        _ => x.equal(y, 0.0),
+    }
+}
+
 fn assoc(it: &mut Interp, a: &[Value]) -> LResult {
     it.list_arg(&a[1])?;
     for e in a[1].iter() {
         if let Value::Cons(c) = e {
-            if c.car.equal(&a[0], 0.0) {
+            if equal0(&c.car, &a[0]) {
                 return Ok(e.clone());
             }
         }
@@ -360,7 +383,7 @@ fn member(it: &mut Interp, a: &[Value]) -> LResult {
     it.list_arg(&a[1])?;
     let mut cur = &a[1];
     while let Value::Cons(c) = cur {
-        if c.car.equal(&a[0], 0.0) {
+        if equal0(&c.car, &a[0]) {
             return Ok(cur.clone());
         }
         cur = &c.cdr;
@@ -377,7 +400,7 @@ fn subst(it: &mut Interp, a: &[Value]) -> LResult {
             Value::Nil => return Ok(out.finish()),
             Value::Cons(c) => {
                 let x = &c.car;
-                out.push(if x.equal(&a[1], 0.0) {
+                out.push(if equal0(x, &a[1]) {
                     a[0].clone()
                 } else {
                     x.clone()

@@ -18,6 +18,7 @@ pub mod params;
 pub mod repl;
 pub mod run;
 pub mod serve;
+mod stack;
 pub mod watch;
 
 pub const EXIT_OK: i32 = 0;
@@ -165,8 +166,8 @@ pub fn main() -> i32 {
             Err(code) => return code,
         },
     };
-    // Everything that evaluates Lisp runs on a thread with a large stack (see `with_eval_stack`).
-    crate::lang::eval::with_eval_stack(move || dispatch(cli))
+    // Everything that evaluates Lisp runs on a large stack of its own (see `stack`).
+    stack::on_eval_stack(move || dispatch(cli))
 }
 
 /// `lispcad run FILE` with nothing else, recognised without clap: building clap's command tree

@@ -200,11 +200,19 @@ impl BSpline {
             .filter(|u| *u >= a && *u <= b)
             .collect();
         breaks.dedup();
+        // Knots in order (as `new` checks; insertion keeps them so) let the searches below be
+        // binary ones, with the same answers as the scans they replace; a batch row
+        // decomposes its outline five times, and the scans made it quadratic.
+        let sorted = knots.is_sorted();
         for &u in &breaks {
-            let mult = knots.iter().filter(|k| **k == u).count();
+            let mult = if sorted {
+                knots.partition_point(|k| *k <= u) - knots.partition_point(|k| *k < u)
+            } else {
+                knots.iter().filter(|k| **k == u).count()
+            };
             let need = if u == a || u == b { p + 1 } else { p };
             for _ in mult..need {
-                insert_knot(&mut knots, &mut pw, p, u);
+                insert_knot(&mut knots, &mut pw, p, u, sorted);
             }
         }
         // Now every span [breaks[i], breaks[i+1]] has its own p+1 control points.
@@ -215,7 +223,16 @@ impl BSpline {
             }
             // First control point of the piece: the index of the first knot equal to w[0]
             // counted so that knots[s..s+p+1] == w[0] region precedes it.
-            let last_a = knots.iter().rposition(|k| *k == w[0]).unwrap_or(p);
+            let last_a = if sorted {
+                let end = knots.partition_point(|k| *k <= w[0]);
+                if end > 0 && knots[end - 1] == w[0] {
+                    end - 1
+                } else {
+                    p
+                }
+            } else {
+                knots.iter().rposition(|k| *k == w[0]).unwrap_or(p)
+            };
             let start = last_a - p;
             let piece = &pw[start..start + p + 1];
             out.push((
@@ -228,28 +245,33 @@ impl BSpline {
 }
 
 /// Insert knot `u` once into (knots, homogeneous control points) of degree p (Boehm's algorithm).
-fn insert_knot(knots: &mut Vec<f64>, pw: &mut Vec<DVec4>, p: usize, u: f64) {
+/// `sorted`: the knots are in order, so the span is found by a binary search.
+fn insert_knot(knots: &mut Vec<f64>, pw: &mut Vec<DVec4>, p: usize, u: f64, sorted: bool) {
     // Span k: knots[k] <= u < knots[k+1], taking the last such k for repeated knots.
     let n = pw.len();
-    let k = (p..n).rfind(|&i| knots[i] <= u).unwrap_or(p);
-    let mut new_pts = Vec::with_capacity(n + 1);
-    for i in 0..=n {
-        if i + p <= k {
-            new_pts.push(pw[i]);
-        } else if i > k {
-            new_pts.push(pw[i - 1]);
-        } else {
-            let denom = knots[i + p] - knots[i];
-            let alpha = if denom > 0.0 {
-                (u - knots[i]) / denom
-            } else {
-                0.0
-            };
-            new_pts.push(pw[i - 1] * (1.0 - alpha) + pw[i] * alpha);
+    let k = if sorted {
+        match knots[p..n].partition_point(|k| *k <= u) {
+            0 => p,
+            c => p + c - 1,
         }
+    } else {
+        (p..n).rfind(|&i| knots[i] <= u).unwrap_or(p)
+    };
+    // The new points: old[i] for i <= k - p, old[i - 1] for i > k, and between them blends
+    // of old[i - 1] and old[i]. Made in place rather than as a new vector per inserted knot:
+    // old[k] is duplicated into slot k, then the blends are written from the top down, so
+    // each still reads old values (the same operations as before, so the same bits).
+    pw.insert(k, pw[k]);
+    for i in (k + 1 - p..=k).rev() {
+        let denom = knots[i + p] - knots[i];
+        let alpha = if denom > 0.0 {
+            (u - knots[i]) / denom
+        } else {
+            0.0
+        };
+        pw[i] = pw[i - 1] * (1.0 - alpha) + pw[i] * alpha;
     }
     knots.insert(k + 1, u);
-    *pw = new_pts;
 }
 
 /// The clamped uniform knot vector for `n` control points of degree `p`:
@@ -334,6 +356,155 @@ mod tests {
                     assert!(d < 1e-12, "degree {p} piece {i} t {t}: {d}");
                 }
             }
+        }
+    }
+
+    /// The knot insertion as first written (a new vector per knot): the in-place one must
+    /// give the same bits, since written drawings are compared byte for byte.
+    fn insert_knot_by_copy(knots: &mut Vec<f64>, pw: &mut Vec<DVec4>, p: usize, u: f64) {
+        let n = pw.len();
+        let k = (p..n).rfind(|&i| knots[i] <= u).unwrap_or(p);
+        let mut new_pts = Vec::with_capacity(n + 1);
+        for i in 0..=n {
+            if i + p <= k {
+                new_pts.push(pw[i]);
+            } else if i > k {
+                new_pts.push(pw[i - 1]);
+            } else {
+                let denom = knots[i + p] - knots[i];
+                let alpha = if denom > 0.0 {
+                    (u - knots[i]) / denom
+                } else {
+                    0.0
+                };
+                new_pts.push(pw[i - 1] * (1.0 - alpha) + pw[i] * alpha);
+            }
+        }
+        knots.insert(k + 1, u);
+        *pw = new_pts;
+    }
+
+    /// `to_beziers` as first written (linear scans, a new vector per knot).
+    fn to_beziers_by_scans(s: &BSpline) -> Vec<(Vec<DVec3>, Vec<f64>)> {
+        let p = s.degree;
+        let (a, b) = s.domain();
+        let mut pw: Vec<DVec4> = s
+            .ctrl
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (*c * s.weight(i)).extend(s.weight(i)))
+            .collect();
+        let mut knots = s.knots.clone();
+        let mut breaks: Vec<f64> = knots
+            .iter()
+            .copied()
+            .filter(|u| *u >= a && *u <= b)
+            .collect();
+        breaks.dedup();
+        for &u in &breaks {
+            let mult = knots.iter().filter(|k| **k == u).count();
+            let need = if u == a || u == b { p + 1 } else { p };
+            for _ in mult..need {
+                insert_knot_by_copy(&mut knots, &mut pw, p, u);
+            }
+        }
+        let mut out = Vec::new();
+        for w in breaks.windows(2) {
+            if w[1] <= w[0] {
+                continue;
+            }
+            let last_a = knots.iter().rposition(|k| *k == w[0]).unwrap_or(p);
+            let piece = &pw[last_a - p..last_a + 1];
+            out.push((
+                piece.iter().map(|h| h.truncate() / h.w).collect(),
+                piece.iter().map(|h| h.w).collect(),
+            ));
+        }
+        out
+    }
+
+    #[test]
+    fn decomposition_gives_the_same_bits_as_the_scans() {
+        let ctrl: Vec<DVec3> = (0..9)
+            .map(|i| {
+                let t = i as f64 * 0.7;
+                DVec3::new(t.cos() * 3.1 + t, t.sin() * 1.7, (t * 0.3).sin())
+            })
+            .collect();
+        let w: Vec<f64> = (0..9).map(|i| 0.6 + 0.11 * i as f64).collect();
+        for p in 1..=4 {
+            // Uniform, repeated interior knots, unclamped ends.
+            let n = ctrl.len();
+            let mut knots_sets = vec![None];
+            let mut rep: Vec<f64> = (0..n + p + 1).map(|i| (i / 2) as f64 * 0.37).collect();
+            rep.sort_by(f64::total_cmp);
+            knots_sets.push(Some(rep));
+            knots_sets.push(Some((0..n + p + 1).map(|i| i as f64 * 0.5 - 1.0).collect()));
+            for knots in knots_sets {
+                for weights in [None, Some(w.clone())] {
+                    let Ok(s) = BSpline::new(p, ctrl.clone(), knots.clone(), weights) else {
+                        continue;
+                    };
+                    let bits = |v: &[(Vec<DVec3>, Vec<f64>)]| -> Vec<u64> {
+                        v.iter()
+                            .flat_map(|(pts, ws)| {
+                                pts.iter()
+                                    .flat_map(|q| q.to_array())
+                                    .chain(ws.iter().copied())
+                                    .map(f64::to_bits)
+                                    .collect::<Vec<_>>()
+                            })
+                            .collect()
+                    };
+                    let got = s.to_beziers();
+                    assert!(!got.is_empty(), "degree {p}");
+                    assert_eq!(bits(&got), bits(&to_beziers_by_scans(&s)), "degree {p}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn knot_insertion_in_place_gives_the_same_bits() {
+        // Irregular knots (repeated ones too), irrational-looking points and weights.
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut rnd = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for p in 1..=4 {
+            let n = 9;
+            let mut knots = vec![0.0; p + 1];
+            let mut t = 0.0;
+            for i in 0..n - p - 1 {
+                if i != 3 {
+                    t += 0.1 + rnd();
+                }
+                knots.push(t);
+            }
+            knots.extend(std::iter::repeat_n(t + 1.0, p + 1));
+            let pw: Vec<DVec4> = (0..n)
+                .map(|_| DVec4::new(rnd() * 7.0, rnd() * 3.0, rnd(), 0.5 + rnd()))
+                .collect();
+            let (mut k1, mut p1) = (knots.clone(), pw.clone());
+            let (mut k2, mut p2) = (knots.clone(), pw);
+            for j in 0..12 {
+                let u = knots[p] + (knots[n] - knots[p]) * (j as f64 / 12.0 + 0.03 * rnd());
+                // The binary search and the scan find the same span.
+                insert_knot(&mut k1, &mut p1, p, u, j % 2 == 0);
+                insert_knot_by_copy(&mut k2, &mut p2, p, u);
+                // Existing knots raised too.
+                let v = k1[p + 1 + j % 3];
+                insert_knot(&mut k1, &mut p1, p, v, j % 2 == 1);
+                insert_knot_by_copy(&mut k2, &mut p2, p, v);
+            }
+            assert_eq!(k1, k2, "degree {p}");
+            let bits = |v: &[DVec4]| -> Vec<[u64; 4]> {
+                v.iter().map(|q| q.to_array().map(f64::to_bits)).collect()
+            };
+            assert_eq!(bits(&p1), bits(&p2), "degree {p}");
         }
     }
 

@@ -15,18 +15,17 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".lispcad-")
-        .suffix(".tmp")
-        .tempfile_in(dir)?;
-    tmp.write_all(bytes)?;
-    // tempfile creates 0600 files; an output is an ordinary file (0644 before the umask).
+    let mut b = tempfile::Builder::new();
+    b.prefix(".lispcad-").suffix(".tmp");
+    // tempfile creates 0600 files; an output is an ordinary file (0644 before the umask),
+    // given its mode when it is created rather than by a chmod after (one call per file).
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
-        tmp.as_file()
-            .set_permissions(std::fs::Permissions::from_mode(0o644))?;
+        b.permissions(std::fs::Permissions::from_mode(0o644));
     }
+    let mut tmp = b.tempfile_in(dir)?;
+    tmp.write_all(bytes)?;
     tmp.persist(path).map_err(|e| e.error)?;
     Ok(())
 }

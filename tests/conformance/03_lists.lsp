@@ -67,6 +67,28 @@
 ;!! bad argument type: listp 5
 (subst 9 2 '(1 2 . 5))
 ;!! bad list
+;; Keys of different kinds are equal when their values are (integer and real).
+(assoc 1.0 '((1 . a) (2 . b)))
+;=> (1 . A)
+(assoc 2 '((1.0 . a) (2.0 . b)))
+;=> (2.0 . B)
+(assoc 'b '((a . 1) (b . 2)))
+;=> (B . 2)
+(assoc '(1 2) '(((1 2) . x) ((1 3) . y)))
+;=> ((1 2) . X)
+;; subst compares with equal, not eq: equal copies are replaced, the same pair too.
+(subst 'x '(1 . a) '((1 . a) (2 . b) (1 . a)))
+;=> (X (2 . B) X)
+(subst 'x '(1.0 . a) '((1 . a) (2 . b)))
+;=> (X (2 . B))
+(subst 'x '(1 . b) '((1 . a) (2 . b)))
+;=> ((1 . A) (2 . B))
+(progn (setq al '((1 . 10) (2 . 20) (3 . 30))) (subst '(2 . 21) (assoc 2 al) al))
+;=> ((1 . 10) (2 . 21) (3 . 30))
+(member '(a 1) '((a 2) (a 1) (b 1)))
+;=> ((A 1) (B 1))
+(member 2.0 '(1 2 3))
+;=> (2 3)
 (vl-remove 2 '(1 2 3 2))
 ;=> (1 3)
 (vl-remove-if 'minusp '(1 -2 3 -4))

@@ -238,6 +238,9 @@ pub fn batch(args: &BatchArgs, common: &Common) -> i32 {
         sinks: &sinks,
         stop: &stop,
         interrupts: &interrupts,
+        budget: common
+            .max_memory
+            .unwrap_or_else(crate::lang::memory::default_budget),
     };
     let total = src.len();
     eprintln!("batch: {total} row{}", if total == 1 { "" } else { "s" });
@@ -340,7 +343,11 @@ fn run_rows(
                         }
                         b.set_position(k);
                     }
-                    None => eprintln!("{line}"),
+                    // One write per line (`eprintln!` made two: the text, then the newline).
+                    None => {
+                        use std::io::Write;
+                        let _ = std::io::stderr().write_all(format!("{line}\n").as_bytes());
+                    }
                 }
             });
     });

@@ -54,6 +54,9 @@ pub struct Runner<'a> {
     pub stop: &'a AtomicBool,
     /// The interrupt flags of the rows running now (Ctrl-C sets them all).
     pub interrupts: &'a Mutex<Vec<Arc<AtomicBool>>>,
+    /// Every row's memory budget: `--max-memory`, or the default worked out once per batch
+    /// (it asks the kernel for the physical memory and two limits: three calls per row).
+    pub budget: usize,
 }
 
 impl Runner<'_> {
@@ -134,11 +137,7 @@ impl Runner<'_> {
         it.loaded_files.clear();
         it.base_dir = Some(self.script_dir.clone());
         it.interrupt.store(false, Ordering::Relaxed);
-        crate::lang::memory::set_budget(Some(
-            self.common
-                .max_memory
-                .unwrap_or_else(crate::lang::memory::default_budget),
-        ));
+        crate::lang::memory::set_budget(Some(self.budget));
         it.set_max_steps(self.common.max_steps);
         // A drawings source names each row's drawing; otherwise `--open` is every row's.
         let open = row.open.as_ref().or(self.common.open.as_ref());

@@ -33,6 +33,9 @@ pub struct OutputFiles {
     /// Names already written, so two streamed rows cannot silently overwrite each other
     /// (a table is checked as a whole before running: `check_clashes`).
     written: Mutex<HashSet<PathBuf>>,
+    /// Directories already made (or found): most batches write every row into the same one
+    /// or two, and asking for each again cost two system calls per file.
+    made_dirs: Mutex<HashSet<PathBuf>>,
 }
 
 impl OutputFiles {
@@ -40,6 +43,7 @@ impl OutputFiles {
         OutputFiles {
             patterns,
             written: Mutex::new(HashSet::new()),
+            made_dirs: Mutex::new(HashSet::new()),
         }
     }
 
@@ -93,8 +97,15 @@ impl Sink for OutputFiles {
         }
         for o in paths {
             if let Some(d) = o.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(d)
-                    .map_err(|e| format!("cannot create {}: {e}", d.display()))?;
+                let mut made = self
+                    .made_dirs
+                    .lock()
+                    .map_err(|_| "lock poisoned".to_string())?;
+                if !made.contains(d) {
+                    std::fs::create_dir_all(d)
+                        .map_err(|e| format!("cannot create {}: {e}", d.display()))?;
+                    made.insert(d.to_path_buf());
+                }
             }
         }
         crate::builtins::write_outputs(it, paths, common)
