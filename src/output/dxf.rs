@@ -11,10 +11,11 @@ use std::sync::OnceLock;
 
 use glam::{DVec2, DVec3};
 
-use super::drawing::{is_flat, Drawing, Entity, EntityKind};
+use super::drawing::{Drawing, EntityKind};
+pub use super::dxf_entities::{degrees, plane_normal};
+pub(crate) use super::dxf_entities::{entity_head, kept_groups, write_entity};
 pub use super::dxf_writer::{encode_cp1252, push_float, DxfWriter};
 use super::record::TagList;
-use crate::geom::frame::Ocs;
 
 // Fixed structural handles.
 const H_LAYER_TABLE: u64 = 0x1;
@@ -56,15 +57,63 @@ pub fn write_cad(d: &Drawing) -> String {
 
 /// `write_cad` with the drawing unit (`$INSUNITS` code) in the header.
 pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
-    let mut w = DxfWriter::new();
     let mut next = d.next_handle();
     let mut alloc = || {
         let h = next;
         next += 1;
         h
     };
+    let (linetypes, styles) = table_names(d);
+    let layer_names = d.layers().iter().map(|l| l.name.as_str());
+    let layer_handles = record_handles(d, "LAYER", layer_names, &mut alloc);
+    let ltype_handles = record_handles(d, "LTYPE", linetypes.iter(), &mut alloc);
+    let style_handles = record_handles(d, "STYLE", styles.iter(), &mut alloc);
+    // Entities first into their own buffer: they allocate handles the header's $HANDSEED
+    // must exceed.
+    let ents = entities(d, &mut alloc);
+    let appids = d.appids();
+    let appid_handles = record_handles(d, "APPID", appids.iter().skip(1), &mut alloc);
+    let handseed = alloc();
+    let tables = Tables {
+        linetypes,
+        ltype_handles,
+        layer_handles,
+        styles,
+        style_handles,
+        appids,
+        appid_handles,
+    };
 
-    // Names the tables must define: line types and text styles used by layers and entities.
+    let mut w = DxfWriter::new();
+    let extents = d.extents();
+    write_header(&mut w, d, extents, handseed, insunits);
+    w.out.push_str(prepared(&CLASSES, write_classes));
+    w.str(0, "SECTION");
+    w.str(2, "TABLES");
+    write_vport(&mut w, extents);
+    write_tables(&mut w, d, &tables);
+    w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
+    write_blocks(&mut w, d);
+    w.out.push_str(&ents.out);
+    w.str(0, "ENDSEC");
+    write_drawing_objects(&mut w, d);
+    w.out.push_str(prepared(&OBJECTS, write_objects));
+    w.out
+}
+
+/// The table records a drawing needs beyond the fixed ones, with their handles.
+struct Tables {
+    linetypes: Vec<String>,
+    ltype_handles: Vec<u64>,
+    layer_handles: Vec<u64>,
+    styles: Vec<String>,
+    style_handles: Vec<u64>,
+    appids: Vec<String>,
+    appid_handles: Vec<u64>,
+}
+
+/// Names the tables must define: line types and text styles used by layers and entities.
+fn table_names(d: &Drawing) -> (Vec<String>, Vec<String>) {
     let mut linetypes: Vec<String> = Vec::new();
     let layer_types = d.layers().iter().map(|l| l.linetype.clone());
     for lt in layer_types.chain(d.entity_linetypes()) {
@@ -87,13 +136,11 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             }
         }
     }
-    let layer_names = d.layers().iter().map(|l| l.name.as_str());
-    let layer_handles = record_handles(d, "LAYER", layer_names, &mut alloc);
-    let ltype_handles = record_handles(d, "LTYPE", linetypes.iter(), &mut alloc);
-    let style_handles = record_handles(d, "STYLE", styles.iter(), &mut alloc);
+    (linetypes, styles)
+}
 
-    // Entities first into their own buffer: they allocate handles the header's $HANDSEED
-    // must exceed.
+/// The ENTITIES section's records, each with its properties and xdata.
+fn entities(d: &Drawing, alloc: &mut impl FnMut() -> u64) -> DxfWriter {
     let mut ents = DxfWriter::new();
     for (e, src) in d.entities_with_sources() {
         if let (EntityKind::Unmodelled { .. }, Some(s)) = (&e.kind, src) {
@@ -103,11 +150,11 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
         }
         let xdata = d.new_entity_xdata(e.handle);
         if xdata.is_none() && d.props(e.handle).is_none() {
-            write_entity(&mut ents, e, H_MODEL_RECORD, &mut alloc);
+            write_entity(&mut ents, e, H_MODEL_RECORD, alloc);
             continue;
         }
         let mut one = DxfWriter::new();
-        write_entity(&mut one, e, H_MODEL_RECORD, &mut alloc);
+        write_entity(&mut one, e, H_MODEL_RECORD, alloc);
         let text = d.with_props(e.handle, &e.kind, one.out);
         match xdata {
             None => ents.out.push_str(&text),
@@ -116,65 +163,67 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
                 .push_str(&super::objects::splice_xdata(&text, x, false)),
         }
     }
-    let appids = d.appids();
-    let appid_handles = record_handles(d, "APPID", appids.iter().skip(1), &mut alloc);
-    let handseed = alloc();
+    ents
+}
 
+fn write_header(
+    w: &mut DxfWriter,
+    d: &Drawing,
+    extents: Option<(DVec3, DVec3)>,
+    handseed: u64,
+    insunits: i32,
+) {
     // ---- HEADER ----
     w.str(0, "SECTION");
     w.str(2, "HEADER");
     let var = |w: &mut DxfWriter, name: &str| w.str(9, name);
-    var(&mut w, "$ACADVER");
+    var(w, "$ACADVER");
     w.str(1, "AC1015");
-    var(&mut w, "$ACADMAINTVER");
+    var(w, "$ACADMAINTVER");
     w.int(70, 6);
-    var(&mut w, "$DWGCODEPAGE");
+    var(w, "$DWGCODEPAGE");
     w.str(3, "ANSI_1252");
-    var(&mut w, "$INSBASE");
+    var(w, "$INSBASE");
     w.point(10, DVec3::ZERO);
-    let extents = d.extents();
     let (lo, hi) = extents.unwrap_or((DVec3::splat(1e20), DVec3::splat(-1e20)));
-    var(&mut w, "$EXTMIN");
+    var(w, "$EXTMIN");
     w.point(10, lo);
-    var(&mut w, "$EXTMAX");
+    var(w, "$EXTMAX");
     w.point(10, hi);
-    var(&mut w, "$LIMMIN");
+    var(w, "$LIMMIN");
     w.point2(10, DVec2::ZERO);
-    var(&mut w, "$LIMMAX");
+    var(w, "$LIMMAX");
     w.point2(10, DVec2::new(420.0, 297.0));
-    var(&mut w, "$LTSCALE");
+    var(w, "$LTSCALE");
     w.float(40, 1.0);
-    var(&mut w, "$TEXTSTYLE");
+    var(w, "$TEXTSTYLE");
     w.str(7, "Standard");
-    var(&mut w, "$CLAYER");
+    var(w, "$CLAYER");
     w.str(8, d.current_layer());
-    var(&mut w, "$CELTYPE");
+    var(w, "$CELTYPE");
     w.str(6, "ByLayer");
-    var(&mut w, "$CECOLOR");
+    var(w, "$CECOLOR");
     w.int(62, 256);
-    var(&mut w, "$DIMSTYLE");
+    var(w, "$DIMSTYLE");
     w.str(2, "Standard");
-    var(&mut w, "$LUNITS");
+    var(w, "$LUNITS");
     w.int(70, 2);
-    var(&mut w, "$AUNITS");
+    var(w, "$AUNITS");
     w.int(70, 0);
-    var(&mut w, "$HANDSEED");
+    var(w, "$HANDSEED");
     w.handle(5, handseed);
-    var(&mut w, "$MEASUREMENT");
+    var(w, "$MEASUREMENT");
     w.int(70, super::measurement(insunits) as i64);
-    var(&mut w, "$INSUNITS");
+    var(w, "$INSUNITS");
     w.int(70, insunits as i64);
     w.str(0, "ENDSEC");
+}
 
-    w.out.push_str(prepared(&CLASSES, write_classes));
-
-    // ---- TABLES ----
-    w.str(0, "SECTION");
-    w.str(2, "TABLES");
-
-    table(&mut w, "VPORT", H_VPORT_TABLE, 1);
+/// The active viewport, framing the drawing's extents.
+fn write_vport(w: &mut DxfWriter, extents: Option<(DVec3, DVec3)>) {
+    table(w, "VPORT", H_VPORT_TABLE, 1);
     record(
-        &mut w,
+        w,
         "VPORT",
         H_VPORT_ACTIVE,
         H_VPORT_TABLE,
@@ -213,25 +262,28 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     w.int(77, 0);
     w.int(78, 0);
     w.str(0, "ENDTAB");
+}
 
-    table(&mut w, "LTYPE", H_LTYPE_TABLE, 3 + linetypes.len());
+/// The LTYPE, LAYER, STYLE, VIEW/UCS and APPID tables.
+fn write_tables(w: &mut DxfWriter, d: &Drawing, t: &Tables) {
+    table(w, "LTYPE", H_LTYPE_TABLE, 3 + t.linetypes.len());
     let continuous_like = |w: &mut DxfWriter, h: u64, name: &str, desc: &str| {
         record(w, "LTYPE", h, H_LTYPE_TABLE, "AcDbLinetypeTableRecord");
         w.solid_linetype_fields(name, desc);
     };
-    continuous_like(&mut w, H_LTYPE_BYBLOCK, "ByBlock", "");
-    continuous_like(&mut w, H_LTYPE_BYLAYER, "ByLayer", "");
-    continuous_like(&mut w, H_LTYPE_CONTINUOUS, "Continuous", "Solid line");
+    continuous_like(w, H_LTYPE_BYBLOCK, "ByBlock", "");
+    continuous_like(w, H_LTYPE_BYLAYER, "ByLayer", "");
+    continuous_like(w, H_LTYPE_CONTINUOUS, "Continuous", "Solid line");
     // Line types the drawing names but does not define are written solid, so a reader never
     // meets an undefined name.
-    for (lt, h) in linetypes.iter().zip(&ltype_handles) {
-        continuous_like(&mut w, *h, lt, "");
+    for (lt, h) in t.linetypes.iter().zip(&t.ltype_handles) {
+        continuous_like(w, *h, lt, "");
     }
     w.str(0, "ENDTAB");
 
-    table(&mut w, "LAYER", H_LAYER_TABLE, d.layers().len());
-    for (l, h) in d.layers().iter().zip(&layer_handles) {
-        record(&mut w, "LAYER", *h, H_LAYER_TABLE, "AcDbLayerTableRecord");
+    table(w, "LAYER", H_LAYER_TABLE, d.layers().len());
+    for (l, h) in d.layers().iter().zip(&t.layer_handles) {
+        record(w, "LAYER", *h, H_LAYER_TABLE, "AcDbLayerTableRecord");
         w.str(2, &l.name);
         w.int(70, (l.frozen as i64) | ((l.locked as i64) << 2));
         w.int(62, l.color as i64);
@@ -241,20 +293,14 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     }
     w.str(0, "ENDTAB");
 
-    table(&mut w, "STYLE", H_STYLE_TABLE, 1 + styles.len());
+    table(w, "STYLE", H_STYLE_TABLE, 1 + t.styles.len());
     for (name, h) in std::iter::once(("Standard", H_STYLE_STANDARD)).chain(
-        styles
+        t.styles
             .iter()
             .map(|s| s.as_str())
-            .zip(style_handles.iter().copied()),
+            .zip(t.style_handles.iter().copied()),
     ) {
-        record(
-            &mut w,
-            "STYLE",
-            h,
-            H_STYLE_TABLE,
-            "AcDbTextStyleTableRecord",
-        );
+        record(w, "STYLE", h, H_STYLE_TABLE, "AcDbTextStyleTableRecord");
         w.str(2, name);
         w.text_style_fields();
     }
@@ -262,21 +308,21 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
 
     w.out.push_str(prepared(&VIEW_UCS, write_view_ucs));
     // Scripts register applications (regapp), so APPID is the drawing's own.
-    table(&mut w, "APPID", H_APPID_TABLE, appids.len());
-    for (name, h) in appids
+    table(w, "APPID", H_APPID_TABLE, t.appids.len());
+    for (name, h) in t
+        .appids
         .iter()
-        .zip(std::iter::once(H_APPID_ACAD).chain(appid_handles))
+        .zip(std::iter::once(H_APPID_ACAD).chain(t.appid_handles.iter().copied()))
     {
-        record(&mut w, "APPID", h, H_APPID_TABLE, "AcDbRegAppTableRecord");
+        record(w, "APPID", h, H_APPID_TABLE, "AcDbRegAppTableRecord");
         w.str(2, name);
         w.int(70, 0);
     }
     w.str(0, "ENDTAB");
-    w.out.push_str(prepared(&TABLES_TAIL, write_tables_tail));
-    write_blocks(&mut w, d);
-    w.out.push_str(&ents.out);
+}
 
-    w.str(0, "ENDSEC");
+/// The OBJECTS section's opening, then the dictionaries and objects scripts added.
+fn write_drawing_objects(w: &mut DxfWriter, d: &Drawing) {
     // ---- OBJECTS ----
     w.str(0, "SECTION");
     w.str(2, "OBJECTS");
@@ -297,8 +343,6 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
             }
         }
     }
-    w.out.push_str(prepared(&OBJECTS, write_objects));
-    w.out
 }
 
 /// Handles for table records: the one `tblobjname` gave a record, else a fresh one.
@@ -599,308 +643,4 @@ fn write_layout(w: &mut DxfWriter, h: u64, name: &str, plot_flags: i64, order: i
     w.point(17, DVec3::Y);
     w.int(76, 1);
     w.handle(330, rec);
-}
-
-pub(crate) fn entity_head(w: &mut DxfWriter, kind: &str, handle: u64, owner: u64, e: &Entity) {
-    w.str(0, kind);
-    w.handle(5, handle);
-    w.handle(330, owner);
-    w.str(100, "AcDbEntity");
-    w.str(8, &e.layer);
-    if let Some(c) = e.color {
-        w.int(62, c as i64);
-    }
-}
-
-/// The unit normal, and whether it differs from +Z (then 210 is written and points are OCS).
-fn unit_normal(n: DVec3) -> (DVec3, bool) {
-    let n = n.normalize();
-    (n, n != DVec3::Z)
-}
-
-/// Angle in degrees in [0, 360).
-pub fn degrees(a: f64) -> f64 {
-    let d = a.to_degrees().rem_euclid(360.0);
-    if d >= 360.0 {
-        0.0
-    } else {
-        d
-    }
-}
-
-/// An entity's groups (R2000 form) owned by the block record `owner`. Unmodelled entities
-/// are skipped: their groups only make sense inside the document they were read from.
-pub(crate) fn write_entity(
-    w: &mut DxfWriter,
-    e: &Entity,
-    owner: u64,
-    alloc: &mut impl FnMut() -> u64,
-) {
-    match &e.kind {
-        EntityKind::Line { p0, p1 } => {
-            entity_head(w, "LINE", e.handle, owner, e);
-            w.str(100, "AcDbLine");
-            w.point(10, *p0);
-            w.point(11, *p1);
-        }
-        EntityKind::Circle {
-            center,
-            radius,
-            normal,
-        } => {
-            entity_head(w, "CIRCLE", e.handle, owner, e);
-            circle_groups(w, *center, *radius, *normal);
-        }
-        EntityKind::Arc {
-            center,
-            radius,
-            start,
-            end,
-            normal,
-        } => {
-            entity_head(w, "ARC", e.handle, owner, e);
-            circle_groups(w, *center, *radius, *normal);
-            w.str(100, "AcDbArc");
-            w.float(50, degrees(*start));
-            w.float(51, degrees(*end));
-        }
-        EntityKind::Point { p } => {
-            entity_head(w, "POINT", e.handle, owner, e);
-            w.str(100, "AcDbPoint");
-            w.point(10, *p);
-        }
-        EntityKind::LwPolyline {
-            points,
-            bulges,
-            closed,
-            elevation,
-            normal,
-        } => {
-            let (n, ocs) = unit_normal(*normal);
-            entity_head(w, "LWPOLYLINE", e.handle, owner, e);
-            w.str(100, "AcDbPolyline");
-            w.int(90, points.len() as i64);
-            w.int(70, *closed as i64);
-            w.float(43, 0.0);
-            if *elevation != 0.0 {
-                w.float(38, *elevation);
-            }
-            for (i, p) in points.iter().enumerate() {
-                w.point2(10, *p);
-                let b = bulges.get(i).copied().unwrap_or(0.0);
-                if b != 0.0 {
-                    w.float(42, b);
-                }
-            }
-            if ocs {
-                w.point(210, n);
-            }
-        }
-        EntityKind::Polyline {
-            points,
-            bulges,
-            closed,
-        } => {
-            let z = points[0].z;
-            let flat = is_flat(points);
-            entity_head(w, "POLYLINE", e.handle, owner, e);
-            let owner = e.handle;
-            if flat {
-                w.str(100, "AcDb2dPolyline");
-                w.int(66, 1);
-                w.point(10, DVec3::new(0.0, 0.0, z));
-                w.int(70, *closed as i64);
-            } else {
-                w.str(100, "AcDb3dPolyline");
-                w.int(66, 1);
-                w.point(10, DVec3::ZERO);
-                w.int(70, 8 | *closed as i64);
-            }
-            for (i, p) in points.iter().enumerate() {
-                w.str(0, "VERTEX");
-                w.handle(5, alloc());
-                w.handle(330, owner);
-                w.str(100, "AcDbEntity");
-                w.str(8, &e.layer);
-                w.str(100, "AcDbVertex");
-                if flat {
-                    w.str(100, "AcDb2dVertex");
-                    w.point(10, *p);
-                    let b = bulges.get(i).copied().unwrap_or(0.0);
-                    if b != 0.0 {
-                        w.float(42, b);
-                    }
-                    w.int(70, 0);
-                } else {
-                    w.str(100, "AcDb3dPolylineVertex");
-                    w.point(10, *p);
-                    w.int(70, 32);
-                }
-            }
-            w.str(0, "SEQEND");
-            w.handle(5, alloc());
-            w.handle(330, owner);
-            w.str(100, "AcDbEntity");
-            w.str(8, &e.layer);
-        }
-        EntityKind::Spline {
-            curve,
-            fit_points,
-            closed,
-        } => super::dxf_spline::write_spline(w, e, owner, alloc, curve, fit_points, *closed),
-        EntityKind::Face3d { corners } => {
-            write_face(w, e.handle, owner, e, corners);
-        }
-        EntityKind::Text {
-            insert,
-            height,
-            value,
-            rotation,
-            style,
-        } => {
-            entity_head(w, "TEXT", e.handle, owner, e);
-            w.str(100, "AcDbText");
-            w.point(10, *insert);
-            w.float(40, *height);
-            w.str(1, value);
-            if *rotation != 0.0 {
-                w.float(50, degrees(*rotation));
-            }
-            w.str(7, if style.is_empty() { "Standard" } else { style });
-            w.str(100, "AcDbText");
-        }
-        EntityKind::Mesh {
-            vertices,
-            triangles,
-        } => {
-            for (i, t) in triangles.iter().enumerate() {
-                let h = if i == 0 { e.handle } else { alloc() };
-                let c = [
-                    vertices[t[0]],
-                    vertices[t[1]],
-                    vertices[t[2]],
-                    vertices[t[2]],
-                ];
-                write_face(w, h, owner, e, &c);
-            }
-        }
-        EntityKind::Ellipse {
-            center,
-            major,
-            normal,
-            ratio,
-            start,
-            end,
-        } => {
-            entity_head(w, "ELLIPSE", e.handle, owner, e);
-            w.str(100, "AcDbEllipse");
-            w.point(10, *center);
-            w.point(11, *major);
-            let n = normal.normalize();
-            if n != DVec3::Z {
-                w.point(210, n);
-            }
-            w.float(40, *ratio);
-            w.float(41, *start);
-            w.float(42, *end);
-        }
-        EntityKind::Unmodelled { .. } => {}
-    }
-}
-
-/// An entity kept as groups (INSERT with ATTRIBs, ATTDEF), with the drawing's layer and
-/// colour when a script changed them.
-fn kept_groups(w: &mut DxfWriter, e: &Entity, s: &super::drawing::SourceRecord) {
-    let mut t = s.tags.clone();
-    if e.layer != s.original.layer {
-        t = t.with(8, &e.layer, 100);
-    }
-    if e.color != s.original.color {
-        t = t.with(62, &e.color.unwrap_or(256).to_string(), 8);
-    }
-    for (c, v) in t.iter() {
-        w.str(c as u16, v);
-    }
-}
-
-/// The AcDbCircle subclass an ARC shares with a CIRCLE: the centre in the OCS of a normal off
-/// +Z, which is then written as the extrusion.
-fn circle_groups(w: &mut DxfWriter, center: DVec3, radius: f64, normal: DVec3) {
-    let (n, ocs) = unit_normal(normal);
-    w.str(100, "AcDbCircle");
-    w.point(
-        10,
-        if ocs {
-            Ocs::new(n).wcs_to_ocs(center)
-        } else {
-            center
-        },
-    );
-    w.float(40, radius);
-    if ocs {
-        w.point(210, n);
-    }
-}
-
-fn write_face(w: &mut DxfWriter, h: u64, owner: u64, e: &Entity, c: &[DVec3; 4]) {
-    entity_head(w, "3DFACE", h, owner, e);
-    w.str(100, "AcDbFace");
-    w.point(10, c[0]);
-    w.point(11, c[1]);
-    w.point(12, c[2]);
-    w.point(13, c[3]);
-    w.int(70, 0);
-}
-
-/// The unit normal of the plane holding every point (the largest cross product of spans from
-/// the first point, then a flatness check), or `None` when they are not coplanar or are collinear.
-pub fn plane_normal(pts: &[DVec3]) -> Option<DVec3> {
-    if is_flat(pts) {
-        return Some(DVec3::Z);
-    }
-    let o = pts[0];
-    // The largest cross product of spans from the first point gives a robust normal.
-    let mut best = DVec3::ZERO;
-    for i in 1..pts.len() {
-        for j in i + 1..pts.len() {
-            let c = (pts[i] - o).cross(pts[j] - o);
-            if c.length_squared() > best.length_squared() {
-                best = c;
-            }
-        }
-    }
-    let len = best.length();
-    let scale = pts
-        .iter()
-        .map(|p| (*p - o).length())
-        .fold(0.0_f64, f64::max);
-    if len <= 1e-12 * scale * scale || scale == 0.0 {
-        return None;
-    }
-    let n = best / len;
-    let flat = pts.iter().all(|p| (*p - o).dot(n).abs() <= 1e-9 * scale);
-    flat.then_some(n)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geom::frame::arbitrary_axis;
-
-    #[test]
-    fn plane_normal_of_tilted_and_skew_points() {
-        let n = DVec3::new(1.0, 2.0, 2.0) / 3.0;
-        let (ax, ay) = arbitrary_axis(n);
-        let pts: Vec<DVec3> = [(0.0, 0.0), (1.0, 0.0), (1.0, 2.0), (-3.0, 1.0)]
-            .iter()
-            .map(|(x, y)| ax * *x + ay * *y + n * 5.0)
-            .collect();
-        let got = plane_normal(&pts).unwrap();
-        assert!(got.cross(n).length() < 1e-12);
-        assert_eq!(
-            plane_normal(&[DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z]),
-            None
-        );
-        assert_eq!(plane_normal(&[DVec3::ZERO, DVec3::X * 2.0]), Some(DVec3::Z));
-    }
 }

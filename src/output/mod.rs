@@ -13,6 +13,7 @@ pub mod drawing;
 pub mod drawing_adopt;
 pub mod drawing_import;
 pub mod dxf;
+mod dxf_entities;
 pub mod dxf_merge;
 pub mod dxf_opened;
 pub mod dxf_relocate;
