@@ -202,6 +202,9 @@ enum Key {
     V(usize, usize),
 }
 
+/// A grid edge along the domain's edge: its nodes in counter-clockwise order and its key.
+type SideEdge = ((usize, usize), (usize, usize), Key);
+
 /// A traced boundary point: its parameters and which of them sit on a domain edge.
 #[derive(Debug, Clone, Copy)]
 struct Pt {
@@ -344,7 +347,7 @@ impl Tracer<'_, '_> {
             }
         }
         // Domain edges, counter-clockwise: bottom, right, top, left.
-        let sides: [(bool, Vec<((usize, usize), (usize, usize), Key)>); 4] = [
+        let sides: [(bool, Vec<SideEdge>); 4] = [
             (
                 !self.periodic[1],
                 (0..N).map(|i| ((i, 0), (i + 1, 0), Key::H(i, 0))).collect(),
