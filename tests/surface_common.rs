@@ -215,6 +215,30 @@ fn a_profile_partly_on_a_cylinder_gives_the_coincident_band() {
     check(&full, &short, 2, 4.0 * PI, |p| on_band(p, 0.5, 1.5));
 }
 
+#[test]
+fn a_profile_on_a_cylinder_then_crossing_it_gives_the_band_and_the_crossing_circle() {
+    // ρ = 1 for z in [0, 2], out to (2, 3), back in through ρ = 1 at z = 11/3 to (0.5, 4).
+    let prof = Curve::pline(
+        vec![
+            v(1.0, 0.0, 0.0),
+            v(1.0, 0.0, 2.0),
+            v(2.0, 0.0, 3.0),
+            v(0.5, 0.0, 4.0),
+        ],
+        false,
+        None,
+    )
+    .unwrap();
+    let rev = Surface::revolve(Arc::new(prof), DVec3::ZERO, DVec3::Z, TAU).unwrap();
+    let cyl = Surface::cylinder(v(0.0, 0.0, -1.0), DVec3::Z, 1.0, 6.0).unwrap();
+    check(&rev, &cyl, 3, 6.0 * PI, |p| {
+        (p.truncate().length() - 1.0).abs() <= GT
+            && [0.0, 2.0, 11.0 / 3.0]
+                .iter()
+                .any(|z| (p.z - z).abs() <= 2.0 * GT)
+    });
+}
+
 fn torus(tube_centre: DVec3, normal: DVec3) -> Surface {
     let tube = Curve::circle(tube_centre, 1.0, Some(normal)).unwrap();
     Surface::revolve(Arc::new(tube), DVec3::ZERO, DVec3::Z, TAU).unwrap()

@@ -104,6 +104,40 @@ pub(crate) fn overlap(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) -> Opt
         .or_else(|| common_region(a, b, tol, chord_tol))
 }
 
+/// The curves (of a closed form, found beside a common region) that do not lie in the common
+/// region of `a` and `b`: a curve whose middle point lies on both surfaces with the surfaces
+/// coinciding around it belongs to the region, whose boundary loops already describe it.
+pub(crate) fn outside_common(
+    a: &Surface,
+    b: &Surface,
+    curves: Vec<Polyline3>,
+    tol: f64,
+) -> Vec<Polyline3> {
+    let (s, other) = if free_form(a) { (a, b) } else { (b, a) };
+    let t = Target::of(other);
+    let patch = Patch::new(s);
+    let periodic = patch.periodic();
+    let tr = Tracer {
+        patch,
+        periodic,
+        target: &t,
+        tol,
+        chord_tol: tol,
+        nodes: Vec::new(),
+        cross: HashMap::new(),
+    };
+    curves
+        .into_iter()
+        .filter(|c| {
+            let Some(&p) = c.points.get(c.points.len() / 2) else {
+                return false;
+            };
+            let uv = tr.patch.project(p, None);
+            !(tr.patch.eval(uv).distance(p) <= tol && tr.in_region(uv))
+        })
+        .collect()
+}
+
 /// Whether the kind is one the analytic code cannot decide coincidence for.
 fn free_form(s: &Surface) -> bool {
     matches!(

@@ -322,9 +322,16 @@ fn intersect_seeded(
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
-    // A common region is its boundary loops (None: everywhere, no boundary).
+    // A common region is its boundary loops (None: everywhere, no boundary), with the closed
+    // form's curves elsewhere (the meshes of coincident surfaces cross all over the region, so
+    // other pairs give the loops alone).
     match super::common::overlap(a, b, gtol, ctol) {
-        Some(super::common::Overlap::Loops(l)) => return Ok(Some(l)),
+        Some(super::common::Overlap::Loops(mut l)) => {
+            if let Some(c) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
+                l.extend(super::common::outside_common(a, b, c, gtol));
+            }
+            return Ok(Some(l));
+        }
         Some(super::common::Overlap::Everywhere) => return Ok(None),
         None => {}
     }
