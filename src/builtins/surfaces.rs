@@ -32,8 +32,8 @@ pub static BUILTINS: &[Builtin] = &[
     builtin!("mesh-surface", "(mesh-surface s [chord-tol])", "The discrete surface: an indexed triangle mesh within chord-tol (default CHORDTOL).", 1, 2, mesh_surface),
     builtin!("mesh-read", "(mesh-read \"file.stl\")", "Reads a triangle mesh from STL (ASCII or binary) or OBJ, welding shared vertices.", 1, 1, mesh_read),
     builtin!("mesh-write", "(mesh-write m \"file.obj\")", "Writes a surface or mesh as STL (binary) or OBJ, by extension; returns the file name.", 2, 2, mesh_write),
-    builtin!("surface-section", "(surface-section s plane-point plane-normal)", "The plane section of a surface: a list of polylines (closed where the section closes), on the true surface within GEOMTOL; a plane touching it at a point gives that point (x y z).", 3, 3, surface_section),
-    builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines on both true surfaces within GEOMTOL; a tangent contact as a point (x y z); where they coincide over a region (coplanar, same cylinder, sphere or cone), that region's boundary as closed loops.", 2, 2, surface_intersect),
+    builtin!("surface-section", "(surface-section s plane-point plane-normal)", "The plane section of a surface: a list of polylines (closed where the section closes), on the true surface within GEOMTOL; a plane touching it at a point gives that point (x y z); a region lying in the plane gives that region's boundary as closed loops.", 3, 3, surface_section),
+    builtin!("surface-intersect", "(surface-intersect s1 s2)", "The intersection curves of two surfaces, chained into polylines on both true surfaces within GEOMTOL; a tangent contact as a point (x y z); where they coincide over a region (any kinds), that region's boundary as closed loops; where they coincide everywhere with no boundary (equal spheres), (s1) itself.", 2, 2, surface_intersect),
     builtin!("trim-surface", "(trim-surface s cutter keep-point)", "The part of s, cut along its intersection with cutter, that holds the point nearest keep-point.", 3, 3, trim_surface),
     builtin!("surface-corners", "(surface-corners s [angle])", "The boundary corners: where the boundary's tangent turns by more than angle (default 30 degrees, in radians).", 1, 2, surface_corners),
     builtin!("extend-surface", "(extend-surface s distance [angle] [holes])", "The surface extended outward by distance along its boundary, split at corners (angle as surface-corners); holes extended inward unless holes is nil; an error where the strips would overlap.", 2, 4, extend_surface),
@@ -469,7 +469,11 @@ fn surface_section(it: &mut Interp, a: &[Value]) -> LResult {
 fn surface_intersect(it: &mut Interp, a: &[Value]) -> LResult {
     if let (Surf::Param(s1), Surf::Param(s2)) = (surf(it, &a[0])?, surf(it, &a[1])?) {
         let (tol, gtol) = (chord_tol(it), geomtol(it));
-        return polylines(surface::surface_intersect_tol(&s1, &s2, tol, gtol).map_err(mesh_err)?);
+        return match surface::surface_meet(&s1, &s2, tol, gtol).map_err(mesh_err)? {
+            surface::Meet::Curves(c) => polylines(c),
+            // Coincident everywhere, no boundary: the common surface itself (an OVERLAP).
+            surface::Meet::Everywhere => Ok(Value::list(vec![a[0].clone()])),
+        };
     }
     let (m1, m2) = (discrete(it, &a[0])?, discrete(it, &a[1])?);
     polylines(mesh::intersect_meshes(&m1, &m2))

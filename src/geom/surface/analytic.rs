@@ -19,9 +19,6 @@ pub(crate) fn analytic_intersect(
     tol: f64,
     chord_tol: f64,
 ) -> Option<Vec<Polyline3>> {
-    if let Some(loops) = super::coincide::coincident(a, b, tol, chord_tol) {
-        return Some(loops);
-    }
     match (a, b) {
         (Surface::Sphere(s1), Surface::Sphere(s2)) => Some(sphere_sphere(s1, s2, tol, chord_tol)),
         (Surface::Sphere(s), Surface::Plane(p)) | (Surface::Plane(p), Surface::Sphere(s)) => {

@@ -239,7 +239,14 @@ fn profile_implicit(ax: &Axis, r: &Revolve, mer: &Meridian, tol: f64) -> Vec<Cro
         return Vec::new(); // the same surface: a region, not curves
     }
     let mut roots: Vec<f64> = Vec::new();
+    // Samples in a run lying on the other surface belong to a common band (traced by
+    // `super::common` as a region), not to crossings.
+    let on = |i: usize| fs[i].abs() <= tol;
+    let band = |i: usize| on(i) && ((i > 0 && on(i - 1)) || (i + 1 < fs.len() && on(i + 1)));
     for i in 0..ts.len() {
+        if band(i) {
+            continue;
+        }
         if fs[i] == 0.0 {
             roots.push(ts[i]);
         }

@@ -6,11 +6,14 @@
 //! cylinders, revolved segments coplanar with the axis (cones, cylinder and annulus pieces) —
 //! lying on one meridian line (the common band: the meridian segments' overlap times the
 //! angular spans' overlap); and a surface of revolution whose whole profile lies on a sphere
-//! centred on its axis (the revolution itself: its boundary). Two equal spheres coincide
-//! everywhere and have no boundary: no loop. Other coincidences (a profile partly on the other
-//! surface, sweeps, ruled and Coons patches) are not detected here.
+//! centred on its axis (the revolution itself: its boundary). Two equal spheres, and a whole
+//! revolution of a meridian from pole to pole against its sphere, coincide everywhere and have
+//! no boundary: [`Overlap::Everywhere`]. Other coincidences (a profile partly on the other
+//! surface, sweeps, ruled and Coons patches) are traced on the true surfaces by
+//! [`super::common`].
 
 use super::coaxial::{circle, overlap, span_of, Axis, Span};
+use super::common::Overlap;
 use super::kinds::{Cylinder, Revolve, Sphere, Surface};
 use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
@@ -23,21 +26,27 @@ struct Band {
     span: Span,
 }
 
-/// The boundary loops of the region where `a` and `b` coincide; None when they do not.
-pub(crate) fn coincident(
-    a: &Surface,
-    b: &Surface,
-    tol: f64,
-    chord_tol: f64,
-) -> Option<Vec<Polyline3>> {
+/// The region where `a` and `b` coincide (its boundary loops, none when they only share a
+/// carrier and lie apart on it); None when they do not coincide in a way decided here.
+pub(crate) fn coincident(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) -> Option<Overlap> {
     match (a, b) {
+        (Surface::Sphere(s), Surface::Sphere(t)) => {
+            let same = s.center.distance(t.center) <= tol && (s.radius - t.radius).abs() <= tol;
+            same.then_some(Overlap::Everywhere)
+        }
         (Surface::Revolve(r), Surface::Sphere(s)) | (Surface::Sphere(s), Surface::Revolve(r)) => {
-            revolve_on_sphere(r, s, tol, chord_tol)
+            let loops = revolve_on_sphere(r, s, tol, chord_tol)?;
+            // A whole revolution with no boundary circle runs from pole to pole: the sphere.
+            Some(if loops.is_empty() && r.angle >= TAU {
+                Overlap::Everywhere
+            } else {
+                Overlap::Loops(loops)
+            })
         }
         _ => {
             let ax = axis_of(a)?;
             let (ba, bb) = (band(&ax, a, tol)?, band(&ax, b, tol)?);
-            common_band(&ax, &ba, &bb, tol, chord_tol)
+            common_band(&ax, &ba, &bb, tol, chord_tol).map(Overlap::Loops)
         }
     }
 }

@@ -9,6 +9,7 @@
 mod analytic;
 mod coaxial;
 mod coincide;
+mod common;
 mod cone;
 mod contact;
 mod error;
@@ -33,8 +34,8 @@ pub use kinds::{Coons, Cylinder, PlaneRegion, Revolve, Ruled, Sphere, Surface, S
 pub use ops::{
     arc_surface_hits, curve_on_surface, curve_surface_hits, curve_surface_hits_refined,
     segment_surface_hits, surface_area, surface_boundary, surface_intersect,
-    surface_intersect_seeded, surface_intersect_tol, surface_section, surface_section_seeded,
-    surface_section_tol,
+    surface_intersect_seeded, surface_intersect_tol, surface_meet, surface_section,
+    surface_section_seeded, surface_section_tol, Meet,
 };
 #[doc(hidden)]
 pub use ops::{surface_intersect_without_contacts, surface_section_without_contacts};

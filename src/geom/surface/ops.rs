@@ -102,6 +102,13 @@ fn section_seeded(
         curves.extend(contacts);
         Ok(curves)
     };
+    // A surface lying in the plane over a region: that region's boundary loops.
+    let n = plane_normal.normalize_or_zero();
+    if n != DVec3::ZERO && plane_point.is_finite() {
+        if let Some(l) = super::common::in_plane(s, plane_point, n, geom_tol, tol) {
+            return Ok(l);
+        }
+    }
     match s {
         Surface::Cylinder(c) => {
             if plane_normal.length() == 0.0 || !plane_normal.is_finite() || !plane_point.is_finite()
@@ -258,6 +265,32 @@ pub fn surface_intersect_tol(
     surface_intersect_seeded(a, b, chord_tol, chord_tol, geom_tol)
 }
 
+/// What two surfaces share: curves (crossings, tangent points, a common region's boundary
+/// loops), or the whole of both where they coincide everywhere with no boundary.
+#[derive(Debug, Clone)]
+pub enum Meet {
+    Curves(Vec<Polyline3>),
+    /// Coincident everywhere, no boundary (two equal spheres or tori): the other intersection
+    /// functions return no curve for it.
+    Everywhere,
+}
+
+/// [`surface_intersect_tol`], telling surfaces that coincide everywhere apart from surfaces
+/// that do not meet.
+pub fn surface_meet(
+    a: &Surface,
+    b: &Surface,
+    chord_tol: f64,
+    geom_tol: f64,
+) -> Result<Meet, SurfaceError> {
+    Ok(
+        match intersect_seeded(a, b, (chord_tol, chord_tol, geom_tol), true)? {
+            Some(c) => Meet::Curves(c),
+            None => Meet::Everywhere,
+        },
+    )
+}
+
 /// [`surface_intersect_tol`] with the seeding meshes made within `seed_tol`.
 pub fn surface_intersect_seeded(
     a: &Surface,
@@ -266,7 +299,7 @@ pub fn surface_intersect_seeded(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
-    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), true)
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), true).map(Option::unwrap_or_default)
 }
 
 /// [`surface_intersect_seeded`] without the tangent-contact search: for benchmarks, which
@@ -279,7 +312,7 @@ pub fn surface_intersect_without_contacts(
     chord_tol: f64,
     geom_tol: f64,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
-    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), false)
+    intersect_seeded(a, b, (seed_tol, chord_tol, geom_tol), false).map(Option::unwrap_or_default)
 }
 
 fn intersect_seeded(
@@ -287,12 +320,25 @@ fn intersect_seeded(
     b: &Surface,
     (seed_tol, chord_tol, geom_tol): (f64, f64, f64),
     contacts: bool,
-) -> Result<Vec<Polyline3>, SurfaceError> {
+) -> Result<Option<Vec<Polyline3>>, SurfaceError> {
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
+    // A common region is its boundary loops (None: everywhere, no boundary), with the closed
+    // form's curves elsewhere (the meshes of coincident surfaces cross all over the region, so
+    // other pairs give the loops alone).
+    match super::common::overlap(a, b, gtol, ctol) {
+        Some(super::common::Overlap::Loops(mut l)) => {
+            if let Some(c) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
+                l.extend(super::common::outside_common(a, b, c, gtol));
+            }
+            return Ok(Some(l));
+        }
+        Some(super::common::Overlap::Everywhere) => return Ok(None),
+        None => {}
+    }
     if let Some(curves) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
-        return Ok(curves);
+        return Ok(Some(curves));
     }
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
@@ -308,7 +354,7 @@ fn intersect_seeded(
         .collect();
     let mut curves = super::contact::regroup_pair(&pa, &pb, curves, gtol, ctol);
     if !contacts {
-        return Ok(curves);
+        return Ok(Some(curves));
     }
     // Touching without crossing: the meshes miss each other there. Seeded from both meshes'
     // vertices (a coarse plane region has none near a contact on the other surface).
@@ -318,7 +364,7 @@ fn intersect_seeded(
     let contacts =
         super::contact::tangent_contacts(&pb, &pa, &mb, &ma, &curves, seed_tol, gtol, ctol);
     curves.extend(contacts);
-    Ok(curves)
+    Ok(Some(curves))
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for

@@ -55,19 +55,19 @@ impl<'a> Patch<'a> {
         }
     }
 
-    #[inline]
-    pub fn eval(&self, uv: DVec2) -> DVec3 {
-        self.s.eval(uv.x, uv.y)
-    }
-
-    /// The diagonal of the surface's bounding box (from the seed grid).
+    /// The diagonal of the surface's bounding box (of its search grid).
     pub(crate) fn scale(&self) -> f64 {
         self.scale
     }
 
-    /// Whether parameter `k` wraps (the surface closes on itself across it).
-    pub(crate) fn is_periodic(&self, k: usize) -> bool {
-        self.periodic[k]
+    /// Whether each parameter direction closes on itself (a seam, not a boundary).
+    pub(crate) fn periodic(&self) -> [bool; 2] {
+        self.periodic
+    }
+
+    #[inline]
+    pub fn eval(&self, uv: DVec2) -> DVec3 {
+        self.s.eval(uv.x, uv.y)
     }
 
     /// Partial derivatives by central differences (one-sided at a domain edge).
@@ -123,9 +123,11 @@ impl<'a> Patch<'a> {
             }
             let (g0, g1) = (su.dot(r), sv.dot(r));
             let step = DVec2::new((c * g0 - b * g1) / det, (a * g1 - b * g0) / det);
+            let before = uv;
             uv -= step;
             self.normalise(&mut uv);
-            if step.length() <= 1e-15 {
+            // Held on the domain's edge, the next step would be the same one again.
+            if step.length() <= 1e-15 || uv == before {
                 break;
             }
         }

@@ -86,7 +86,7 @@ fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
 
 fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
     for k in 0..2 {
-        if !a.is_periodic(k) {
+        if !a.periodic()[k] {
             uv[k] = uv[k].clamp(0.0, 1.0);
         }
     }
@@ -97,7 +97,7 @@ fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
 fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
     let mut d = y - x;
     for k in 0..2 {
-        if a.is_periodic(k) {
+        if a.periodic()[k] {
             d[k] -= d[k].round();
         }
     }
@@ -140,7 +140,7 @@ fn walk(
         // A bounded parameter reaching its edge: the step ends there, and so does the walk.
         let mut at_edge = false;
         for k in 0..2 {
-            if a.is_periodic(k) || t[k] == 0.0 {
+            if a.periodic()[k] || t[k] == 0.0 {
                 continue;
             }
             let room = ((if t[k] > 0.0 { 1.0 } else { 0.0 }) - uv[k]) / t[k];

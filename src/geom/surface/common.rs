@@ -1,0 +1,646 @@
+//! Surfaces that coincide over a region, found on the true surfaces whatever their kinds and
+//! meshes: a ruled surface and a piece of itself, a Coons patch and a sub-patch, two sweeps of
+//! overlapping profiles along one path, a revolved profile lying partly on a cylinder or a
+//! sphere. Their intersection is that region, returned as its boundary loops, closed, as the
+//! analytic pairs ([`super::coincide`]) and coplanar regions ([`super::overlap`]) give theirs.
+//!
+//! A quick look first: samples of each surface are projected onto the other (Newton, as in
+//! [`super::refine`]); when none lies within the tolerance there is no common region. Otherwise
+//! the region is traced in the parameter domain of the surface that lies more on the other:
+//! its grid nodes are classified (on the other surface, with a neighbour on it too, so a node
+//! where the surfaces merely cross or touch along a line is not a region), the domain's own
+//! edges give the boundary pieces of that surface lying on the other, and marching squares give
+//! the rest (the other surface's boundary, or where the two part). Every boundary point is
+//! found by bisection of "lies on the other surface" along a grid edge, so it lies on both
+//! surfaces within the tolerance; the loops are then densified within the chord tolerance.
+//! Where the surfaces part tangentially the place is only defined to about √(tol·radius), where
+//! their distance reaches the tolerance. A common region narrower than a quarter of a grid cell
+//! (1/128 of the parameter range) is not seen.
+
+use super::hits::point_in_polygon;
+use super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
+use super::refine::Patch;
+use crate::geom::mesh::Polyline3;
+use glam::{DVec2, DVec3};
+use std::cell::Cell;
+use std::collections::HashMap;
+
+/// Where two surfaces coincide.
+#[derive(Debug, Clone)]
+pub(crate) enum Overlap {
+    /// The common region's boundary loops, closed.
+    Loops(Vec<Polyline3>),
+    /// Everywhere, and the common region has no boundary (two equal spheres or tori).
+    Everywhere,
+}
+
+/// Grid cells per parameter direction when tracing a region.
+const N: usize = 32;
+/// Samples per direction in the quick look.
+const K: usize = 12;
+
+/// What a point is tested against: a surface, or the plane of a section.
+enum Target<'a> {
+    Sphere(Sphere),
+    Cylinder(Cylinder),
+    Region(&'a PlaneRegion),
+    Plane(DVec3, DVec3),
+    Patch(Patch<'a>, Cell<Option<DVec2>>),
+}
+
+impl<'a> Target<'a> {
+    fn of(s: &'a Surface) -> Target<'a> {
+        match s {
+            Surface::Sphere(sp) => Target::Sphere(*sp),
+            Surface::Cylinder(c) => Target::Cylinder(*c),
+            Surface::Plane(p) => Target::Region(p),
+            _ => Target::Patch(Patch::new(s), Cell::new(None)),
+        }
+    }
+
+    /// Whether `p` lies on the target within `tol` (inside its extent).
+    fn on(&self, p: DVec3, tol: f64) -> bool {
+        match self {
+            Target::Sphere(s) => (p.distance(s.center) - s.radius).abs() <= tol,
+            Target::Cylinder(c) => {
+                let h = (p - c.base).dot(c.axis);
+                let radial = (p - c.base - c.axis * h).length();
+                (radial - c.radius).abs() <= tol && h >= -tol && h <= c.height + tol
+            }
+            Target::Region(r) => {
+                r.normal.dot(p - r.boundary[0]).abs() <= tol
+                    && point_in_polygon(p, &r.boundary, r.normal, tol).is_in()
+            }
+            Target::Plane(o, n) => n.dot(p - *o).abs() <= tol,
+            Target::Patch(patch, hint) => {
+                // A warm start from the last point is tried first; a miss is checked from the
+                // search grid (the warm start may have slid into another local minimum).
+                let try_from = |start: Option<DVec2>| {
+                    let uv = patch.project(p, start);
+                    (patch.eval(uv).distance(p) <= tol, uv)
+                };
+                // A miss at the domain's edge is past the surface's boundary; close to it,
+                // the nearest point; only a far interior miss may be another local minimum.
+                let (mut ok, mut uv) = try_from(hint.get());
+                let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
+                let periodic = patch.periodic();
+                let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
+                if !ok && !near && !at_edge && hint.get().is_some() {
+                    (ok, uv) = try_from(None);
+                }
+                if ok {
+                    hint.set(Some(uv));
+                }
+                ok
+            }
+        }
+    }
+}
+
+/// The region where `a` and `b` coincide: in closed form for the analytic pairs
+/// ([`super::coincide`]), traced on the true surfaces when a free-form kind is involved.
+pub(crate) fn overlap(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) -> Option<Overlap> {
+    super::coincide::coincident(a, b, tol, chord_tol)
+        .or_else(|| common_region(a, b, tol, chord_tol))
+}
+
+/// The curves (of a closed form, found beside a common region) that do not lie in the common
+/// region of `a` and `b`: a curve whose middle point lies on both surfaces with the surfaces
+/// coinciding around it belongs to the region, whose boundary loops already describe it.
+pub(crate) fn outside_common(
+    a: &Surface,
+    b: &Surface,
+    curves: Vec<Polyline3>,
+    tol: f64,
+) -> Vec<Polyline3> {
+    let (s, other) = if free_form(a) { (a, b) } else { (b, a) };
+    let t = Target::of(other);
+    let patch = Patch::new(s);
+    let periodic = patch.periodic();
+    let tr = Tracer {
+        patch,
+        periodic,
+        target: &t,
+        tol,
+        chord_tol: tol,
+        nodes: Vec::new(),
+        cross: HashMap::new(),
+    };
+    curves
+        .into_iter()
+        .filter(|c| {
+            let Some(&p) = c.points.get(c.points.len() / 2) else {
+                return false;
+            };
+            let uv = tr.patch.project(p, None);
+            !(tr.patch.eval(uv).distance(p) <= tol && tr.in_region(uv))
+        })
+        .collect()
+}
+
+/// Whether the kind is one the analytic code cannot decide coincidence for.
+fn free_form(s: &Surface) -> bool {
+    matches!(
+        s,
+        Surface::Ruled(_) | Surface::Revolve(_) | Surface::Sweep(_) | Surface::Coons(_)
+    )
+}
+
+/// The region where `a` and `b` coincide, on the true surfaces; None when they share no region
+/// (or neither is a free-form kind: the analytic pairs are decided in closed form).
+pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) -> Option<Overlap> {
+    if !(free_form(a) || free_form(b)) {
+        return None;
+    }
+    let (ta, tb) = (Target::of(a), Target::of(b));
+    let on_b = on_count(a, &tb, tol);
+    let on_a = on_count(b, &ta, tol);
+    if on_a == 0 && on_b == 0 {
+        return None;
+    }
+    // Trace in the domain of the one lying more on the other (a plane region has none).
+    let a_first = !matches!(a, Surface::Plane(_))
+        && (matches!(b, Surface::Plane(_)) || on_b * sample_count(b) >= on_a * sample_count(a));
+    let (s, t) = if a_first { (a, &tb) } else { (b, &ta) };
+    trace(s, t, tol, chord_tol)
+}
+
+/// The part of `s` lying in the plane through `p` with unit normal `n`, as its boundary loops;
+/// None when no region of it lies in the plane.
+pub(crate) fn in_plane(
+    s: &Surface,
+    p: DVec3,
+    n: DVec3,
+    tol: f64,
+    chord_tol: f64,
+) -> Option<Vec<Polyline3>> {
+    match s {
+        Surface::Plane(r) => {
+            let flat = r.normal.cross(n).length() <= 1e-12
+                && r.boundary.iter().all(|q| n.dot(*q - p).abs() <= tol);
+            flat.then(|| {
+                vec![Polyline3 {
+                    points: r.boundary.clone(),
+                    closed: true,
+                }]
+            })
+        }
+        Surface::Sphere(_) | Surface::Cylinder(_) => None,
+        _ => {
+            let t = Target::Plane(p, n);
+            if on_count(s, &t, tol) == 0 {
+                return None;
+            }
+            match trace(s, &t, tol, chord_tol)? {
+                Overlap::Loops(l) => Some(l),
+                Overlap::Everywhere => None,
+            }
+        }
+    }
+}
+
+/// The quick look's sample points of a surface (inside the polygon for a planar region).
+fn samples(s: &Surface) -> Vec<DVec3> {
+    use super::ParamSurface;
+    let mut out = Vec::with_capacity(K * K);
+    for j in 0..K {
+        for i in 0..K {
+            let (u, v) = ((i as f64 + 0.5) / K as f64, (j as f64 + 0.5) / K as f64);
+            let p = s.eval(u, v);
+            if let Surface::Plane(r) = s {
+                if !point_in_polygon(p, &r.boundary, r.normal, 0.0).is_in() {
+                    continue;
+                }
+            }
+            out.push(p);
+        }
+    }
+    out
+}
+
+fn sample_count(s: &Surface) -> usize {
+    samples(s).len().max(1)
+}
+
+/// How many of `s`'s samples lie on `t`, per sample of `s` scaled by its count (see the caller).
+fn on_count(s: &Surface, t: &Target, tol: f64) -> usize {
+    samples(s).into_iter().filter(|p| t.on(*p, tol)).count()
+}
+
+/// A key of the marching grid: a node, or the crossing on a horizontal (u) or vertical (v)
+/// grid edge starting at a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum Key {
+    Node(usize, usize),
+    H(usize, usize),
+    V(usize, usize),
+}
+
+/// A grid edge along the domain's edge: its nodes in counter-clockwise order and its key.
+type SideEdge = ((usize, usize), (usize, usize), Key);
+
+/// A traced boundary point: its parameters and which of them sit on a domain edge.
+#[derive(Debug, Clone, Copy)]
+struct Pt {
+    uv: DVec2,
+    pinned: [bool; 2],
+}
+
+struct Tracer<'a, 'b> {
+    patch: Patch<'a>,
+    periodic: [bool; 2],
+    target: &'b Target<'b>,
+    tol: f64,
+    chord_tol: f64,
+    nodes: Vec<bool>,
+    cross: HashMap<Key, DVec2>,
+}
+
+/// Traces the region of `s` lying on `t`.
+fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64) -> Option<Overlap> {
+    let patch = Patch::new(s);
+    let periodic = patch.periodic();
+    let mut tr = Tracer {
+        patch,
+        periodic,
+        target: t,
+        // Half the tolerance, so the boundary points found by bisection lie within it.
+        tol: 0.5 * tol,
+        chord_tol,
+        nodes: Vec::new(),
+        cross: HashMap::new(),
+    };
+    tr.classify();
+    let segs = tr.segments();
+    if segs.is_empty() {
+        let all = tr.nodes.iter().all(|&x| x);
+        return (all && tr.boundaryless()).then_some(Overlap::Everywhere);
+    }
+    let loops: Vec<Polyline3> = tr
+        .chain(&segs)
+        .into_iter()
+        .filter_map(|(pts, closed)| tr.polyline(&pts, closed))
+        .collect();
+    (!loops.is_empty()).then_some(Overlap::Loops(loops))
+}
+
+impl Tracer<'_, '_> {
+    fn eval(&self, uv: DVec2) -> DVec3 {
+        let mut q = uv;
+        self.patch.normalise(&mut q);
+        self.patch.eval(q)
+    }
+
+    /// Whether the point at `uv` lies on the target (off outside the domain).
+    fn on(&self, uv: DVec2) -> bool {
+        for k in 0..2 {
+            if !self.periodic[k] && !(0.0..=1.0).contains(&uv[k]) {
+                return false;
+            }
+        }
+        self.target.on(self.eval(uv), self.tol)
+    }
+
+    /// A node belongs to the region when it lies on the target and so does a point a quarter
+    /// cell away in one of four oblique directions (an irrational slope, so a crossing curve
+    /// along a grid line or a diagonal does not count).
+    fn in_region(&self, uv: DVec2) -> bool {
+        if !self.on(uv) {
+            return false;
+        }
+        let d = 0.25 / N as f64;
+        let phi = 0.618_033_988_749_895;
+        [(1.0, phi), (-phi, 1.0), (-1.0, -phi), (phi, -1.0)]
+            .iter()
+            .any(|&(x, y)| self.on(uv + DVec2::new(x, y) * d))
+    }
+
+    fn idx(&self, i: usize, j: usize) -> usize {
+        let i = if self.periodic[0] { i % N } else { i };
+        let j = if self.periodic[1] { j % N } else { j };
+        j * (N + 1) + i
+    }
+
+    fn node(&self, i: usize, j: usize) -> bool {
+        self.nodes[self.idx(i, j)]
+    }
+
+    fn classify(&mut self) {
+        let mut nodes = vec![false; (N + 1) * (N + 1)];
+        for j in 0..=N {
+            for i in 0..=N {
+                let wrapped = (self.periodic[0] && i == N) || (self.periodic[1] && j == N);
+                if !wrapped {
+                    nodes[j * (N + 1) + i] = self.in_region(uv_of(i, j));
+                }
+            }
+        }
+        // Nodes on the far side of a seam are the ones on the near side.
+        for j in 0..=N {
+            for i in 0..=N {
+                nodes[j * (N + 1) + i] = nodes[self.idx(i, j)];
+            }
+        }
+        self.nodes = nodes;
+    }
+
+    /// Whether the surface has no boundary of its own: every domain edge is a seam or collapses
+    /// to a point (a pole).
+    fn boundaryless(&self) -> bool {
+        (0..2).all(|k| {
+            self.periodic[k]
+                || [0.0, 1.0].iter().all(|&c| {
+                    let at = |t: f64| {
+                        let mut uv = DVec2::splat(t);
+                        uv[k] = c;
+                        self.eval(uv)
+                    };
+                    let p0 = at(0.0);
+                    (1..=8).all(|i| at(i as f64 / 8.0).distance(p0) <= self.tol)
+                })
+        })
+    }
+
+    fn norm_key(&self, k: Key) -> Key {
+        let w0 = |i: usize| if self.periodic[0] { i % N } else { i };
+        let w1 = |j: usize| if self.periodic[1] { j % N } else { j };
+        match k {
+            Key::Node(i, j) => Key::Node(w0(i), w1(j)),
+            Key::H(i, j) => Key::H(i, w1(j)),
+            Key::V(i, j) => Key::V(w0(i), j),
+        }
+    }
+
+    /// The directed boundary segments: marching squares in every cell (the region on the
+    /// left), and the domain's own edges where its nodes are in the region.
+    fn segments(&mut self) -> Vec<(Key, Key)> {
+        let mut segs = Vec::new();
+        for j in 0..N {
+            for i in 0..N {
+                self.cell(i, j, &mut segs);
+            }
+        }
+        // Domain edges, counter-clockwise: bottom, right, top, left.
+        let sides: [(bool, Vec<SideEdge>); 4] = [
+            (
+                !self.periodic[1],
+                (0..N).map(|i| ((i, 0), (i + 1, 0), Key::H(i, 0))).collect(),
+            ),
+            (
+                !self.periodic[0],
+                (0..N).map(|j| ((N, j), (N, j + 1), Key::V(N, j))).collect(),
+            ),
+            (
+                !self.periodic[1],
+                (0..N)
+                    .rev()
+                    .map(|i| ((i + 1, N), (i, N), Key::H(i, N)))
+                    .collect(),
+            ),
+            (
+                !self.periodic[0],
+                (0..N)
+                    .rev()
+                    .map(|j| ((0, j + 1), (0, j), Key::V(0, j)))
+                    .collect(),
+            ),
+        ];
+        for (real, edges) in sides {
+            if !real {
+                continue;
+            }
+            for ((ai, aj), (bi, bj), e) in edges {
+                let (va, vb) = (self.node(ai, aj), self.node(bi, bj));
+                let (na, nb) = (
+                    self.norm_key(Key::Node(ai, aj)),
+                    self.norm_key(Key::Node(bi, bj)),
+                );
+                match (va, vb) {
+                    (true, true) => segs.push((na, nb)),
+                    (true, false) => {
+                        self.crossing(e);
+                        segs.push((na, self.norm_key(e)));
+                    }
+                    (false, true) => {
+                        self.crossing(e);
+                        segs.push((self.norm_key(e), nb));
+                    }
+                    (false, false) => {}
+                }
+            }
+        }
+        segs
+    }
+
+    fn cell(&mut self, i: usize, j: usize, segs: &mut Vec<(Key, Key)>) {
+        let c = [
+            self.node(i, j),
+            self.node(i + 1, j),
+            self.node(i + 1, j + 1),
+            self.node(i, j + 1),
+        ];
+        let edges = [
+            Key::H(i, j),
+            Key::V(i + 1, j),
+            Key::H(i, j + 1),
+            Key::V(i, j),
+        ];
+        let exit: Vec<usize> = (0..4).filter(|&k| c[k] && !c[(k + 1) % 4]).collect();
+        if exit.is_empty() {
+            return;
+        }
+        let entry = |k: usize| !c[k] && c[(k + 1) % 4];
+        // A saddle is joined through the middle when the cell's centre is in the region.
+        let through = exit.len() == 2 && self.on(uv_of(i, j) + DVec2::splat(0.5 / N as f64));
+        for &x in &exit {
+            let e = if through {
+                (1..4).map(|d| (x + d) % 4).find(|&m| entry(m))
+            } else {
+                (1..4).map(|d| (x + 4 - d) % 4).find(|&m| entry(m))
+            };
+            let Some(e) = e else { continue };
+            self.crossing(edges[x]);
+            self.crossing(edges[e]);
+            segs.push((self.norm_key(edges[x]), self.norm_key(edges[e])));
+        }
+    }
+
+    /// The crossing on a grid edge: bisection between its node in the region and the other,
+    /// keeping the end that lies on the target.
+    fn crossing(&mut self, e: Key) {
+        let e = self.norm_key(e);
+        if self.cross.contains_key(&e) {
+            return;
+        }
+        let (a, b) = match e {
+            Key::H(i, j) => ((i, j), (i + 1, j)),
+            Key::V(i, j) => ((i, j), (i, j + 1)),
+            Key::Node(..) => unreachable!("crossings lie on edges"),
+        };
+        let (ua, ub) = (uv_of(a.0, a.1), uv_of(b.0, b.1));
+        let (lo, hi) = if self.node(a.0, a.1) {
+            (ua, ub)
+        } else {
+            (ub, ua)
+        };
+        let p = self.bisect(lo, hi);
+        self.cross.insert(e, p);
+    }
+
+    fn bisect(&self, mut lo: DVec2, mut hi: DVec2) -> DVec2 {
+        for _ in 0..60 {
+            if lo.distance(hi) <= 1e-15 {
+                break;
+            }
+            let m = 0.5 * (lo + hi);
+            if self.on(m) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        lo
+    }
+
+    fn pt(&self, k: Key) -> Pt {
+        let (uv, pinned_i, pinned_j) = match k {
+            Key::Node(i, j) => (uv_of(i, j), Some(i), Some(j)),
+            Key::H(_, j) => (self.cross[&k], None, Some(j)),
+            Key::V(i, _) => (self.cross[&k], Some(i), None),
+        };
+        let edge =
+            |x: Option<usize>, k: usize| !self.periodic[k] && x.is_some_and(|x| x == 0 || x == N);
+        Pt {
+            uv,
+            pinned: [edge(pinned_i, 0), edge(pinned_j, 1)],
+        }
+    }
+
+    /// Directed segments joined head to tail into loops (open chains where a loop does not
+    /// close, which a consistent classification never leaves).
+    fn chain(&self, segs: &[(Key, Key)]) -> Vec<(Vec<Pt>, bool)> {
+        let mut from: HashMap<Key, Vec<usize>> = HashMap::new();
+        for (n, s) in segs.iter().enumerate() {
+            from.entry(s.0).or_default().push(n);
+        }
+        let mut used = vec![false; segs.len()];
+        let mut out = Vec::new();
+        for s in 0..segs.len() {
+            if used[s] {
+                continue;
+            }
+            used[s] = true;
+            let start = segs[s].0;
+            let mut keys = vec![start];
+            let mut end = segs[s].1;
+            while end != start {
+                let next = from
+                    .get(&end)
+                    .and_then(|v| v.iter().copied().find(|&n| !used[n]));
+                let Some(n) = next else { break };
+                used[n] = true;
+                keys.push(end);
+                end = segs[n].1;
+            }
+            let closed = end == start;
+            if !closed {
+                keys.push(end);
+            }
+            out.push((keys.into_iter().map(|k| self.pt(k)).collect(), closed));
+        }
+        out
+    }
+
+    /// The loop on the surface, densified within the chord tolerance; None when it collapses
+    /// (a domain edge that is a pole).
+    fn polyline(&self, pts: &[Pt], closed: bool) -> Option<Polyline3> {
+        let m = pts.len();
+        let segs = if closed { m } else { m - 1 };
+        let mut out: Vec<DVec3> = Vec::with_capacity(2 * m);
+        for i in 0..m {
+            out.push(self.eval(pts[i].uv));
+            if i < segs {
+                self.densify(pts[i], pts[(i + 1) % m], 0, &mut out);
+            }
+        }
+        out.dedup_by(|x, y| x.distance(*y) <= self.tol);
+        while out.len() > 1 && out[0].distance(out[out.len() - 1]) <= self.tol {
+            out.pop();
+        }
+        (out.len() >= 3 || (!closed && out.len() >= 2)).then_some(Polyline3 {
+            points: out,
+            closed,
+        })
+    }
+
+    /// The parameter step from `a` to `b`, the short way round a periodic direction.
+    fn delta(&self, a: DVec2, b: DVec2) -> DVec2 {
+        let mut d = b - a;
+        for k in 0..2 {
+            if self.periodic[k] {
+                d[k] -= d[k].round();
+            }
+        }
+        d
+    }
+
+    fn densify(&self, a: Pt, b: Pt, depth: u32, out: &mut Vec<DVec3>) {
+        let (pa, pb) = (self.eval(a.uv), self.eval(b.uv));
+        if depth >= 40 || pa.distance(pb) <= 2.0 * self.tol {
+            return;
+        }
+        let d = self.delta(a.uv, b.uv);
+        let mid = a.uv + 0.5 * d;
+        let pinned = [a.pinned[0] && b.pinned[0], a.pinned[1] && b.pinned[1]];
+        let m = if pinned[0] || pinned[1] {
+            // Along a domain edge: the edge's own point, when it lies on the target.
+            let mut q = mid;
+            for k in 0..2 {
+                if pinned[k] {
+                    q[k] = a.uv[k];
+                }
+            }
+            self.on(q).then_some(q)
+        } else {
+            self.across(mid, d)
+        };
+        let Some(m) = m else { return };
+        let pm = self.eval(m);
+        let chord = pb - pa;
+        let off = (pm - pa).cross(chord).length() / chord.length();
+        if off > self.chord_tol {
+            let mp = Pt { uv: m, pinned };
+            self.densify(a, mp, depth + 1, out);
+            out.push(pm);
+            self.densify(mp, b, depth + 1, out);
+        }
+    }
+
+    /// The boundary point across the chord `mid ± d⊥`: the region lies left of the chord's
+    /// direction `d`; searched outward up to the chord's length, then bisected.
+    fn across(&self, mid: DVec2, d: DVec2) -> Option<DVec2> {
+        let len = d.length();
+        if len == 0.0 {
+            return None;
+        }
+        let right = DVec2::new(d.y, -d.x) / len;
+        let inside = self.on(mid);
+        let dir = if inside { right } else { -right };
+        let mut s = len / 16.0;
+        while s <= len {
+            let q = mid + dir * s;
+            if self.on(q) != inside {
+                let (lo, hi) = if inside { (mid, q) } else { (q, mid) };
+                let mut p = self.bisect(lo, hi);
+                self.patch.normalise(&mut p);
+                return Some(p);
+            }
+            s *= 2.0;
+        }
+        None
+    }
+}
+
+fn uv_of(i: usize, j: usize) -> DVec2 {
+    DVec2::new(i as f64 / N as f64, j as f64 / N as f64)
+}
