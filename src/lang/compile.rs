@@ -31,6 +31,8 @@ pub enum Operand {
     /// A self-evaluating atom (number, string, nil, T).
     Const(Value),
     Code(Code),
+    /// `(+ v 1)`, `(1- v)` and the like (`fastpath::Arith`).
+    Arith(super::fastpath::Arith),
 }
 
 impl Operand {
@@ -45,6 +47,7 @@ impl Operand {
             }),
             Operand::Const(v) => Ok(v.clone()),
             Operand::Code(c) => c(it),
+            Operand::Arith(a) => a.eval(it),
         }
     }
 
@@ -54,6 +57,7 @@ impl Operand {
             Operand::Var(i) => Box::new(move |it| Ok(it.values[i].clone())),
             Operand::Const(v) => Box::new(move |_| Ok(v.clone())),
             Operand::Code(c) => c,
+            Operand::Arith(a) => Box::new(move |it| a.eval(it)),
         }
     }
 }
@@ -121,7 +125,20 @@ impl<'a> Compiler<'a> {
         match form {
             Value::Sym(S_T) => Operand::Const(Value::T),
             Value::Sym(s) => Operand::Var(s.idx()),
-            Value::Cons(_) => Operand::Code(self.compile(form)),
+            Value::Cons(c) => {
+                // The same depth check as `compile`'s.
+                if let Value::Sym(head) = c.car {
+                    if self.depth < MAX_DEPTH && super::eval::stack_pointer() >= self.stack_floor {
+                        let name = self.syms.name(head);
+                        if let Some(a) =
+                            super::fastpath::arith(head, name, &c.cdr, self.span_of(form))
+                        {
+                            return Operand::Arith(a);
+                        }
+                    }
+                }
+                Operand::Code(self.compile(form))
+            }
             other => Operand::Const(other.clone()),
         }
     }

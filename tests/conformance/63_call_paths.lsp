@@ -117,3 +117,41 @@ a
 (defun wrap (n) (if (> n 0) (+ n 2147483647) (- n 1)))
 (list (wrap 1) (wrap -2147483648))
 ;=> (-2147483648 2147483647)
+;; `(- v k)`, `(+ v k)`, `(1+ v)`, `(1- v)` as arguments, branches and setq values are
+;; evaluated in place; reals, non-numbers and redefinitions take the general path.
+(defun down (n acc) (if (< n 1) acc (down (- n 1) (cons n acc))))
+(list (down 3 nil) (down 2.5 nil))
+;=> ((1 2 3) (1.5 2.5))
+(defun ups (n) (list (+ n 1) (+ n -1) (- n 2) (1+ n) (1- n)))
+(list (ups 0) (ups 1.5) (ups 2147483647) (ups -2147483648))
+;=> ((1 -1 -2 1 -1) (2.5 0.5 -0.5 2.5 0.5) (-2147483648 2147483646 2147483645 -2147483648 2147483646) (-2147483647 2147483647 2147483646 -2147483647 2147483647))
+(ups "x")
+;!! bad argument type: numberp: "x"
+(ups nil)
+;!! bad argument type: numberp: nil
+(setq i 0)
+(repeat 5 (setq i (1+ i)))
+i
+;=> 5
+;; Redefining `-` and `1+` between calls, and `1-` while a recursion runs.
+(setq old- - old1+ 1+ old1- 1-)
+(setq - +)
+(ups 0)
+;=> (1 -1 2 1 -1)
+(setq - old-)
+(ups 0)
+;=> (1 -1 -2 1 -1)
+(setq 1+ (lambda (x) (old1+ (old1+ x))))
+(ups 0)
+;=> (1 -1 -2 2 -1)
+(setq 1+ old1+)
+(setq flip T)
+(defun walk (n)
+  (if (numberp n)
+    (progn (if (and flip (= n 3)) (setq flip nil 1- (lambda (x) 'stop))) (walk (1- n)))
+    n))
+(walk 5)
+;=> STOP
+(setq 1- old1-)
+((lambda (n) (1- n)) 5)
+;=> 4
