@@ -118,6 +118,73 @@ fn max_steps_stops_runaway_loops() {
     );
 }
 
+const DEF_FIB: &str = "(defun fib (n) (if (< n 2) n (+ (fib (- n 1)) (fib (- n 2)))))";
+
+/// Steps taken by each source, evaluated in turn in one interpreter.
+fn steps_of(srcs: &'static [&'static str]) -> Vec<u64> {
+    with_eval_stack(move || {
+        let mut it = new_interp();
+        it.out = Box::new(std::io::sink());
+        it.set_max_steps(Some(1 << 40));
+        srcs.iter()
+            .map(|s| {
+                let before = it.steps();
+                it.eval_source("test", s).unwrap();
+                it.steps() - before
+            })
+            .collect()
+    })
+}
+
+#[test]
+fn every_call_path_counts_one_step_per_call() {
+    let r = steps_of(&[
+        DEF_FIB,
+        // fib(15) makes 2 fib(16) - 1 = 1973 calls; the inlined `<`, `+`, `-` are no calls.
+        "(fib 15)",
+        // Five parameters take the general path, locals the save stack: 11 calls each.
+        "(defun g5 (a b c d e) (if (> a 0) (g5 (1- a) b c d e) 0)) (g5 10 0 0 0 0)",
+        "(defun g2 (a b / x) (if (> a 0) (g2 (1- a) b) 0)) (g2 10 0)",
+        // `apply` and `mapcar` call through the slice path: 3 + 3 calls.
+        "(defun one (x) x) (apply 'one '(1)) (mapcar 'one '(1 2))",
+        // A redefined `<` is a user function: one more step per test (1973 calls of each).
+        "(setq old< <) (defun < (a b) (old< a b)) (fib 15) (setq < old<)",
+    ]);
+    assert_eq!(r[1..], [1973, 11, 11, 3, 2 * 1973]);
+}
+
+#[test]
+fn parameters_come_back_after_a_budget_or_stack_abort_deep_in_a_recursion() {
+    let r = run_all(
+        &[
+            "(setq n 'outer a 'outer)",
+            DEF_FIB,
+            DEF_F,
+            "(fib 25)",
+            "n",
+            "(defun h (a b / c) (h (1+ a) b))",
+            "(h 0 'b)",
+            "(list n a)",
+        ],
+        Some(200_000),
+    );
+    assert!(
+        r[3].starts_with("ERR: evaluation budget exceeded"),
+        "{}",
+        r[3]
+    );
+    assert_eq!(r[4], "OUTER");
+    assert!(
+        r[6].starts_with("ERR: evaluation budget exceeded"),
+        "{}",
+        r[6]
+    );
+    assert_eq!(r[7], "(OUTER OUTER)");
+    let r = run_all(&["(setq n 'outer)", DEF_F, "(f 100000000)", "n"], None);
+    assert!(r[2].starts_with("ERR: stack overflow"), "{}", r[2]);
+    assert_eq!(r[3], "OUTER");
+}
+
 #[test]
 fn interrupt_flag_stops_a_loop() {
     let r = with_eval_stack(|| {

@@ -31,6 +31,8 @@ pub enum Operand {
     /// A self-evaluating atom (number, string, nil, T).
     Const(Value),
     Code(Code),
+    /// `(+ v 1)`, `(1- v)` and the like (`fastpath::Arith`).
+    Arith(super::fastpath::Arith),
 }
 
 impl Operand {
@@ -45,6 +47,7 @@ impl Operand {
             }),
             Operand::Const(v) => Ok(v.clone()),
             Operand::Code(c) => c(it),
+            Operand::Arith(a) => a.eval(it),
         }
     }
 
@@ -54,6 +57,7 @@ impl Operand {
             Operand::Var(i) => Box::new(move |it| Ok(it.values[i].clone())),
             Operand::Const(v) => Box::new(move |_| Ok(v.clone())),
             Operand::Code(c) => c,
+            Operand::Arith(a) => Box::new(move |it| a.eval(it)),
         }
     }
 }
@@ -121,7 +125,20 @@ impl<'a> Compiler<'a> {
         match form {
             Value::Sym(S_T) => Operand::Const(Value::T),
             Value::Sym(s) => Operand::Var(s.idx()),
-            Value::Cons(_) => Operand::Code(self.compile(form)),
+            Value::Cons(c) => {
+                // The same depth check as `compile`'s.
+                if let Value::Sym(head) = c.car {
+                    if self.depth < MAX_DEPTH && super::eval::stack_pointer() >= self.stack_floor {
+                        let name = self.syms.name(head);
+                        if let Some(a) =
+                            super::fastpath::arith(head, name, &c.cdr, self.span_of(form))
+                        {
+                            return Operand::Arith(a);
+                        }
+                    }
+                }
+                Operand::Code(self.compile(form))
+            }
             other => Operand::Const(other.clone()),
         }
     }
@@ -155,29 +172,37 @@ impl<'a> Compiler<'a> {
         }
     }
 
+    /// The head, operands and span of a two-argument comparison the fast path may inline
+    /// (`fastpath::is_comparison`); `None` for any other form.
+    fn comparison(&mut self, form: &Value) -> Option<(Sym, Vec<Operand>, Option<Span>)> {
+        let Value::Cons(c) = form else { return None };
+        let Value::Sym(head) = c.car else { return None };
+        // What `compile` would do for this form, up to the inline comparison itself.
+        if super::fastpath::is_comparison(self.syms.name(head))
+            && c.cdr.iter().count() == 2
+            && self.depth < MAX_DEPTH
+            && super::eval::stack_pointer() >= self.stack_floor
+        {
+            self.depth += 1;
+            let span = self.span_of(form);
+            let args = self.operands(&c.cdr);
+            self.depth -= 1;
+            return Some((head, args, span));
+        }
+        None
+    }
+
     /// A condition: the fused comparison when the form is an inlined one (`fastpath`),
     /// otherwise the form's ordinary code.
     fn test(&mut self, form: &Value) -> Result<super::fastpath::Test, Code> {
-        if let Value::Cons(c) = form {
-            if let Value::Sym(head) = c.car {
-                // What `compile` would do for this form, up to the inline comparison itself.
-                if super::fastpath::is_comparison(self.syms.name(head))
-                    && c.cdr.iter().count() == 2
-                    && self.depth < MAX_DEPTH
-                    && super::eval::stack_pointer() >= self.stack_floor
-                {
-                    self.depth += 1;
-                    let span = self.span_of(form);
-                    let args = self.operands(&c.cdr);
-                    let name = self.syms.name(head);
-                    let r = super::fastpath::compile_test(head, name, args, span)
-                        .map_err(|args| super::fastpath::compile(head, name, args, span));
-                    self.depth -= 1;
-                    return r;
-                }
+        match self.comparison(form) {
+            Some((head, args, span)) => {
+                let name = self.syms.name(head);
+                super::fastpath::compile_test(head, name, args, span)
+                    .map_err(|args| super::fastpath::compile(head, name, args, span))
             }
+            None => Err(self.compile(form)),
         }
-        Err(self.compile(form))
     }
 
     fn compile_args(&mut self, args: &Value) -> Box<[Code]> {
@@ -224,13 +249,26 @@ impl<'a> Compiler<'a> {
                 if !(2..=3).contains(&n) {
                     return arity_error(n < 2, span);
                 }
-                let test = self.test(&arg(0));
+                let cond = self.comparison(&arg(0));
                 // Branches are often a variable or a constant (a recursion's base case).
-                let then = self.operand(&arg(1));
-                let els = if n == 3 {
+                let mut then = self.operand(&arg(1));
+                let mut els = if n == 3 {
                     self.operand(&arg(2))
                 } else {
                     Operand::Const(Value::Nil)
+                };
+                let test = match cond {
+                    Some((head, args, tspan)) => {
+                        let name = self.syms.name(head);
+                        match super::fastpath::compile_if(head, name, args, tspan, then, els) {
+                            Ok(code) => return code,
+                            Err((args, t, e)) => {
+                                (then, els) = (t, e);
+                                Err(super::fastpath::compile(head, name, args, tspan))
+                            }
+                        }
+                    }
+                    None => self.test(&arg(0)),
                 };
                 let test = match test {
                     Ok(test) => {
@@ -678,7 +716,7 @@ where
         Value::Func(l) => {
             // The clone keeps the function alive if its body redefines its own name.
             let l = l.clone();
-            match it.enter_lambda_with(&l, argv) {
+            match argv.enter(it, &l) {
                 Ok(v) => Ok(v),
                 Err(e) => Err(add_frame(it, with_span(e, span), Some(fsym), span)),
             }
@@ -703,14 +741,26 @@ where
 /// fixed arrays are taken apart element by element: moved through an array iterator, each
 /// value was copied through the stack, and reloading 16 bytes written a field at a time
 /// stalled on store forwarding (a third of fib's call path, by perf's samples).
-pub(crate) trait BindArgs {
+pub(crate) trait BindArgs: Sized {
     fn count(&self) -> usize;
     /// Binds the arguments to `params`, which has `count()` symbols.
     fn bind_to(self, it: &mut Interp, params: &[Sym]);
+    /// Calls `l` with these arguments.
+    #[inline(always)]
+    fn enter(self, it: &mut Interp, l: &Lambda) -> LResult {
+        it.enter_lambda_with(l, self)
+    }
 }
 
+/// A compiled call's fixed arguments. Besides `bind_to`, `enter` runs the whole call with the
+/// parameters' outer values kept in the Rust frame instead of the save stack: a push and a pop
+/// of the two save-stack vectors per parameter, with their capacity and length updates, were
+/// a fifth of fib's call path. The bindings are the same dynamic ones (the new values are in
+/// the symbols' cells while the body runs); only where the outer values wait differs. Errors
+/// leave through this frame too, so the outer values come back on every exit, after
+/// `*error*` has seen the bindings in place.
 macro_rules! bind_array {
-    ($n:literal, [$($i:literal $a:ident),*]) => {
+    ($n:literal, [$($i:literal $a:ident),*], [$($ri:literal $r:ident),*]) => {
         impl BindArgs for [Value; $n] {
             #[inline(always)]
             fn count(&self) -> usize {
@@ -722,15 +772,41 @@ macro_rules! bind_array {
                 let [$($a),*] = self;
                 $(it.bind(params[$i], $a);)*
             }
+            #[inline(always)]
+            #[allow(unused_variables)]
+            fn enter(self, it: &mut Interp, l: &Lambda) -> LResult {
+                let params: &[Sym; $n] = match (*l.params).try_into() {
+                    Ok(p) => p,
+                    Err(_) => return Err(arg_count_error($n < l.params.len())),
+                };
+                it.tick()?;
+                it.check_stack()?;
+                let [$($a),*] = self;
+                // Each parameter's cell takes its argument; the name now holds the outer value.
+                $(let $a = std::mem::replace(&mut it.values[params[$i].idx()], $a);)*
+                let base = it.saves_len();
+                for p in l.locals.iter() {
+                    it.bind(*p, Value::Nil);
+                }
+                let mut r = (l.body)(it);
+                if r.is_err() {
+                    r = it.offer_error(r);
+                }
+                it.unwind_to(base);
+                // Outer values back in reverse order: a parameter repeated (bound to NIL's cell
+                // twice) ends with its first outer value, as with the save stack.
+                $(std::mem::replace(&mut it.values[params[$ri].idx()], $r).release();)*
+                r
+            }
         }
     };
 }
 
-bind_array!(0, []);
-bind_array!(1, [0 a]);
-bind_array!(2, [0 a, 1 b]);
-bind_array!(3, [0 a, 1 b, 2 c]);
-bind_array!(4, [0 a, 1 b, 2 c, 3 d]);
+bind_array!(0, [], []);
+bind_array!(1, [0 a], [0 a]);
+bind_array!(2, [0 a, 1 b], [1 b, 0 a]);
+bind_array!(3, [0 a, 1 b, 2 c], [2 c, 1 b, 0 a]);
+bind_array!(4, [0 a, 1 b, 2 c, 3 d], [3 d, 2 c, 1 b, 0 a]);
 
 impl BindArgs for Args {
     fn count(&self) -> usize {
@@ -809,6 +885,14 @@ impl Interp {
         }
         self.unwind_to(base);
         r
+    }
+
+    /// An error leaving a user function, offered to `*error*` while the function's bindings
+    /// are still in place.
+    #[cold]
+    #[inline(never)]
+    fn offer_error(&mut self, r: LResult) -> LResult {
+        r.map_err(|e| self.offer_to_error_handler(e))
     }
 
     #[cold]

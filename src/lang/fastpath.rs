@@ -213,6 +213,14 @@ fn fallback(it: &mut Interp, fsym: Sym, args: &[Value], span: Option<Span>) -> L
     it.apply(&f, args).map_err(with_span)
 }
 
+/// `fallback` with the two arguments by value: the hot path then builds no argument array
+/// for it (the compiler stored both values in one on every call, in case).
+#[cold]
+#[inline(never)]
+fn fallback2(it: &mut Interp, fsym: Sym, x: Value, y: Value, span: Option<Span>) -> LResult {
+    fallback(it, fsym, &[x, y], span)
+}
+
 /// An operand whose evaluation is known when compiling, so the closures below are
 /// monomorphised per operand shape and a variable or constant costs no indirect call.
 trait Opnd: 'static {
@@ -259,6 +267,91 @@ impl Opnd for OCode {
     }
 }
 
+/// `(+ v k)`, `(- v k)`, `(1+ v)`, `(1- v)` with `v` a variable and `k` an integer constant, as
+/// an operand: a call's argument (`(fib (- n 1))`), a branch, a `setq` value. Evaluated in the
+/// caller's own code, without a closure call and the result passed through memory (two of
+/// them per fib call were a fifth of its instructions). The general path is `bin_code`'s and
+/// `un_code`'s: redefined operators, reals and non-numbers go there.
+pub struct Arith {
+    var: usize,
+    /// What the operation adds to an integer (`-k` for `-`; the sums wrap alike).
+    delta: i32,
+    op: ArithOp,
+    head: Sym,
+    b: &'static Builtin,
+    span: Option<Span>,
+}
+
+enum ArithOp {
+    Bin(Bin, i32),
+    Un(Un),
+}
+
+impl Arith {
+    #[inline(always)]
+    pub fn eval(&self, it: &mut Interp) -> LResult {
+        if let Value::Int(a) = it.values[self.var] {
+            if holds(it, self.head.idx(), self.b) {
+                return Ok(Value::Int(a.wrapping_add(self.delta)));
+            }
+        }
+        self.general(it)
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn general(&self, it: &mut Interp) -> LResult {
+        let xv = it.values[self.var].clone();
+        let fi = self.head.idx();
+        match self.op {
+            ArithOp::Bin(op, k) => {
+                let yv = Value::Int(k);
+                match bin_numbers(op, &xv, &yv) {
+                    Some(v) if holds(it, fi, self.b) => Ok(v),
+                    _ => fallback2(it, self.head, xv, yv, self.span),
+                }
+            }
+            ArithOp::Un(op) => match un_number(op, &xv) {
+                Some(v) if holds(it, fi, self.b) => Ok(v),
+                _ => fallback(it, self.head, &[xv], self.span),
+            },
+        }
+    }
+}
+
+/// The `Arith` operand of `(head args...)`, when it is one of its shapes.
+pub fn arith(head: Sym, name: &str, args: &Value, span: Option<Span>) -> Option<Arith> {
+    let k = KNOWN.get().and_then(Option::as_ref)?;
+    let var = |v: &Value| match v {
+        Value::Sym(s) if *s != super::symbols::S_T => Some(s.idx()),
+        _ => None,
+    };
+    let a: Vec<&Value> = args.iter().collect();
+    let lname = name.to_ascii_lowercase();
+    let (op, delta, b) = match (lname.as_str(), a.as_slice()) {
+        ("+" | "-", [x, Value::Int(c)]) => {
+            let (_, op, b) = k.bins.iter().find(|(n, _, _)| *n == lname)?;
+            let delta = if lname == "+" { *c } else { c.wrapping_neg() };
+            var(x)?;
+            (ArithOp::Bin(*op, *c), delta, *b)
+        }
+        ("1+" | "1-", [x]) => {
+            let (_, op, b) = k.uns.iter().find(|(n, _, _)| *n == lname)?;
+            var(x)?;
+            (ArithOp::Un(*op), if lname == "1+" { 1 } else { -1 }, *b)
+        }
+        _ => return None,
+    };
+    Some(Arith {
+        var: var(a[0])?,
+        delta,
+        op,
+        head,
+        b,
+        span,
+    })
+}
+
 /// Runs `$body` with `$x` bound to the operand as its concrete `Opnd` type.
 macro_rules! with_opnd {
     ($o:expr, $x:ident => $body:expr) => {
@@ -277,6 +370,10 @@ macro_rules! with_opnd {
             }
             Operand::Code(c) => {
                 let $x = OCode(c);
+                $body
+            }
+            a @ Operand::Arith(_) => {
+                let $x = OCode(a.into_code());
                 $body
             }
         }
@@ -299,6 +396,9 @@ fn bin_code<const OP: u8, X: Opnd, Y: Opnd>(
     Box::new(move |it| {
         let xv = x.get(it)?;
         let yv = y.get(it)?;
+        // The cell first, then the arithmetic: with the result computed before the check, it
+        // went to the stack field by field and was copied out as 16 bytes, a store-forwarding
+        // stall that made the float loop a third slower on fewer instructions.
         if holds(it, fi, b) {
             if let Some(v) = bin_numbers(bin_of(OP), &xv, &yv) {
                 // Both are numbers: nothing to drop.
@@ -307,7 +407,7 @@ fn bin_code<const OP: u8, X: Opnd, Y: Opnd>(
                 return Ok(v);
             }
         }
-        fallback(it, head, &[xv, yv], span)
+        fallback2(it, head, xv, yv, span)
     })
 }
 
@@ -411,18 +511,102 @@ fn test_code<const OP: u8, X: Opnd, Y: Opnd>(
     Box::new(move |it| {
         let xv = x.get(it)?;
         let yv = y.get(it)?;
-        if holds(it, fi, b) {
-            if let Some(t) = cmp_numbers(bin_of(OP), &xv, &yv) {
+        if let Some(t) = cmp_numbers(bin_of(OP), &xv, &yv) {
+            if holds(it, fi, b) {
                 std::mem::forget(xv);
                 std::mem::forget(yv);
                 return Ok(t);
             }
         }
-        let v = fallback(it, head, &[xv, yv], span)?;
-        let t = v.truthy();
-        v.release();
-        Ok(t)
+        test_fallback(it, head, xv, yv, span)
     })
+}
+
+/// A comparison's truth from the builtin now in `head`'s cell (redefined, or not numbers).
+#[cold]
+#[inline(never)]
+fn test_fallback(
+    it: &mut Interp,
+    head: Sym,
+    xv: Value,
+    yv: Value,
+    span: Option<Span>,
+) -> Result<bool, Exn> {
+    let v = fallback(it, head, &[xv, yv], span)?;
+    let t = v.truthy();
+    v.release();
+    Ok(t)
+}
+
+fn if_code<const OP: u8, X: Opnd, Y: Opnd>(
+    head: Sym,
+    b: &'static Builtin,
+    (x, y): (X, Y),
+    then: Operand,
+    els: Operand,
+    span: Option<Span>,
+) -> Code {
+    let fi = head.idx();
+    Box::new(move |it| {
+        let xv = x.get(it)?;
+        let yv = y.get(it)?;
+        let t = match cmp_numbers(bin_of(OP), &xv, &yv) {
+            Some(t) if holds(it, fi, b) => {
+                std::mem::forget(xv);
+                std::mem::forget(yv);
+                t
+            }
+            _ => test_fallback(it, head, xv, yv, span)?,
+        };
+        if t {
+            then.eval(it)
+        } else {
+            els.eval(it)
+        }
+    })
+}
+
+/// The comparison's operator and builtin, when `name` is an inlined comparison.
+fn comparison_op(name: &str) -> Option<(Bin, &'static Builtin)> {
+    let k = KNOWN.get().and_then(Option::as_ref)?;
+    let lname = name.to_ascii_lowercase();
+    let (_, op, b) = k.bins.iter().find(|(n, _, _)| *n == lname)?;
+    match op {
+        Bin::Add | Bin::Sub | Bin::Mul | Bin::Div => None,
+        _ => Some((*op, *b)),
+    }
+}
+
+/// `(if (< a b) then else)`: the comparison, the choice and the branches in one closure (the
+/// test's own closure call and its boolean result were a fifth of fib's time). `Err` gives the
+/// pieces back when `head` is not an inlined comparison with two arguments.
+#[allow(clippy::type_complexity)]
+pub fn compile_if(
+    head: Sym,
+    name: &str,
+    mut args: Vec<Operand>,
+    span: Option<Span>,
+    then: Operand,
+    els: Operand,
+) -> Result<Code, (Vec<Operand>, Operand, Operand)> {
+    let Some((op, b)) = comparison_op(name).filter(|_| args.len() == 2) else {
+        return Err((args, then, els));
+    };
+    let y = args.pop().expect("two args");
+    let x = args.pop().expect("two args");
+    macro_rules! if_op {
+        ($($v:ident),*) => {
+            match op {
+                $(Bin::$v => {
+                    const O: u8 = Bin::$v as u8;
+                    with_opnd!(x, x => with_opnd!(y, y =>
+                        if_code::<O, _, _>(head, b, (x, y), then, els, span)))
+                })*
+                Bin::Add | Bin::Sub | Bin::Mul | Bin::Div => unreachable!("a comparison"),
+            }
+        };
+    }
+    Ok(if_op!(Lt, Gt, Le, Ge, Eq, Ne))
 }
 
 /// `(if (< a b) ...)`, `(while (< i n) ...)`: a two-argument comparison as a condition gives
