@@ -86,17 +86,28 @@ pub(crate) fn tangent_contacts(
 /// The gap from `a(uv)` to `b`: signed along b's normal at the nearest point (found from
 /// `warm`, the last one, which it updates).
 fn pair_gap(a: &Patch, b: &Patch, warm: &Cell<Option<DVec2>>, uv: DVec2) -> GapAt {
-    let mut uv = uv;
-    a.normalise(&mut uv);
-    let pa = a.eval(uv);
-    let ub = b.project(pa, warm.get());
-    warm.set(Some(ub));
-    let pb = b.eval(ub);
+    let (pa, ub, pb) = nearest_pair(a, b, warm, uv);
     GapAt {
         signed: (pa - pb).dot(unit_normal(b, ub)),
         dist: pa.distance(pb),
         point: 0.5 * (pa + pb),
     }
+}
+
+/// `a(uv)` (wrapped into a's domain), the parameters of b's point nearest it (searched from
+/// `warm`, the last one, which it updates) and that point.
+fn nearest_pair(
+    a: &Patch,
+    b: &Patch,
+    warm: &Cell<Option<DVec2>>,
+    uv: DVec2,
+) -> (DVec3, DVec2, DVec3) {
+    let mut uv = uv;
+    a.normalise(&mut uv);
+    let pa = a.eval(uv);
+    let ub = b.project(pa, warm.get());
+    warm.set(Some(ub));
+    (pa, ub, b.eval(ub))
 }
 
 /// The gap from `a(uv)` to the plane through `p0` with unit normal `n`.
@@ -397,12 +408,7 @@ fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(
 fn touch(a: &Patch, b: &Patch, p: DVec3, tol: f64) -> Option<(DVec2, DVec3)> {
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let eval = |uv: DVec2| {
-        let mut uv = uv;
-        a.normalise(&mut uv);
-        let pa = a.eval(uv);
-        let ub = b.project(pa, warm.get());
-        warm.set(Some(ub));
-        let pb = b.eval(ub);
+        let (pa, _, pb) = nearest_pair(a, b, &warm, uv);
         (pa.distance(pb), pa, pb)
     };
     let start = a.project(p, None);
