@@ -30,6 +30,11 @@ fn slope(m: f64, h: f64, x0: f64, x1: f64, y0: f64, y1: f64) -> Surface {
     .unwrap()
 }
 
+/// The surface's curves with a plane region, at CT and GEOMTOL 1e-9.
+fn cut(k: &Surface, plane: Surface) -> Vec<Polyline3> {
+    surface_intersect_tol(k, &plane, CT, 1e-9).unwrap()
+}
+
 fn quad(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
     let n = 400_000;
     let w = (b - a) / n as f64;
@@ -79,13 +84,7 @@ const CT: f64 = 1e-7;
 #[test]
 fn an_oblique_plane_cuts_a_whole_ellipse() {
     let (m, h) = (0.3, 2.0);
-    let r = surface_intersect_tol(
-        &cone(0.0, 4.0, TAU),
-        &slope(m, h, -9., 9., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(0.0, 4.0, TAU), slope(m, h, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     assert!(r[0].closed);
     on_both(&r, m, h);
@@ -104,13 +103,7 @@ fn an_oblique_plane_cuts_a_whole_ellipse() {
 fn the_ellipse_is_clipped_by_the_region_and_the_partial_revolution() {
     let (m, h) = (0.3, 2.0);
     // Region x ≤ 1: s cos θ = 1 at cos θ = 2 / 2.3.
-    let r = surface_intersect_tol(
-        &cone(0.0, 4.0, TAU),
-        &slope(m, h, -9., 1., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(0.0, 4.0, TAU), slope(m, h, -9., 1., -9., 9.));
     assert_eq!(r.len(), 1);
     assert!(!r[0].closed);
     on_both(&r, m, h);
@@ -120,13 +113,7 @@ fn the_ellipse_is_clipped_by_the_region_and_the_partial_revolution() {
         assert!((end.x - 1.0).abs() <= 1e-9, "{end}");
     }
     // Half a revolution (θ in [0, π]): half the ellipse.
-    let r = surface_intersect_tol(
-        &cone(0.0, 4.0, PI),
-        &slope(m, h, -9., 9., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(0.0, 4.0, PI), slope(m, h, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     on_both(&r, m, h);
     assert!(r[0].points.iter().all(|p| p.y >= -1e-12));
@@ -137,13 +124,7 @@ fn the_ellipse_is_clipped_by_the_region_and_the_partial_revolution() {
 fn a_plane_parallel_to_a_ruling_cuts_a_parabola_up_to_the_rim() {
     // z = 2x + 1: s = 1 / (2 − 2 cos θ), up to the rim s = 2 where cos θ = 3/4.
     let (m, h) = (2.0, 1.0);
-    let r = surface_intersect_tol(
-        &cone(0.0, 4.0, TAU),
-        &slope(m, h, -9., 9., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(0.0, 4.0, TAU), slope(m, h, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     assert!(!r[0].closed);
     on_both(&r, m, h);
@@ -159,13 +140,7 @@ fn a_steep_plane_cuts_both_branches_of_a_hyperbola_on_a_double_cone() {
     // z = 3x + 1 on the double cone z in [−4, 4]: upper branch s = 1/(2 − 3 cos θ) > 0 up to
     // s = 2 (cos θ ≤ 1/2); lower branch s < 0 down to s = −2 (cos θ ≥ 5/6).
     let (m, h) = (3.0, 1.0);
-    let r = surface_intersect_tol(
-        &cone(-4.0, 4.0, TAU),
-        &slope(m, h, -9., 9., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(-4.0, 4.0, TAU), slope(m, h, -9., 9., -9., 9.));
     assert_eq!(r.len(), 2, "{r:?}");
     on_both(&r, m, h);
     let (c1, c2) = ((0.5f64).acos(), (5.0f64 / 6.0).acos());
@@ -178,13 +153,7 @@ fn a_steep_plane_cuts_both_branches_of_a_hyperbola_on_a_double_cone() {
     assert_rel(l[0], e[0], 1e-6);
     assert_rel(l[1], e[1], 1e-6);
     // On the single nappe z ≥ 0 only the upper branch.
-    let r = surface_intersect_tol(
-        &cone(0.0, 4.0, TAU),
-        &slope(m, h, -9., 9., -9., 9.),
-        CT,
-        1e-9,
-    )
-    .unwrap();
+    let r = cut(&cone(0.0, 4.0, TAU), slope(m, h, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     assert_rel(total(&r), upper, 1e-6);
 }
@@ -193,7 +162,7 @@ fn a_steep_plane_cuts_both_branches_of_a_hyperbola_on_a_double_cone() {
 fn planes_through_the_apex_give_rulings_or_the_apex() {
     let k = cone(0.0, 4.0, TAU);
     // z = 3x: rulings at cos θ = 2/3, from the apex to the rim, √20 long each.
-    let r = surface_intersect_tol(&k, &slope(3.0, 0.0, -9., 9., -9., 9.), CT, 1e-9).unwrap();
+    let r = cut(&k, slope(3.0, 0.0, -9., 9., -9., 9.));
     assert_eq!(r.len(), 2);
     on_both(&r, 3.0, 0.0);
     for c in &r {
@@ -204,13 +173,13 @@ fn planes_through_the_apex_give_rulings_or_the_apex() {
         assert!((rim.x - 4.0 / 3.0).abs() <= 1e-12, "{rim}");
     }
     // z = 2x touches the cone along the ruling θ = 0: the line (0,0,0)–(2,0,4).
-    let r = surface_intersect_tol(&k, &slope(2.0, 0.0, -9., 9., -9., 9.), CT, 1e-9).unwrap();
+    let r = cut(&k, slope(2.0, 0.0, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     assert_eq!(r[0].points.len(), 2);
     let far = r[0].points.iter().find(|p| p.z > 1.0).unwrap();
     assert!(far.distance(DVec3::new(2.0, 0.0, 4.0)) <= 1e-12, "{far}");
     // z = 1.5x meets the cone only at the apex.
-    let r = surface_intersect_tol(&k, &slope(1.5, 0.0, -9., 9., -9., 9.), CT, 1e-9).unwrap();
+    let r = cut(&k, slope(1.5, 0.0, -9., 9., -9., 9.));
     assert_eq!(r.len(), 1);
     assert_eq!(r[0].points.len(), 1);
     assert!(r[0].points[0].length() <= 1e-12);
@@ -219,10 +188,10 @@ fn planes_through_the_apex_give_rulings_or_the_apex() {
     let s = surface_section_tol(&k, DVec3::ZERO, n, CT, 1e-9).unwrap();
     assert_eq!(s, r);
     // Lifted by 1e-3 it misses (the cone is only above the apex there).
-    let r = surface_intersect_tol(&k, &slope(1.5, -1e-3, -9., 9., -9., 9.), CT, 1e-9).unwrap();
+    let r = cut(&k, slope(1.5, -1e-3, -9., 9., -9., 9.));
     assert!(r.is_empty(), "{r:?}");
     // The region's edge x ≤ 1 clips the rulings of z = 3x at z = 3.
-    let r = surface_intersect_tol(&k, &slope(3.0, 0.0, -9., 1., -9., 9.), CT, 1e-9).unwrap();
+    let r = cut(&k, slope(3.0, 0.0, -9., 1., -9., 9.));
     assert_eq!(r.len(), 2);
     for c in &r {
         assert!(c.points.iter().all(|p| p.z <= 3.0 + 1e-12));

@@ -47,6 +47,16 @@ impl Axis {
         let d = p - self.o;
         self.a.cross(dir).length() <= 1e-12 && (d - self.a * d.dot(self.a)).length() <= tol
     }
+
+    /// A cylinder about this axis line as (radius, z at its base, z at its top), z measured
+    /// along the axis; None when its axis is another line.
+    pub(super) fn cylinder(&self, c: &Cylinder, tol: f64) -> Option<(f64, f64, f64)> {
+        if !self.same_line(c.base, c.axis, tol) {
+            return None;
+        }
+        let z0 = (c.base - self.o).dot(self.a);
+        Some((c.radius, z0, z0 + c.height * c.axis.dot(self.a).signum()))
+    }
 }
 
 /// The angular span a surface covers about the axis at a meridian crossing: (start, sweep).
@@ -77,19 +87,10 @@ pub(crate) fn coaxial_intersect(
     };
     let ax = Axis::new(rev.axis_point, rev.axis_dir);
     let mer = match other {
-        Surface::Cylinder(Cylinder {
-            base,
-            axis,
-            radius,
-            height,
-        }) => {
-            if !ax.same_line(*base, *axis, tol) {
-                return None;
-            }
-            let z0 = (*base - ax.o).dot(ax.a);
-            let z1 = z0 + height * axis.dot(ax.a).signum();
+        Surface::Cylinder(c) => {
+            let (radius, z0, z1) = ax.cylinder(c, tol)?;
             Meridian::Line {
-                r: *radius,
+                r: radius,
                 lo: z0.min(z1),
                 hi: z0.max(z1),
             }

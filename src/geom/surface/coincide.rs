@@ -14,7 +14,7 @@
 
 use super::coaxial::{circle, overlap, span_of, Axis, Span};
 use super::common::Overlap;
-use super::kinds::{Cylinder, Revolve, Sphere, Surface};
+use super::kinds::{Revolve, Sphere, Surface};
 use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
 use std::f64::consts::TAU;
@@ -63,20 +63,11 @@ fn axis_of(s: &Surface) -> Option<Axis> {
 /// profile that is not a segment in one meridian half-plane).
 fn band(ax: &Axis, s: &Surface, tol: f64) -> Option<Band> {
     match s {
-        Surface::Cylinder(Cylinder {
-            base,
-            axis,
-            radius,
-            height,
-        }) => {
-            if !ax.same_line(*base, *axis, tol) {
-                return None;
-            }
-            let z0 = (*base - ax.o).dot(ax.a);
-            let z1 = z0 + height * axis.dot(ax.a).signum();
+        Surface::Cylinder(c) => {
+            let (radius, z0, z1) = ax.cylinder(c, tol)?;
             Some(Band {
-                m0: DVec2::new(*radius, z0),
-                m1: DVec2::new(*radius, z1),
+                m0: DVec2::new(radius, z0),
+                m1: DVec2::new(radius, z1),
                 span: (0.0, TAU),
             })
         }
