@@ -109,43 +109,60 @@ fn call1(it: &mut Interp, fsym: Sym, a: &Operand, span: Option<Span>) -> Ret {
     if let Err(e) = check_defined(it, fsym, span) {
         return Ret::pack(Err(e));
     }
-    // An integer argument (a counter, `(- n 1)`) is built in the parameter's cell itself: as
-    // a general value it was assembled on the stack in pieces and copied out whole, which
-    // stalls the reload (`int` has no side effects, so `eval` may run after it).
+    // An integer argument (a counter, `(- n 1)`) is written into the parameter's cell as it is
+    // made: as a general value it was assembled on the stack in pieces and copied out whole,
+    // which stalls the reload (`int` has no side effects, so `eval` may run after it).
     if let Some(n) = a.int(it) {
-        return call1_with(it, fsym, Value::Int(n), span);
+        return match user1(it, fsym) {
+            Some(l) => {
+                let r = enter1(it, &l, |c| *c = Value::Int(n));
+                leave1(it, r, fsym, span)
+            }
+            None => Ret::pack(dispatch(it, fsym, [Value::Int(n)], span)),
+        };
     }
-    match a.eval(it) {
-        Ok(x) => call1_with(it, fsym, x, span),
-        Err(e) => Ret::pack(Err(e)),
-    }
-}
-
-#[inline(always)]
-fn call1_with(it: &mut Interp, fsym: Sym, x: Value, span: Option<Span>) -> Ret {
-    if let Value::Func(l) = &it.values[fsym.idx()] {
-        if l.params.len() == 1 {
-            // The clone keeps the function alive if its body redefines its own name.
-            let l = l.clone();
-            let r = enter1(it, &l, x);
-            return if r.is_err() {
-                frame_raw(it, r, fsym, span)
-            } else {
-                r
-            };
+    let x = match a.eval(it) {
+        Ok(x) => x,
+        Err(e) => return Ret::pack(Err(e)),
+    };
+    match user1(it, fsym) {
+        Some(l) => {
+            let r = enter1(it, &l, move |c| *c = x);
+            leave1(it, r, fsym, span)
         }
+        None => Ret::pack(dispatch(it, fsym, [x], span)),
     }
-    Ret::pack(dispatch(it, fsym, [x], span))
 }
 
-/// `bind_array`'s `enter` for one parameter, with the result packed.
+/// The user function of one parameter `fsym` holds, if it holds one. The clone keeps the
+/// function alive if its body redefines its own name.
 #[inline(always)]
-fn enter1(it: &mut Interp, l: &Lambda, x: Value) -> Ret {
+fn user1(it: &Interp, fsym: Sym) -> Option<Rc<Lambda>> {
+    match &it.values[fsym.idx()] {
+        Value::Func(l) if l.params.len() == 1 => Some(l.clone()),
+        _ => None,
+    }
+}
+
+#[inline(always)]
+fn leave1(it: &Interp, r: Ret, fsym: Sym, span: Option<Span>) -> Ret {
+    if r.is_err() {
+        frame_raw(it, r, fsym, span)
+    } else {
+        r
+    }
+}
+
+/// `bind_array`'s `enter` for one parameter, whose cell `set` fills, with the result packed.
+#[inline(always)]
+fn enter1(it: &mut Interp, l: &Lambda, set: impl FnOnce(&mut Value)) -> Ret {
     if let Err(e) = it.tick().and_then(|()| it.check_stack()) {
         return Ret::pack(Err(e));
     }
     let p = l.params[0].idx();
-    let outer = std::mem::replace(&mut it.values[p], x);
+    let cell = &mut it.values[p];
+    let outer = std::mem::take(cell);
+    set(cell);
     let base = it.saves_len();
     for s in l.locals.iter() {
         it.bind(*s, Value::Nil);
