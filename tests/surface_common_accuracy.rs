@@ -69,7 +69,6 @@ fn fillet_profile() -> Arc<Curve> {
 #[test]
 fn the_profile_is_the_closed_form_one() {
     let c = fillet_profile();
-    use lispcad::geom::ParamCurve;
     for i in 0..=20 {
         let p = c.eval(2.0 / 3.0 + i as f64 / 60.0);
         assert!((p.distance(v(1.0 + R, 2.0, 0.0)) - R).abs() <= 1e-12, "{p}");
