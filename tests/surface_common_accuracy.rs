@@ -5,11 +5,13 @@
 //! form (the arc starts at y = 2, at x = 2).
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_tol, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 use std::sync::Arc;
+
+mod surface_support;
+use surface_support::check_loops;
 
 const CT: f64 = 1e-6;
 const GT: f64 = 1e-9;
@@ -29,25 +31,10 @@ fn check(
     on: impl Fn(DVec3) -> bool,
     reach: &[&dyn Fn(DVec3) -> bool],
 ) {
-    for (x, y) in [(a, b), (b, a)] {
-        let r = surface_intersect_tol(x, y, CT, GT).unwrap();
-        assert_eq!(r.len(), loops);
-        assert!(r.iter().all(|c| c.closed));
-        let total: f64 = r.iter().map(Polyline3::length).sum();
-        assert!(
-            (total - length).abs() <= 1e-6 * length,
-            "length {total} vs {length}"
-        );
-        for p in r.iter().flat_map(|c| &c.points) {
-            assert!(on(*p), "{p}");
-        }
+    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, CT, GT).unwrap();
+    for r in check_loops(meet, a, b, loops, length, on) {
         for (k, e) in reach.iter().enumerate() {
             assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
-        }
-        for _ in 0..2 {
-            let again = surface_intersect_tol(x, y, CT, GT).unwrap();
-            assert!(again.len() == r.len());
-            assert!(again.iter().zip(&r).all(|(c, d)| c.points == d.points));
         }
     }
 }

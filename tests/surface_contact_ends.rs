@@ -3,46 +3,11 @@
 //! revolved surface) lying on a plane region that covers x in [1, 3] only. The contact is the
 //! ruling z = 0, y = 0 cut by the region: from (1, 0, 0) to (3, 0, 0), written here.
 
-use lispcad::geom::curve::Curve;
-use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_seeded, Surface};
 use lispcad::geom::DVec3;
-use std::f64::consts::PI;
-use std::sync::Arc;
 
-fn cylinders() -> Vec<(&'static str, Surface)> {
-    let c = DVec3::new(0.0, 0.0, 1.0);
-    let c0 = Curve::circle(c, 1.0, Some(DVec3::X)).unwrap();
-    let c1 = Curve::circle(c + DVec3::X * 4.0, 1.0, Some(DVec3::X)).unwrap();
-    let guide = Curve::line(c, c + DVec3::X * 4.0).unwrap();
-    let prof = Curve::line(DVec3::new(0.0, 1.0, 1.0), DVec3::new(4.0, 1.0, 1.0)).unwrap();
-    vec![
-        ("ruled", Surface::ruled(Arc::new(c0.clone()), Arc::new(c1))),
-        (
-            "sweep",
-            Surface::sweep(Arc::new(c0), Arc::new(guide)).unwrap(),
-        ),
-        (
-            "revolve",
-            Surface::revolve(Arc::new(prof), c, DVec3::X, 2.0 * PI).unwrap(),
-        ),
-    ]
-}
-
-fn summary(r: &[Polyline3]) -> String {
-    r.iter()
-        .map(|c| {
-            format!(
-                "[{} pts len {:.12} {:?}..{:?}]",
-                c.points.len(),
-                c.length(),
-                c.points.first(),
-                c.points.last()
-            )
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
-}
+mod surface_support;
+use surface_support::{cylinders, summary};
 
 #[test]
 fn a_contact_line_ends_at_the_other_surfaces_boundary_to_geomtol() {
