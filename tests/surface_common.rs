@@ -13,11 +13,10 @@ use lispcad::geom::surface::{
 };
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
-use std::process::Command;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::check_loops;
+use surface_support::{check_loops, eval};
 
 const CT: f64 = 1e-6;
 const GT: f64 = 1e-9;
@@ -261,18 +260,6 @@ fn surfaces_coinciding_everywhere_are_told_apart_from_surfaces_that_do_not_meet(
 
 #[test]
 fn the_builtin_returns_the_surface_itself_for_an_everywhere_overlap() {
-    let eval = |expr: &str| {
-        let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-            .args(["eval", expr])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8(out.stdout).unwrap().trim().to_string()
-    };
     assert_eq!(
         eval("(surface-intersect (sphere-surface '(0 0 0) 2) (sphere-surface '(0 0 0) 2))"),
         "(#<SURFACE SPHERE R2>)"

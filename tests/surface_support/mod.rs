@@ -1,5 +1,6 @@
 //! What the surface-intersection tests share: the cylinders built through the mesh-path kinds,
-//! a one-line summary of a result for assertion messages, and the check that two surfaces'
+//! a one-line summary of a result for assertion messages, `lispcad eval` of one expression, and
+//! the check that two surfaces'
 //! common region comes back as the expected closed loops, the same bits on every run.
 #![allow(dead_code)] // each test file uses its own part of this module
 
@@ -8,6 +9,7 @@ use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::Surface;
 use lispcad::geom::DVec3;
 use std::f64::consts::PI;
+use std::process::Command;
 use std::sync::Arc;
 
 /// Three cylinders of radius 1 about the x axis through (0, 0, 1), from x = 0 to 4, built
@@ -82,4 +84,18 @@ pub fn check_loops(
             r
         })
         .collect()
+}
+
+/// What `lispcad eval EXPR` prints, trimmed; the command must succeed.
+pub fn eval(expr: &str) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .args(["eval", expr])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap().trim().to_string()
 }

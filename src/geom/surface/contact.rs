@@ -395,14 +395,17 @@ fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(
     }
     (0..va.len())
         .filter(|&i| low[i] && has_edge[i])
-        .filter(|&i| {
-            !curves
-                .iter()
-                .flat_map(|c| c.points.iter())
-                .any(|q| q.distance(va[i]) <= 4.0 * reach[i])
-        })
+        .filter(|&i| !near_points(va[i], curves, 4.0 * reach[i]))
         .map(|i| (i, reach[i]))
         .collect()
+}
+
+/// Whether a point of `curves` lies within `r` of `p` (a seed there belongs to a curve found).
+fn near_points(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
+    curves
+        .iter()
+        .flat_map(|c| c.points.iter())
+        .any(|q| q.distance(p) <= r)
 }
 
 /// The midpoints of edges of `m` that come nearer the other surface (`to_b`, within `gap`) than
@@ -428,14 +431,8 @@ fn low_edges(
             let l = va[i].distance(va[j]);
             let q = 0.5 * (va[i] + va[j]);
             let d = to_b(q);
-            if d <= gap && d < dist[i].min(dist[j]) {
-                let near_curve = curves
-                    .iter()
-                    .flat_map(|c| c.points.iter())
-                    .any(|p| p.distance(q) <= 4.0 * l);
-                if !near_curve {
-                    out.push((q, l));
-                }
+            if d <= gap && d < dist[i].min(dist[j]) && !near_points(q, curves, 4.0 * l) {
+                out.push((q, l));
             }
         }
     }
