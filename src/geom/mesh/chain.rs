@@ -9,6 +9,7 @@
 use glam::DVec3;
 use std::cmp::Ordering;
 use std::collections::HashMap;
+use std::hash::Hash;
 
 /// A polyline in space. A closed polyline does not repeat its first point at the end.
 #[derive(Debug, Clone, PartialEq)]
@@ -151,6 +152,45 @@ fn canonical(mut pts: Vec<DVec3>, closed: bool) -> Polyline3 {
     }
 }
 
+/// Chains directed segments that meet end to start into runs of keys, each flagged closed when
+/// it comes back to its first key; a run that cannot be continued stays open with its last key
+/// appended. For boundaries whose orientation matters (traced common regions over grid keys,
+/// coplanar overlaps over exact points): unlike `chain_segments`, nothing is deduplicated or
+/// re-oriented. Where several unused segments leave one key, the earliest given is taken, so
+/// the result does not depend on hashing order.
+pub(crate) fn chain_directed<K: Copy + Eq + Hash>(segs: &[(K, K)]) -> Vec<(Vec<K>, bool)> {
+    let mut from: HashMap<K, Vec<usize>> = HashMap::new();
+    for (n, s) in segs.iter().enumerate() {
+        from.entry(s.0).or_default().push(n);
+    }
+    let mut used = vec![false; segs.len()];
+    let mut out = Vec::new();
+    for s in 0..segs.len() {
+        if used[s] {
+            continue;
+        }
+        used[s] = true;
+        let start = segs[s].0;
+        let mut keys = vec![start];
+        let mut end = segs[s].1;
+        while end != start {
+            let next = from
+                .get(&end)
+                .and_then(|v| v.iter().copied().find(|&n| !used[n]));
+            let Some(n) = next else { break };
+            used[n] = true;
+            keys.push(end);
+            end = segs[n].1;
+        }
+        let closed = end == start;
+        if !closed {
+            keys.push(end);
+        }
+        out.push((keys, closed));
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -187,5 +227,25 @@ mod tests {
         assert_eq!(r.len(), 1);
         assert!(!r[0].closed);
         assert_eq!(r[0].points.len(), 3);
+    }
+
+    #[test]
+    fn loops_and_open_runs() {
+        // A triangle given out of order, and an open run 7 → 8 → 9.
+        let segs = [(2, 0), (7, 8), (0, 1), (1, 2), (8, 9)];
+        assert_eq!(
+            chain_directed(&segs),
+            vec![(vec![2, 0, 1], true), (vec![7, 8, 9], false)]
+        );
+    }
+
+    #[test]
+    fn a_key_leaving_twice_takes_the_earliest_segment() {
+        // Two loops through key 0 (a figure eight): the first loop follows 0 → 1 as given first.
+        let segs = [(0, 1), (1, 0), (0, 2), (2, 0)];
+        assert_eq!(
+            chain_directed(&segs),
+            vec![(vec![0, 1], true), (vec![0, 2], true)]
+        );
     }
 }

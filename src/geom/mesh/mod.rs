@@ -21,6 +21,7 @@ mod trim;
 
 pub use adjacency::{Adjacency, NO_NEIGHBOUR};
 pub use bvh::{Aabb, Bvh};
+pub(crate) use chain::chain_directed;
 pub use chain::{chain_segments, Polyline3, Segment};
 pub use error::MeshError;
 pub use extend::{corners, extend, extend_with};

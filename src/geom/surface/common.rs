@@ -521,36 +521,10 @@ impl Tracer<'_, '_> {
     /// Directed segments joined head to tail into loops (open chains where a loop does not
     /// close, which a consistent classification never leaves).
     fn chain(&self, segs: &[(Key, Key)]) -> Vec<(Vec<Pt>, bool)> {
-        let mut from: HashMap<Key, Vec<usize>> = HashMap::new();
-        for (n, s) in segs.iter().enumerate() {
-            from.entry(s.0).or_default().push(n);
-        }
-        let mut used = vec![false; segs.len()];
-        let mut out = Vec::new();
-        for s in 0..segs.len() {
-            if used[s] {
-                continue;
-            }
-            used[s] = true;
-            let start = segs[s].0;
-            let mut keys = vec![start];
-            let mut end = segs[s].1;
-            while end != start {
-                let next = from
-                    .get(&end)
-                    .and_then(|v| v.iter().copied().find(|&n| !used[n]));
-                let Some(n) = next else { break };
-                used[n] = true;
-                keys.push(end);
-                end = segs[n].1;
-            }
-            let closed = end == start;
-            if !closed {
-                keys.push(end);
-            }
-            out.push((keys.into_iter().map(|k| self.pt(k)).collect(), closed));
-        }
-        out
+        crate::geom::mesh::chain_directed(segs)
+            .into_iter()
+            .map(|(keys, closed)| (keys.into_iter().map(|k| self.pt(k)).collect(), closed))
+            .collect()
     }
 
     /// The loop on the surface, densified within the chord tolerance; None when it collapses

@@ -131,32 +131,17 @@ fn split_points(
 
 /// Chains directed edges that meet end to start (exactly) into closed loops.
 fn chain_loops(edges: Vec<(DVec3, DVec3)>) -> Vec<Polyline3> {
-    let mut used = vec![false; edges.len()];
-    let mut out = Vec::new();
-    for s in 0..edges.len() {
-        if used[s] {
-            continue;
-        }
-        used[s] = true;
-        let start = edges[s].0;
-        let mut pts = vec![start];
-        let mut end = edges[s].1;
-        while end != start {
-            let Some(k) = (0..edges.len()).find(|&k| !used[k] && edges[k].0 == end) else {
-                break;
-            };
-            used[k] = true;
-            pts.push(end);
-            end = edges[k].1;
-        }
-        let closed = end == start;
-        if !closed {
-            pts.push(end);
-        }
-        out.push(Polyline3 {
-            points: pts,
+    // Points as their coordinates' bits, with -0 read as +0 so that equal points are one key.
+    let key = |p: DVec3| (p + DVec3::ZERO).to_array().map(f64::to_bits);
+    let keys: Vec<_> = edges.iter().map(|&(a, b)| (key(a), key(b))).collect();
+    crate::geom::mesh::chain_directed(&keys)
+        .into_iter()
+        .map(|(run, closed)| Polyline3 {
+            points: run
+                .into_iter()
+                .map(|k| DVec3::from_array(k.map(f64::from_bits)))
+                .collect(),
             closed,
-        });
-    }
-    out
+        })
+        .collect()
 }
