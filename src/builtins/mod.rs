@@ -28,39 +28,43 @@ pub mod text;
 pub mod trace;
 pub mod vla;
 
+/// Every registration table but the Visual LISP ones, in the order `lispcad doc` lists them.
+const TABLES: &[(&str, &[Builtin])] = &[
+    ("Special forms", special::BUILTINS),
+    ("Evaluation and errors", control::BUILTINS),
+    ("Lists", lists::BUILTINS),
+    ("Lists: car/cdr compositions", lists::CXR),
+    ("Numbers", numbers::BUILTINS),
+    ("Points and coordinates", geom2d::BUILTINS),
+    ("Predicates", predicates::BUILTINS),
+    ("Strings", strings::BUILTINS),
+    ("Strings: formatting and matching", format::BUILTINS),
+    ("Printing and files", io::BUILTINS),
+    ("Interactive input", input::BUILTINS),
+    ("Curves", geometry::BUILTINS),
+    ("Surfaces and meshes", surfaces::BUILTINS),
+    ("Eyeglass temple", temple::BUILTINS),
+    ("Drawing and output", drawing::BUILTINS),
+    ("Entities, selection sets and tables", entities::BUILTINS),
+    ("Commands", command::BUILTINS),
+    ("System", system::BUILTINS),
+];
+
+/// The symbol table `open_libs` builds, computed at compile time.
+static LIBRARY: crate::lang::symbols::Prebuilt =
+    crate::lang::symbols::Prebuilt::new(&[TABLES, vla::TABLES]);
+
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    let mut t = vec![
-        ("Special forms", special::BUILTINS),
-        ("Evaluation and errors", control::BUILTINS),
-        ("Lists", lists::BUILTINS),
-        ("Lists: car/cdr compositions", lists::CXR),
-        ("Numbers", numbers::BUILTINS),
-        ("Points and coordinates", geom2d::BUILTINS),
-        ("Predicates", predicates::BUILTINS),
-        ("Strings", strings::BUILTINS),
-        ("Strings: formatting and matching", format::BUILTINS),
-        ("Printing and files", io::BUILTINS),
-        ("Interactive input", input::BUILTINS),
-        ("Curves", geometry::BUILTINS),
-        ("Surfaces and meshes", surfaces::BUILTINS),
-        ("Eyeglass temple", temple::BUILTINS),
-        ("Drawing and output", drawing::BUILTINS),
-        ("Entities, selection sets and tables", entities::BUILTINS),
-        ("Commands", command::BUILTINS),
-        ("System", system::BUILTINS),
-    ];
-    t.extend(vla::tables());
-    t
+    TABLES.iter().chain(vla::TABLES).copied().collect()
 }
 
 /// Installs the whole library in an interpreter, as Lua's `luaL_openlibs` does: every
 /// registration table, the per-interpreter state some areas need (system variables...), and
 /// the descriptors the compiler may inline (arithmetic, `cons`, `car`, `cdr`).
 pub fn open_libs(it: &mut Interp) {
-    for (_, table) in tables() {
-        it.register(table);
-    }
+    let tables: Vec<&'static [Builtin]> = tables().into_iter().map(|(_, t)| t).collect();
+    it.register_prebuilt(&LIBRARY, &tables);
     system::init(it);
     command::init(it);
     vla::init(it);

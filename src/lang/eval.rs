@@ -13,7 +13,7 @@ use super::compile::{Compiler, Lambda};
 use super::encoding::SourceCodePage;
 use super::error::{abort, err, ErrorKind, Exn, LResult, LispError, Source, Span};
 use super::reader::{read_source, ReadError};
-use super::symbols::{SymbolTable, S_ERROR};
+use super::symbols::{Prebuilt, SymbolTable, S_ERROR};
 use super::value::{Cons, Sym, Value};
 
 /// Stack size of the threads that run Lisp code (reserved, not committed: pages are touched
@@ -154,6 +154,26 @@ impl Interp {
     pub fn register(&mut self, table: &'static [Builtin]) {
         for b in table {
             let s = self.intern(b.name);
+            self.values[s.idx()] = Value::Subr(b);
+        }
+    }
+
+    /// `register` for each of `tables`, in order, on a fresh interpreter: `pre` is the symbol
+    /// table those registrations build, computed at compile time from the same tables, so
+    /// only the value cells are set here. On an interpreter that has interned more than the
+    /// fixed symbols, or with tables that do not match `pre`, it registers them one by one.
+    pub fn register_prebuilt(&mut self, pre: &Prebuilt, tables: &[&'static [Builtin]]) {
+        let count: usize = tables.iter().map(|t| t.len()).sum();
+        if !self.syms.is_fresh() || count != pre.builtins() {
+            for table in tables {
+                self.register(table);
+            }
+            return;
+        }
+        self.syms = SymbolTable::from_prebuilt(pre);
+        self.sync_cells();
+        let builtins = tables.iter().flat_map(|t| t.iter());
+        for (b, s) in builtins.zip(pre.builtin_syms()) {
             self.values[s.idx()] = Value::Subr(b);
         }
     }
