@@ -31,15 +31,18 @@ pub const S_DOT: Sym = Sym(17);
 /// The symbol NIL exists only for `read`-ing "nil"; the reader turns it into `Value::Nil`.
 pub const S_NIL: Sym = Sym(18);
 
-/// Room for the library's names (about 1,100 with the VLA tables) without growing at start-up.
-const INITIAL_SLOTS: usize = 4096;
+/// Room for the library's names (about 550 with the VLA tables and constants) and a script's
+/// own without growing. The slots are copied whole at start-up (`from_prebuilt`), so they are
+/// sized for the table to stay at most half full up to 1,024 symbols, no more; the names and
+/// their ends are only touched as far as they are used.
+const INITIAL_SLOTS: usize = 2048;
 const INITIAL_SYMBOLS: usize = 1536;
 const INITIAL_TEXT: usize = 24 << 10;
 
 /// The symbol table: every name upper case, end to end in one string, and an open-addressing
-/// index over them. Start-up interns every builtin name (about a thousand): one string and no
-/// allocation per name, where a map of `Rc<str>` keys cost two allocations and a copy each
-/// (a fifth of an empty script's run).
+/// index over them: one string and no allocation per name, where a map of `Rc<str>` keys cost
+/// two allocations and a copy each. Start-up copies the library's table (`Prebuilt`) rather
+/// than interning its names.
 #[derive(Clone)]
 pub struct SymbolTable {
     /// The names, upper case, one after another.
@@ -234,11 +237,6 @@ impl SymbolTable {
         }
     }
 
-    /// Whether only the fixed symbols are interned (as `new` leaves it).
-    pub fn is_fresh(&self) -> bool {
-        self.ends.len() == FIXED.len()
-    }
-
     /// Finds `key`, which is either ASCII (matched case-insensitively against the stored upper
     /// case) or already upper-cased.
     #[inline]
@@ -358,6 +356,11 @@ impl SymbolTable {
 
     pub fn len(&self) -> usize {
         self.ends.len()
+    }
+
+    /// How many symbols fit before the names' ends grow.
+    pub fn capacity(&self) -> usize {
+        self.ends.capacity()
     }
 
     pub fn is_empty(&self) -> bool {
