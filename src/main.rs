@@ -31,14 +31,14 @@ static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 // With such a variable nothing changes: mimalloc reads it, and MIMALLOC_SHOW_STATS still
 // prints at exit.
 //
-// Runs at priority 100, before mimalloc's own constructor (101) reads the options; glibc
-// passes `envp` to `.init_array` functions, as std's argv hook (priority 99) relies on.
-// Option numbers are mimalloc v3's `mimalloc.h` (libmimalloc-sys does not export them).
+// Runs at priority 100, before mimalloc's own constructor (101) reads the options; the C
+// library has set `environ` before running any constructor. Option numbers are mimalloc v3's `mimalloc.h` (libmimalloc-sys does not export them).
 #[cfg(target_os = "linux")]
 extern "C" {
     fn mi_option_set(option: i32, value: std::ffi::c_long);
     fn mi_option_set_default(option: i32, value: std::ffi::c_long);
     fn _mi_option_get_fast(option: i32) -> std::ffi::c_long;
+    static environ: *const *const u8;
 }
 
 #[cfg(target_os = "linux")]
@@ -49,12 +49,13 @@ const MI_OPTION_ARENA_RESERVE: i32 = 23;
 const MI_OPTION_LAST: i32 = 47;
 
 #[cfg(target_os = "linux")]
-extern "C" fn mimalloc_options(_argc: i32, _argv: *const *const u8, envp: *const *const u8) {
-    // SAFETY: `envp` is glibc's NULL-terminated array of NUL-terminated strings; the option
-    // calls write integers into mimalloc's option table, before mimalloc has started.
+extern "C" fn mimalloc_options() {
+    // SAFETY: `environ` is the C library's NULL-terminated array of NUL-terminated strings,
+    // not modified while constructors run; the option calls write integers into mimalloc's
+    // option table, before mimalloc has started.
     unsafe {
         mi_option_set_default(MI_OPTION_ARENA_RESERVE, 64 << 10);
-        let mut e = envp;
+        let mut e = environ;
         while !e.is_null() && !(*e).is_null() {
             // Stops at the first byte that differs, so never reads past a shorter entry's NUL.
             let s = *e;
@@ -75,7 +76,7 @@ extern "C" fn mimalloc_options(_argc: i32, _argv: *const *const u8, envp: *const
 #[cfg(target_os = "linux")]
 #[used]
 #[link_section = ".init_array.00100"]
-static MIMALLOC_OPTIONS: extern "C" fn(i32, *const *const u8, *const *const u8) = mimalloc_options;
+static MIMALLOC_OPTIONS: extern "C" fn() = mimalloc_options;
 
 #[cfg(target_os = "linux")]
 extern "C" {
