@@ -21,24 +21,62 @@ static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 // before `main`), 1 GiB of address space by default; zeroing that arena's bitmaps touched
 // 42 pages, a sixth of an empty script's page faults. A 64 MiB first arena needs a sixteenth
 // of them; a larger program gets more arenas, each larger than the last (mimalloc doubles the
-// reserve as they are added). Set from a constructor so it precedes that first allocation;
-// as a default, so MIMALLOC_ARENA_RESERVE still wins. 23 is `mi_option_arena_reserve` in
-// mimalloc v3's `mimalloc.h` (in KiB); libmimalloc-sys does not export it.
+// reserve as they are added). Set as a default, so MIMALLOC_ARENA_RESERVE still wins.
+//
+// mimalloc also reads each of its 47 options from the environment, one case-insensitive scan
+// of every variable per option (a seventh of an empty script's instructions), and at exit
+// collects and purges its heap, which the kernel is about to drop anyway. When no variable
+// starts with MIMALLOC_ (mimalloc's only prefix, in any case) every option is marked set to
+// its default, which skips the scans, and exit skips the clean-up (destroy_on_exit > 1).
+// With such a variable nothing changes: mimalloc reads it, and MIMALLOC_SHOW_STATS still
+// prints at exit.
+//
+// Runs at priority 100, before mimalloc's own constructor (101) reads the options; the C
+// library has set `environ` before running any constructor. Option numbers are mimalloc v3's `mimalloc.h` (libmimalloc-sys does not export them).
 #[cfg(target_os = "linux")]
 extern "C" {
+    fn mi_option_set(option: i32, value: std::ffi::c_long);
     fn mi_option_set_default(option: i32, value: std::ffi::c_long);
+    fn _mi_option_get_fast(option: i32) -> std::ffi::c_long;
+    static environ: *const *const u8;
 }
 
 #[cfg(target_os = "linux")]
-extern "C" fn small_first_arena() {
-    // SAFETY: sets one integer option; mimalloc may or may not have initialised yet.
-    unsafe { mi_option_set_default(23, 64 << 10) }
+const MI_OPTION_DESTROY_ON_EXIT: i32 = 22;
+#[cfg(target_os = "linux")]
+const MI_OPTION_ARENA_RESERVE: i32 = 23;
+#[cfg(target_os = "linux")]
+const MI_OPTION_LAST: i32 = 47;
+
+#[cfg(target_os = "linux")]
+extern "C" fn mimalloc_options() {
+    // SAFETY: `environ` is the C library's NULL-terminated array of NUL-terminated strings,
+    // not modified while constructors run; the option calls write integers into mimalloc's
+    // option table, before mimalloc has started.
+    unsafe {
+        mi_option_set_default(MI_OPTION_ARENA_RESERVE, 64 << 10);
+        let mut e = environ;
+        while !e.is_null() && !(*e).is_null() {
+            // Stops at the first byte that differs, so never reads past a shorter entry's NUL.
+            let s = *e;
+            if (b"MIMALLOC_".iter().enumerate())
+                .all(|(i, c)| (*s.add(i)).to_ascii_uppercase() == *c)
+            {
+                return;
+            }
+            e = e.add(1);
+        }
+        for option in 0..MI_OPTION_LAST {
+            mi_option_set(option, _mi_option_get_fast(option));
+        }
+        mi_option_set(MI_OPTION_DESTROY_ON_EXIT, 2);
+    }
 }
 
 #[cfg(target_os = "linux")]
 #[used]
-#[link_section = ".init_array"]
-static SMALL_FIRST_ARENA: extern "C" fn() = small_first_arena;
+#[link_section = ".init_array.00100"]
+static MIMALLOC_OPTIONS: extern "C" fn() = mimalloc_options;
 
 #[cfg(target_os = "linux")]
 extern "C" {

@@ -28,30 +28,35 @@ pub mod text;
 pub mod trace;
 pub mod vla;
 
+/// Every registration table but the Visual LISP ones, in the order `lispcad doc` lists them.
+const TABLES: &[(&str, &[Builtin])] = &[
+    ("Special forms", special::BUILTINS),
+    ("Evaluation and errors", control::BUILTINS),
+    ("Lists", lists::BUILTINS),
+    ("Lists: car/cdr compositions", lists::CXR),
+    ("Numbers", numbers::BUILTINS),
+    ("Points and coordinates", geom2d::BUILTINS),
+    ("Predicates", predicates::BUILTINS),
+    ("Strings", strings::BUILTINS),
+    ("Strings: formatting and matching", format::BUILTINS),
+    ("Printing and files", io::BUILTINS),
+    ("Interactive input", input::BUILTINS),
+    ("Curves", geometry::BUILTINS),
+    ("Surfaces and meshes", surfaces::BUILTINS),
+    ("Eyeglass temple", temple::BUILTINS),
+    ("Drawing and output", drawing::BUILTINS),
+    ("Entities, selection sets and tables", entities::BUILTINS),
+    ("Commands", command::BUILTINS),
+    ("System", system::BUILTINS),
+];
+
+/// The symbol table `open_libs` builds, computed at compile time.
+static LIBRARY: crate::lang::symbols::Prebuilt =
+    crate::lang::symbols::Prebuilt::new(&[TABLES, vla::TABLES]);
+
 /// Every registration table, in the order `lispcad doc` lists them.
 pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    let mut t = vec![
-        ("Special forms", special::BUILTINS),
-        ("Evaluation and errors", control::BUILTINS),
-        ("Lists", lists::BUILTINS),
-        ("Lists: car/cdr compositions", lists::CXR),
-        ("Numbers", numbers::BUILTINS),
-        ("Points and coordinates", geom2d::BUILTINS),
-        ("Predicates", predicates::BUILTINS),
-        ("Strings", strings::BUILTINS),
-        ("Strings: formatting and matching", format::BUILTINS),
-        ("Printing and files", io::BUILTINS),
-        ("Interactive input", input::BUILTINS),
-        ("Curves", geometry::BUILTINS),
-        ("Surfaces and meshes", surfaces::BUILTINS),
-        ("Eyeglass temple", temple::BUILTINS),
-        ("Drawing and output", drawing::BUILTINS),
-        ("Entities, selection sets and tables", entities::BUILTINS),
-        ("Commands", command::BUILTINS),
-        ("System", system::BUILTINS),
-    ];
-    t.extend(vla::tables());
-    t
+    TABLES.iter().chain(vla::TABLES).copied().collect()
 }
 
 /// Installs the whole library in an interpreter, as Lua's `luaL_openlibs` does: every
@@ -61,6 +66,11 @@ pub fn open_libs(it: &mut Interp) {
     for (_, table) in tables() {
         it.register(table);
     }
+    init_libs(it);
+}
+
+/// What `open_libs` does after registering the tables.
+fn init_libs(it: &mut Interp) {
     system::init(it);
     command::init(it);
     vla::init(it);
@@ -74,8 +84,9 @@ pub fn open_libs(it: &mut Interp) {
 
 /// A fresh interpreter with the whole library installed.
 pub fn new_interp() -> Interp {
-    let mut it = Interp::bare();
-    open_libs(&mut it);
+    let tables: Vec<&'static [Builtin]> = tables().into_iter().map(|(_, t)| t).collect();
+    let mut it = Interp::with_library(&LIBRARY, &tables);
+    init_libs(&mut it);
     it
 }
 
@@ -88,3 +99,34 @@ pub fn find(name: &str) -> Option<&'static Builtin> {
 }
 
 pub use drawing::{drawing_svg, write_outputs};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lang::Value;
+
+    #[test]
+    fn the_prebuilt_library_binds_what_registering_one_by_one_does() {
+        let fast = new_interp();
+        let mut slow = Interp::bare();
+        open_libs(&mut slow);
+        let names = |it: &Interp| -> Vec<String> { it.syms.all().map(|(_, n)| n.into()).collect() };
+        assert_eq!(names(&fast), names(&slow));
+        assert!(fast.syms.len() > 500, "{}", fast.syms.len());
+        for (_, n) in fast.syms.all() {
+            match (fast.global(n), slow.global(n)) {
+                (Value::Subr(a), Value::Subr(b)) => assert!(std::ptr::eq(a, b), "{n}"),
+                (a, b) => assert_eq!(fast.prin1_string(&a), slow.prin1_string(&b), "{n}"),
+            }
+        }
+        // A name registered twice is bound to its last table's descriptor, as `register` does.
+        for (_, table) in tables() {
+            for b in table {
+                let Value::Subr(d) = fast.global(b.name) else {
+                    panic!("{} unbound", b.name)
+                };
+                assert!(d.name.eq_ignore_ascii_case(b.name));
+            }
+        }
+    }
+}

@@ -13,7 +13,7 @@ use super::compile::{Compiler, Lambda};
 use super::encoding::SourceCodePage;
 use super::error::{abort, err, ErrorKind, Exn, LResult, LispError, Source, Span};
 use super::reader::{read_source, ReadError};
-use super::symbols::{SymbolTable, S_ERROR};
+use super::symbols::{Prebuilt, SymbolTable, S_ERROR};
 use super::value::{Cons, Sym, Value};
 
 /// Stack size of the threads that run Lisp code (reserved, not committed: pages are touched
@@ -122,12 +122,39 @@ impl Interp {
     /// A fresh interpreter with no library: only `T` is bound. The host installs the library
     /// (`builtins::open_libs`), as a Lua host calls `luaL_openlibs`.
     pub fn bare() -> Self {
+        Self::with_symbols(SymbolTable::new())
+    }
+
+    /// `bare` followed by `register` of each of `tables`, in order; `pre` is the symbol table
+    /// those registrations build, computed at compile time from the same tables, so only the
+    /// value cells are set here. Tables that do not match `pre` are registered one by one.
+    pub fn with_library(pre: &Prebuilt, tables: &[&'static [Builtin]]) -> Self {
+        let count: usize = tables.iter().map(|t| t.len()).sum();
+        if count != pre.builtins() {
+            let mut it = Self::bare();
+            for table in tables {
+                it.register(table);
+            }
+            return it;
+        }
+        let mut it = Self::with_symbols(SymbolTable::from_prebuilt(pre));
+        let builtins = tables.iter().flat_map(|t| t.iter());
+        for (b, s) in builtins.zip(pre.builtin_syms()) {
+            it.values[s.idx()] = Value::Subr(b);
+        }
+        it
+    }
+
+    fn with_symbols(syms: SymbolTable) -> Self {
         let (stack_top, stack_budget) = STACK_BOUNDS
             .with(|b| b.get())
             .unwrap_or_else(|| (stack_pointer(), 512 << 10));
+        // Sized once: growing by doubling past the library's names copied the cells and
+        // faulted in fresh pages at start-up.
+        let values = Vec::with_capacity(syms.capacity());
         let mut it = Interp {
-            syms: SymbolTable::new(),
-            values: Vec::new(),
+            syms,
+            values,
             saves: Vec::new(),
             saved_syms: Vec::new(),
             sources: Vec::new(),

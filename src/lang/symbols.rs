@@ -1,6 +1,7 @@
 //! The symbol table. Names are case-insensitive (stored upper case); a few symbols the
 //! compiler recognises get fixed indices so it can compare them without lookups.
 
+use super::builtin::Builtin;
 use super::value::Sym;
 
 /// Symbols with fixed indices, interned first in this order.
@@ -30,15 +31,18 @@ pub const S_DOT: Sym = Sym(17);
 /// The symbol NIL exists only for `read`-ing "nil"; the reader turns it into `Value::Nil`.
 pub const S_NIL: Sym = Sym(18);
 
-/// Room for the library's names (about 1,100 with the VLA tables) without growing at start-up.
-const INITIAL_SLOTS: usize = 4096;
+/// Room for the library's names (about 550 with the VLA tables and constants) and a script's
+/// own without growing. The slots are copied whole at start-up (`from_prebuilt`), so they are
+/// sized for the table to stay at most half full up to 1,024 symbols, no more; the names and
+/// their ends are only touched as far as they are used.
+const INITIAL_SLOTS: usize = 2048;
 const INITIAL_SYMBOLS: usize = 1536;
 const INITIAL_TEXT: usize = 24 << 10;
 
 /// The symbol table: every name upper case, end to end in one string, and an open-addressing
-/// index over them. Start-up interns every builtin name (about a thousand): one string and no
-/// allocation per name, where a map of `Rc<str>` keys cost two allocations and a copy each
-/// (a fifth of an empty script's run).
+/// index over them: one string and no allocation per name, where a map of `Rc<str>` keys cost
+/// two allocations and a copy each. Start-up copies the library's table (`Prebuilt`) rather
+/// than interning its names.
 #[derive(Clone)]
 pub struct SymbolTable {
     /// The names, upper case, one after another.
@@ -60,12 +64,143 @@ impl Default for SymbolTable {
 /// keys worth SipHash's cost, and a name hashes the same in any case without a copy.
 #[inline]
 fn hash(name: &str) -> u64 {
+    hash_bytes(name.as_bytes())
+}
+
+#[inline]
+const fn hash_bytes(name: &[u8]) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in name.bytes() {
-        h = (h ^ u64::from(b.to_ascii_uppercase())).wrapping_mul(0x0100_0000_01b3);
+    let mut i = 0;
+    while i < name.len() {
+        h = (h ^ name[i].to_ascii_uppercase() as u64).wrapping_mul(0x0100_0000_01b3);
+        i += 1;
     }
     // FNV's low bits mix poorly: fold the high half in before masking.
     h ^ (h >> 29)
+}
+
+/// The symbol table after interning `FIXED` and then every builtin name of some registration
+/// tables in order, as `SymbolTable::new` and `Interp::register` would, but computed at
+/// compile time (`Prebuilt::new` is a `const fn`): start-up copies it instead of hashing and
+/// probing a thousand names (a fifth of an empty script's instructions before).
+pub struct Prebuilt {
+    text: [u8; INITIAL_TEXT],
+    text_len: usize,
+    ends: [u32; INITIAL_SYMBOLS],
+    len: usize,
+    slots: [u32; INITIAL_SLOTS],
+    /// Each builtin's symbol, in table order.
+    builtin_syms: [u32; INITIAL_SYMBOLS],
+    builtins: usize,
+}
+
+impl Prebuilt {
+    /// The table for `groups` of titled registration tables, in order. Fails to compile (a
+    /// panic in const evaluation) when a name is not ASCII or the names outgrow the initial
+    /// capacities, which then need raising.
+    pub const fn new(groups: &[&[(&str, &[Builtin])]]) -> Prebuilt {
+        let mut p = Prebuilt {
+            text: [0; INITIAL_TEXT],
+            text_len: 0,
+            ends: [0; INITIAL_SYMBOLS],
+            len: 0,
+            slots: [0; INITIAL_SLOTS],
+            builtin_syms: [0; INITIAL_SYMBOLS],
+            builtins: 0,
+        };
+        let mut i = 0;
+        while i < FIXED.len() {
+            p.intern(FIXED[i].as_bytes());
+            i += 1;
+        }
+        let mut g = 0;
+        while g < groups.len() {
+            let mut t = 0;
+            while t < groups[g].len() {
+                let table = groups[g][t].1;
+                let mut b = 0;
+                while b < table.len() {
+                    let s = p.intern(table[b].name.as_bytes());
+                    assert!(
+                        p.builtins < INITIAL_SYMBOLS,
+                        "more builtins than INITIAL_SYMBOLS"
+                    );
+                    p.builtin_syms[p.builtins] = s;
+                    p.builtins += 1;
+                    b += 1;
+                }
+                t += 1;
+            }
+            g += 1;
+        }
+        p
+    }
+
+    const fn name_eq(&self, s: u32, key: &[u8]) -> bool {
+        let start = if s == 0 {
+            0
+        } else {
+            self.ends[s as usize - 1] as usize
+        };
+        let end = self.ends[s as usize] as usize;
+        if end - start != key.len() {
+            return false;
+        }
+        let mut i = 0;
+        while i < key.len() {
+            if self.text[start + i] != key[i].to_ascii_uppercase() {
+                return false;
+            }
+            i += 1;
+        }
+        true
+    }
+
+    /// `SymbolTable::intern_key` over the fixed arrays, without growth.
+    const fn intern(&mut self, key: &[u8]) -> u32 {
+        let mask = INITIAL_SLOTS - 1;
+        let mut i = hash_bytes(key) as usize & mask;
+        loop {
+            match self.slots[i] {
+                0 => break,
+                n => {
+                    if self.name_eq(n - 1, key) {
+                        return n - 1;
+                    }
+                }
+            }
+            i = (i + 1) & mask;
+        }
+        assert!(
+            self.text_len + key.len() <= INITIAL_TEXT,
+            "names beyond INITIAL_TEXT"
+        );
+        assert!(
+            2 * (self.len + 1) <= INITIAL_SLOTS,
+            "symbols beyond half of INITIAL_SLOTS"
+        );
+        let mut j = 0;
+        while j < key.len() {
+            assert!(key[j].is_ascii(), "a builtin name that is not ASCII");
+            self.text[self.text_len] = key[j].to_ascii_uppercase();
+            self.text_len += 1;
+            j += 1;
+        }
+        let s = self.len as u32;
+        self.ends[self.len] = self.text_len as u32;
+        self.len += 1;
+        self.slots[i] = s + 1;
+        s
+    }
+
+    /// Each builtin's symbol, in the order of the tables it was built from.
+    pub fn builtin_syms(&self) -> impl Iterator<Item = Sym> + '_ {
+        self.builtin_syms[..self.builtins].iter().map(|&s| Sym(s))
+    }
+
+    pub fn builtins(&self) -> usize {
+        self.builtins
+    }
 }
 
 /// Where a lookup ended: the symbol, or the free slot where it would go.
@@ -86,6 +221,20 @@ impl SymbolTable {
             debug_assert_eq!(s.0 as usize, i);
         }
         t
+    }
+
+    /// A copy of a table computed at compile time.
+    pub fn from_prebuilt(p: &Prebuilt) -> Self {
+        let mut text = String::with_capacity(INITIAL_TEXT);
+        // Built from `&str`s, upper-cased byte by byte only where ASCII, so always UTF-8.
+        text.push_str(std::str::from_utf8(&p.text[..p.text_len]).unwrap_or_default());
+        let mut ends = Vec::with_capacity(INITIAL_SYMBOLS);
+        ends.extend_from_slice(&p.ends[..p.len]);
+        SymbolTable {
+            text,
+            ends,
+            slots: p.slots.to_vec(),
+        }
     }
 
     /// Finds `key`, which is either ASCII (matched case-insensitively against the stored upper
@@ -209,6 +358,11 @@ impl SymbolTable {
         self.ends.len()
     }
 
+    /// How many symbols fit before the names' ends grow.
+    pub fn capacity(&self) -> usize {
+        self.ends.capacity()
+    }
+
     pub fn is_empty(&self) -> bool {
         self.ends.is_empty()
     }
@@ -237,6 +391,48 @@ mod tests {
         assert_eq!(t.name(e), "CAFÉ");
         assert_eq!(t.lookup("CAFé"), Some(e));
         assert_eq!(t.intern("Café"), e);
+    }
+
+    fn dummy(_: &mut crate::lang::Interp, _: &[crate::lang::Value]) -> crate::lang::LResult {
+        Ok(crate::lang::Value::Nil)
+    }
+
+    const fn b(name: &'static str) -> Builtin {
+        Builtin {
+            name,
+            sig: "",
+            doc: "",
+            min: 0,
+            max: 0,
+            f: dummy,
+            special: false,
+        }
+    }
+
+    static ONE: &[Builtin] = &[b("car"), b("Cdr"), b("if"), b("vla-get-Name")];
+    static TWO: &[Builtin] = &[b("CAR"), b("strcat"), b("*error*")];
+    static GROUPS: &[&[(&str, &[Builtin])]] = &[&[("one", ONE)], &[("two", TWO)]];
+    static PRE: Prebuilt = Prebuilt::new(GROUPS);
+
+    #[test]
+    fn a_prebuilt_table_is_the_one_interning_builds() {
+        let mut t = SymbolTable::new();
+        let syms: Vec<Sym> = [ONE, TWO]
+            .iter()
+            .flat_map(|table| table.iter().map(|b| b.name))
+            .map(|n| t.intern(n))
+            .collect();
+        let p = SymbolTable::from_prebuilt(&PRE);
+        assert_eq!(p.text, t.text);
+        assert_eq!(p.ends, t.ends);
+        assert_eq!(p.slots, t.slots);
+        assert_eq!(PRE.builtin_syms().collect::<Vec<_>>(), syms);
+        // The fixed symbols first, repeated names (any case) share one symbol.
+        assert_eq!(syms[2], S_IF);
+        assert_eq!(syms[4], syms[0]);
+        assert_eq!(syms[6], S_ERROR);
+        assert_eq!(p.name(syms[3]), "VLA-GET-NAME");
+        assert_eq!(p.lookup("strCat"), Some(syms[5]));
     }
 
     #[test]

@@ -20,20 +20,19 @@ pub mod props;
 pub mod variant;
 pub mod xform;
 
-/// Every Visual LISP builtin, for `builtins::tables`.
-pub fn tables() -> Vec<(&'static str, &'static [Builtin])> {
-    vec![
-        ("Visual LISP: curves (vlax-curve-*)", curve::BUILTINS),
-        ("Visual LISP: ActiveX objects", object::BUILTINS),
-        (
-            "Visual LISP: properties (vla-get-*, vla-put-*)",
-            object::PROPS,
-        ),
-        ("Visual LISP: methods (vla-*)", object::METHODS),
-        ("Visual LISP: variants and safearrays", variant::BUILTINS),
-        ("AutoCAD compatibility", compat::BUILTINS),
-    ]
-}
+/// Every Visual LISP builtin, for `builtins::tables` (a constant: the symbol table is built
+/// from it at compile time).
+pub const TABLES: &[(&str, &[Builtin])] = &[
+    ("Visual LISP: curves (vlax-curve-*)", curve::BUILTINS),
+    ("Visual LISP: ActiveX objects", object::BUILTINS),
+    (
+        "Visual LISP: properties (vla-get-*, vla-put-*)",
+        object::PROPS,
+    ),
+    ("Visual LISP: methods (vla-*)", object::METHODS),
+    ("Visual LISP: variants and safearrays", variant::BUILTINS),
+    ("AutoCAD compatibility", compat::BUILTINS),
+];
 
 /// The ActiveX constants (vlax-vb*, :vlax-true, acExtend*...).
 pub fn init(it: &mut Interp) {
