@@ -644,3 +644,10 @@ impl Tracer<'_, '_> {
 fn uv_of(i: usize, j: usize) -> DVec2 {
     DVec2::new(i as f64 / N as f64, j as f64 / N as f64)
 }
+
+/// Whether a point lies on `s` within `tol` (inside its extent), tested as the tracing tests it:
+/// for the crossings kept beside a common region ([`super::beside`]).
+pub(super) fn on_surface(s: &Surface, tol: f64) -> impl Fn(DVec3) -> bool + '_ {
+    let t = Target::of(s);
+    move |p| t.on(p, tol)
+}

@@ -324,13 +324,17 @@ fn intersect_seeded(
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
-    // A common region is its boundary loops (None: everywhere, no boundary), with the closed
-    // form's curves elsewhere (the meshes of coincident surfaces cross all over the region, so
-    // other pairs give the loops alone).
+    // A common region is its boundary loops (None: everywhere, no boundary), with the curves
+    // elsewhere: the closed form's, or the meshes' kept where they leave the region.
+    let tols = (seed_tol, gtol, ctol);
     match super::common::overlap(a, b, gtol, ctol) {
         Some(super::common::Overlap::Loops(mut l)) => {
             if let Some(c) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
                 l.extend(super::common::outside_common(a, b, c, gtol));
+            } else {
+                let region = super::beside::Region::new(a, b, gtol);
+                let curves = through_meshes(a, b, tols, contacts, Some((&region, &mut l)))?;
+                l.extend(curves);
             }
             return Ok(Some(l));
         }
@@ -340,9 +344,28 @@ fn intersect_seeded(
     if let Some(curves) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
         return Ok(Some(curves));
     }
+    through_meshes(a, b, tols, contacts, None).map(Some)
+}
+
+/// The intersection seeded by the meshes and refined on the true surfaces, with the tangent
+/// contacts the meshes miss (when `contacts`). Beside a common region, only what lies outside
+/// it: the curves are cut where they enter it, and end on its `loops`.
+fn through_meshes(
+    a: &Surface,
+    b: &Surface,
+    (seed_tol, gtol, ctol): (f64, f64, f64),
+    contacts: bool,
+    mut region: Option<(&super::beside::Region, &mut Vec<Polyline3>)>,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    use super::beside::{outside, Reach};
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
     let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    let reach = Reach {
+        tol: gtol,
+        chord_tol: ctol,
+        seed_tol,
+    };
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
@@ -352,19 +375,33 @@ fn intersect_seeded(
         })
         .filter(|c| !c.points.is_empty())
         .collect();
+    let curves = match region.as_mut() {
+        Some((r, loops)) => outside(r, (&pa, &pb), curves, loops, reach),
+        None => curves,
+    };
     let mut curves = super::contact::regroup_pair(&pa, &pb, curves, gtol, ctol);
     if !contacts {
-        return Ok(Some(curves));
+        return Ok(curves);
     }
     // Touching without crossing: the meshes miss each other there. Seeded from both meshes'
-    // vertices (a coarse plane region has none near a contact on the other surface).
-    let contacts =
-        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol, ctol);
-    curves.extend(contacts);
-    let contacts =
-        super::contact::tangent_contacts(&pb, &pa, &mb, &ma, &curves, seed_tol, gtol, ctol);
-    curves.extend(contacts);
-    Ok(Some(curves))
+    // vertices (a coarse plane region has none near a contact on the other surface); the
+    // region's loops count as curves found.
+    let mut found = curves.clone();
+    if let Some((_, loops)) = region.as_ref() {
+        found.extend(loops.iter().cloned());
+    }
+    let mut touch =
+        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &found, seed_tol, gtol, ctol);
+    found.extend(touch.iter().cloned());
+    touch.extend(super::contact::tangent_contacts(
+        &pb, &pa, &mb, &ma, &found, seed_tol, gtol, ctol,
+    ));
+    let touch = match region.as_mut() {
+        Some((r, loops)) => outside(r, (&pa, &pb), touch, loops, reach),
+        None => touch,
+    };
+    curves.extend(touch);
+    Ok(curves)
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for
