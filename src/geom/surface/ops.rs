@@ -333,8 +333,11 @@ fn intersect_seeded(
                 l.extend(super::common::outside_common(a, b, c, gtol));
             } else {
                 let region = super::beside::Region::new(a, b, gtol);
-                let curves = through_meshes(a, b, tols, contacts, Some((&region, &mut l)))?;
-                l.extend(curves);
+                // Meshes too fine to make (a twisted patch at a tiny CHORDTOL) leave the loops,
+                // which are found on the true surfaces alone, as before the mesh path ran here.
+                if let Ok(c) = through_meshes(a, b, tols, contacts, Some((&region, &mut l))) {
+                    l.extend(c);
+                }
             }
             return Ok(Some(l));
         }
