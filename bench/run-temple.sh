@@ -6,7 +6,8 @@
 # times, the ratios and the load average before and after (the machine is shared).
 # BEFORE=path runs an older lispcad on the same -j 2 batch right after this build's and
 # compares every output file's SHA-256 with this build's (a speed change must not change a byte).
-# Usage: [JOBS=N] [BEFORE=path] bench/run-temple.sh [ROWS.csv]
+# PDF=0 skips the contact sheet and the two DXF + PDF runs (about 4 minutes, most of it Python).
+# Usage: [JOBS=N] [BEFORE=path] [PDF=0] bench/run-temple.sh [ROWS.csv]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 table=${1:-bench/temple/variants.csv}
@@ -41,12 +42,15 @@ if [[ -n "${BEFORE:-}" ]]; then
     -o "$out/bf/t-{row}.dxf" -o "$out/bf/t-{row}.svg" -j 2)
 fi
 read -r py_wall py_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" -o "$out/py")
+pdf=${PDF:-1}
+if [[ "$pdf" != 0 ]]; then
 read -r sh_wall sh_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/sh/t-{row}.dxf" -o "$out/sh/t-{row}.svg" -j "$jobs" --sheet "$out/sheet.pdf")
 read -r pdf_wall pdf_cpu < <(measure target/release/lispcad batch scripts/temple.lsp --vary "$table" \
   -o "$out/pdf/t-{row}.dxf" -o "$out/pdf/t-{row}.pdf" -j "$jobs")
 read -r pypdf_wall pypdf_cpu < <(measure "$py" bench/temple/temple_ezdxf.py --vary "$table" \
   -o "$out/pypdf" --pdf)
+fi
 
 load1=$(cut -d' ' -f1-3 /proc/loadavg)
 cmp -s <(cd "$out/j1" && cat $(ls | sort)) <(cd "$out/j2" && cat $(ls | sort)) \
@@ -54,9 +58,13 @@ cmp -s <(cd "$out/j1" && cat $(ls | sort)) <(cd "$out/j2" && cat $(ls | sort)) \
 
 printf '%d variants, DXF + SVG each (outputs of -j 1 and -j 2: %s)\n\n' "$rows" "$same"
 printf '| run | wall s | CPU s | CPU ms/variant |\n|---|---|---|---|\n'
-for r in "lispcad -j 1:$lc1_wall:$lc1_cpu" "lispcad -j 2:$lc2_wall:$lc2_cpu" \
-  "Python+ezdxf:$py_wall:$py_cpu" "lispcad -j $jobs + --sheet sheet.pdf:$sh_wall:$sh_cpu" \
-  "lispcad -j $jobs DXF + PDF:$pdf_wall:$pdf_cpu" "Python+ezdxf DXF + PDF (matplotlib):$pypdf_wall:$pypdf_cpu"; do
+runs=("lispcad -j 1:$lc1_wall:$lc1_cpu" "lispcad -j 2:$lc2_wall:$lc2_cpu" "Python+ezdxf:$py_wall:$py_cpu")
+if [[ "$pdf" != 0 ]]; then
+  runs+=("lispcad -j $jobs + --sheet sheet.pdf:$sh_wall:$sh_cpu"
+    "lispcad -j $jobs DXF + PDF:$pdf_wall:$pdf_cpu"
+    "Python+ezdxf DXF + PDF (matplotlib):$pypdf_wall:$pypdf_cpu")
+fi
+for r in "${runs[@]}"; do
   IFS=: read -r name w c <<< "$r"
   printf '| %s | %.2f | %.2f | %.3f |\n' "$name" "$w" "$c" "$(echo "$c * 1000 / $rows" | bc -l)"
 done
@@ -64,10 +72,12 @@ printf '\nPython/lispcad (CPU, -j 1): %.1fx   (wall, -j 1): %.1fx\n' \
   "$(echo "$py_cpu / $lc1_cpu" | bc -l)" "$(echo "$py_wall / $lc1_wall" | bc -l)"
 printf 'speed-up -j 1 -> -j 2 (wall): %.2fx\n' "$(echo "$lc1_wall / $lc2_wall" | bc -l)"
 printf 'Python/lispcad (CPU, -j 2): %.1fx\n' "$(echo "$py_cpu / $lc2_cpu" | bc -l)"
-printf 'contact sheet: %s bytes; its cost over the plain batch (CPU): %.2f s\n' \
-  "$(stat -c %s "$out/sheet.pdf")" "$(echo "$sh_cpu - $lc2_cpu" | bc -l)"
-printf 'PDF: Python+matplotlib/lispcad (CPU): %.1fx   (wall): %.1fx\n' \
-  "$(echo "$pypdf_cpu / $pdf_cpu" | bc -l)" "$(echo "$pypdf_wall / $pdf_wall" | bc -l)"
+if [[ "$pdf" != 0 ]]; then
+  printf 'contact sheet: %s bytes; its cost over the plain batch (CPU): %.2f s\n' \
+    "$(stat -c %s "$out/sheet.pdf")" "$(echo "$sh_cpu - $lc2_cpu" | bc -l)"
+  printf 'PDF: Python+matplotlib/lispcad (CPU): %.1fx   (wall): %.1fx\n' \
+    "$(echo "$pypdf_cpu / $pdf_cpu" | bc -l)" "$(echo "$pypdf_wall / $pdf_wall" | bc -l)"
+fi
 if [[ -n "${BEFORE:-}" ]]; then
   digests() { (cd "$1" && ls | sort | xargs sha256sum); }
   cmp -s <(digests "$out/j2") <(digests "$out/bf") && bsame="identical" || bsame="DIFFERENT"

@@ -13,8 +13,10 @@ use lispcad::geom::surface::{
 };
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
-use std::process::Command;
 use std::sync::Arc;
+
+mod surface_support;
+use surface_support::{check_loops, eval};
 
 const CT: f64 = 1e-6;
 const GT: f64 = 1e-9;
@@ -51,24 +53,7 @@ fn check_ct(
     length: f64,
     on: impl Fn(DVec3) -> bool,
 ) {
-    for (x, y) in [(a, b), (b, a)] {
-        let r = meet_ct(x, y, ct);
-        assert_eq!(r.len(), loops);
-        assert!(r.iter().all(|c| c.closed));
-        let total: f64 = r.iter().map(Polyline3::length).sum();
-        assert!(
-            (total - length).abs() <= 1e-6 * length,
-            "length {total} vs {length}"
-        );
-        for p in r.iter().flat_map(|c| &c.points) {
-            assert!(on(*p), "{p}");
-        }
-        for _ in 0..2 {
-            let again = meet_ct(x, y, ct);
-            assert!(again.len() == r.len());
-            assert!(again.iter().zip(&r).all(|(c, d)| c.points == d.points));
-        }
-    }
+    check_loops(|x, y| meet_ct(x, y, ct), a, b, loops, length, on);
 }
 
 #[test]
@@ -275,18 +260,6 @@ fn surfaces_coinciding_everywhere_are_told_apart_from_surfaces_that_do_not_meet(
 
 #[test]
 fn the_builtin_returns_the_surface_itself_for_an_everywhere_overlap() {
-    let eval = |expr: &str| {
-        let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-            .args(["eval", expr])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8(out.stdout).unwrap().trim().to_string()
-    };
     assert_eq!(
         eval("(surface-intersect (sphere-surface '(0 0 0) 2) (sphere-surface '(0 0 0) 2))"),
         "(#<SURFACE SPHERE R2>)"

@@ -11,22 +11,8 @@ use lispcad::geom::DVec3;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
-/// Point counts, closure, lengths and ends: enough to see what came back.
-fn summary(r: &[Polyline3]) -> String {
-    r.iter()
-        .map(|c| {
-            format!(
-                "[{} pts{} len {:.9} {:?}..{:?}]",
-                c.points.len(),
-                if c.closed { " closed" } else { "" },
-                c.length(),
-                c.points.first(),
-                c.points.last()
-            )
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
-}
+mod surface_support;
+use surface_support::{cylinders, summary};
 
 /// The square region of half-size `h` about `c` spanned by the unit vectors `e1`, `e2`.
 fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
@@ -37,28 +23,6 @@ fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
         c - e1 * h + e2 * h,
     ])
     .unwrap()
-}
-
-/// Three cylinders of radius 1 about the x axis through (0, 0, 1), from x = 0 to 4, built
-/// through the mesh-path kinds: ruled between two circles, a circle swept along a line, a line
-/// revolved about the axis.
-fn cylinders() -> Vec<(&'static str, Surface)> {
-    let c = DVec3::new(0.0, 0.0, 1.0);
-    let c0 = Curve::circle(c, 1.0, Some(DVec3::X)).unwrap();
-    let c1 = Curve::circle(c + DVec3::X * 4.0, 1.0, Some(DVec3::X)).unwrap();
-    let guide = Curve::line(c, c + DVec3::X * 4.0).unwrap();
-    let prof = Curve::line(DVec3::new(0.0, 1.0, 1.0), DVec3::new(4.0, 1.0, 1.0)).unwrap();
-    vec![
-        ("ruled", Surface::ruled(Arc::new(c0.clone()), Arc::new(c1))),
-        (
-            "sweep",
-            Surface::sweep(Arc::new(c0), Arc::new(guide)).unwrap(),
-        ),
-        (
-            "revolve",
-            Surface::revolve(Arc::new(prof), c, DVec3::X, 2.0 * PI).unwrap(),
-        ),
-    ]
 }
 
 /// One open curve: the ruling from (0, y, z) to (4, y, z), every point on the plane (p0, n)

@@ -5,8 +5,10 @@ use lispcad::geom::curve::Curve;
 use lispcad::geom::surface::{curve_on_surface, segment_surface_hits, surface_section, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
-use std::process::Command;
 use std::sync::Arc;
+
+mod surface_support;
+use surface_support::eval;
 
 fn torus() -> Surface {
     // The profile circle starts at (4, 0, 0): its seam lies on the plane z = 0.
@@ -75,19 +77,6 @@ fn curves_lying_on_surfaces_are_overlaps() {
     assert!(!curve_on_surface(&off, &torus(), 1e-9).unwrap());
     let above = Curve::circle(DVec3::new(0.0, 0.0, 3.5), 2.0, None).unwrap();
     assert!(!curve_on_surface(&above, &cyl, 1e-9).unwrap());
-}
-
-fn eval(expr: &str) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
-        .args(["eval", expr])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap().trim().to_string()
 }
 
 #[test]

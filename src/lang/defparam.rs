@@ -18,11 +18,11 @@ pub(super) fn compile(c: &mut Compiler, rest: &Value, span: Option<Span>) -> Cod
         let e = with_span(err(
             "defparam: expected (defparam NAME default \"doc\" [min max])",
         ));
-        return Box::new(move |_| Err(e.clone()));
+        return Code::new(move |_| Err(e.clone()));
     }
     let Some(sym) = items[0].as_sym() else {
         let e = with_span(err("defparam: NAME must be a symbol"));
-        return Box::new(move |_| Err(e.clone()));
+        return Code::new(move |_| Err(e.clone()));
     };
     let name = c.sym_name(sym).to_string();
     let default = c.operand(&items[1]);
@@ -32,7 +32,7 @@ pub(super) fn compile(c: &mut Compiler, rest: &Value, span: Option<Span>) -> Cod
         None
     };
     let i = sym.idx();
-    Box::new(move |it| {
+    Code::new(move |it| {
         if matches!(it.values[i], Value::Nil) {
             let v = default.eval(it)?;
             std::mem::replace(&mut it.values[i], v).release();

@@ -334,7 +334,7 @@ impl Interp {
     /// bindings are restored.
     pub fn run_toplevel(&mut self, code: &super::compile::Code) -> LResult {
         let base = self.saves.len();
-        let r = code(self);
+        let r = code.run(self);
         match r {
             Ok(v) => Ok(v),
             Err(e) => {
@@ -349,7 +349,7 @@ impl Interp {
     pub fn eval_value(&mut self, form: &Value) -> LResult {
         self.check_stack()?;
         let code = self.compile_value(form);
-        code(self)
+        code.run(self)
     }
 
     /// Loads a file: relative paths resolve against the running script's directory, then the

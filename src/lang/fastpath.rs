@@ -8,6 +8,7 @@
 use std::sync::OnceLock;
 
 use super::builtin::Builtin;
+use super::code::Ret;
 use super::compile::{call_symbol, Code, Operand};
 use super::error::{Exn, LResult, Span};
 use super::eval::Interp;
@@ -263,7 +264,7 @@ impl Opnd for OConst {
 impl Opnd for OCode {
     #[inline(always)]
     fn get(&self, it: &mut Interp) -> LResult {
-        (self.0)(it)
+        self.0.run(it)
     }
 }
 
@@ -290,12 +291,21 @@ enum ArithOp {
 impl Arith {
     #[inline(always)]
     pub fn eval(&self, it: &mut Interp) -> LResult {
+        match self.fast(it) {
+            Some(n) => Ok(Value::Int(n)),
+            None => self.general(it),
+        }
+    }
+
+    /// The integer result when the variable holds an integer and the operator its builtin.
+    #[inline(always)]
+    pub fn fast(&self, it: &Interp) -> Option<i32> {
         if let Value::Int(a) = it.values[self.var] {
             if holds(it, self.head.idx(), self.b) {
-                return Ok(Value::Int(a.wrapping_add(self.delta)));
+                return Some(a.wrapping_add(self.delta));
             }
         }
-        self.general(it)
+        None
     }
 
     #[cold]
@@ -393,7 +403,7 @@ fn bin_code<const OP: u8, X: Opnd, Y: Opnd>(
     span: Option<Span>,
 ) -> Code {
     let fi = head.idx();
-    Box::new(move |it| {
+    Code::new(move |it| {
         let xv = x.get(it)?;
         let yv = y.get(it)?;
         // The cell first, then the arithmetic: with the result computed before the check, it
@@ -418,7 +428,7 @@ fn un_code<const OP: u8, X: Opnd>(
     span: Option<Span>,
 ) -> Code {
     let fi = head.idx();
-    Box::new(move |it| {
+    Code::new(move |it| {
         let xv = x.get(it)?;
         if holds(it, fi, b) {
             if let Some(v) = un_number(un_of(OP), &xv) {
@@ -439,7 +449,7 @@ fn cons_code<X: Opnd, Y: Opnd>(
     span: Option<Span>,
 ) -> Code {
     let fi = head.idx();
-    Box::new(move |it| {
+    Code::new(move |it| {
         let xv = x.get(it)?;
         let yv = y.get(it)?;
         if holds(it, fi, b) {
@@ -458,7 +468,7 @@ fn carcdr_code<X: Opnd>(
     span: Option<Span>,
 ) -> Code {
     let fi = head.idx();
-    Box::new(move |it| {
+    Code::new(move |it| {
         let xv = x.get(it)?;
         if holds(it, fi, b) {
             match &xv {
@@ -546,24 +556,35 @@ fn if_code<const OP: u8, X: Opnd, Y: Opnd>(
     els: Operand,
     span: Option<Span>,
 ) -> Code {
-    let fi = head.idx();
-    Box::new(move |it| {
-        let xv = x.get(it)?;
-        let yv = y.get(it)?;
-        let t = match cmp_numbers(bin_of(OP), &xv, &yv) {
-            Some(t) if holds(it, fi, b) => {
-                std::mem::forget(xv);
-                std::mem::forget(yv);
-                t
-            }
-            _ => test_fallback(it, head, xv, yv, span)?,
-        };
-        if t {
-            then.eval(it)
-        } else {
-            els.eval(it)
+    // The branch's result goes back packed as it came (a recursion's result passes through
+    // every level's `if`).
+    Code::new_raw(
+        move |it| match if_test::<OP, X, Y>(it, head, b, (&x, &y), span) {
+            Ok(true) => then.eval_raw(it),
+            Ok(false) => els.eval_raw(it),
+            Err(e) => Ret::pack(Err(e)),
+        },
+    )
+}
+
+#[inline(always)]
+fn if_test<const OP: u8, X: Opnd, Y: Opnd>(
+    it: &mut Interp,
+    head: Sym,
+    b: &'static Builtin,
+    (x, y): (&X, &Y),
+    span: Option<Span>,
+) -> Result<bool, Exn> {
+    let xv = x.get(it)?;
+    let yv = y.get(it)?;
+    match cmp_numbers(bin_of(OP), &xv, &yv) {
+        Some(t) if holds(it, head.idx(), b) => {
+            std::mem::forget(xv);
+            std::mem::forget(yv);
+            Ok(t)
         }
-    })
+        _ => test_fallback(it, head, xv, yv, span),
+    }
 }
 
 /// The comparison's operator and builtin, when `name` is an inlined comparison.

@@ -8,7 +8,9 @@
 //! `luaL_openlibs` does.
 
 pub mod builtin;
+mod call;
 mod cells;
+mod code;
 pub mod compile;
 mod defparam;
 pub mod encoding;

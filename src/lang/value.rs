@@ -80,6 +80,22 @@ impl ConsRef {
     }
 
     /// The cell's address: its identity for `eq` and for caches keyed by cell.
+    /// The counted pointer as a word (`code::Ret`); `from_raw` takes the reference back.
+    #[inline(always)]
+    pub(crate) fn into_raw(self) -> *mut () {
+        let p = self.0;
+        std::mem::forget(self);
+        p.as_ptr().cast()
+    }
+
+    /// # Safety
+    /// `p` comes from `into_raw`, and each such pointer is taken back once.
+    #[inline(always)]
+    pub(crate) unsafe fn from_raw(p: *mut ()) -> ConsRef {
+        // SAFETY: `into_raw` gave a non-null pointer.
+        ConsRef(unsafe { NonNull::new_unchecked(p.cast()) })
+    }
+
     pub fn as_ptr(&self) -> *const Cons {
         &self.header().cell
     }

@@ -94,10 +94,36 @@ fn num(out: &mut String, x: f64) {
     let r = (x * 1e6).round();
     if r == 0.0 || !r.is_finite() {
         out.push('0');
+    } else if (1e5..1e15).contains(&r.abs()) {
+        // r·10⁻⁶ has at most 15 significant digits, so it is the only decimal that short
+        // reading back as r/1e6: Ryū's shortest form is exactly its digits, and in this range
+        // (0.1 to 1e9) Ryū writes them without an exponent. Integer arithmetic is cheaper.
+        fixed6(out, r);
     } else {
         let mut b = ryu::Buffer::new();
         let s = b.format_finite(r / 1e6);
         out.push_str(s.strip_suffix(".0").unwrap_or(s));
+    }
+}
+
+/// r·10⁻⁶ in plain decimal, trailing fractional zeros (and a bare point) dropped.
+fn fixed6(out: &mut String, r: f64) {
+    if r < 0.0 {
+        out.push('-');
+    }
+    let n = r.abs() as u64;
+    let (int, frac) = (n / 1_000_000, n % 1_000_000);
+    let _ = write!(out, "{int}");
+    if frac != 0 {
+        let mut digits = [b'0'; 6];
+        let mut f = frac;
+        for d in digits.iter_mut().rev() {
+            *d = b'0' + (f % 10) as u8;
+            f /= 10;
+        }
+        let len = 6 - digits.iter().rev().take_while(|&&d| d == b'0').count();
+        out.push('.');
+        out.push_str(std::str::from_utf8(&digits[..len]).unwrap_or("0"));
     }
 }
 
@@ -675,6 +701,44 @@ fn hold_in_memory(db: &mut usvg::fontdb::Database, family: &str) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The integer path writes the bytes Ryū wrote for every number it takes: edges of its
+    /// range, trailing zeros, and a sweep of pseudo-random values over the range's decades.
+    #[test]
+    fn fixed_numbers_are_ryu_bytes() {
+        let ryu_form = |r: f64| {
+            let mut b = ryu::Buffer::new();
+            let s = b.format_finite(r / 1e6);
+            s.strip_suffix(".0").unwrap_or(s).to_string()
+        };
+        let mut rs = vec![
+            1e5,
+            1e15 - 1.0,
+            123_456_789.0,
+            100_000_000.0,
+            999_999_999_999_999.0,
+        ];
+        let mut seed = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..200_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let decade = 5 + (seed % 10) as i32;
+            let frac = (seed >> 11) as f64 / (1u64 << 53) as f64;
+            rs.push(
+                (10f64.powi(decade) * (1.0 + 9.0 * frac))
+                    .round()
+                    .min(1e15 - 1.0),
+            );
+        }
+        for r in rs {
+            for r in [r, -r] {
+                let mut s = String::new();
+                fixed6(&mut s, r);
+                assert_eq!(s, ryu_form(r), "r = {r}");
+            }
+        }
+    }
 
     #[test]
     fn numbers_are_compact() {

@@ -12,10 +12,12 @@
 //! edges give the boundary pieces of that surface lying on the other, and marching squares give
 //! the rest (the other surface's boundary, or where the two part). Every boundary point is
 //! found by bisection of "lies on the other surface" along a grid edge, so it lies on both
-//! surfaces within the tolerance; the loops are then densified within the chord tolerance.
-//! Where the surfaces part tangentially the place is only defined to about √(tol·radius), where
-//! their distance reaches the tolerance. A common region narrower than a quarter of a grid cell
-//! (1/128 of the parameter range) is not seen.
+//! surfaces within the tolerance, then carried back to where the gap beyond it extrapolates to
+//! zero ([`edge`]: where the surfaces part tangentially the threshold lies √(2·tol·R) past the
+//! edge); the loops are then densified within the chord tolerance. A common region narrower
+//! than a quarter of a grid cell (1/128 of the parameter range) is not seen.
+
+mod edge;
 
 use super::hits::point_in_polygon;
 use super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
@@ -483,7 +485,7 @@ impl Tracer<'_, '_> {
         } else {
             (ub, ua)
         };
-        let p = self.bisect(lo, hi);
+        let p = self.edge(lo, hi);
         self.cross.insert(e, p);
     }
 
@@ -631,7 +633,7 @@ impl Tracer<'_, '_> {
             let q = mid + dir * s;
             if self.on(q) != inside {
                 let (lo, hi) = if inside { (mid, q) } else { (q, mid) };
-                let mut p = self.bisect(lo, hi);
+                let mut p = self.edge(lo, hi);
                 self.patch.normalise(&mut p);
                 return Some(p);
             }

@@ -46,29 +46,32 @@ pub(crate) fn tangent_contacts(
     let gap = 8.0 * seed_tol;
     let bvh = mb.bvh();
     // Distance to mb, only within the gap (a box query rejects the far vertices quickly).
-    let dist: Vec<f64> = va
-        .iter()
-        .map(|&p| {
-            let mut best = f64::INFINITY;
-            let b = Aabb {
-                min: p - DVec3::splat(gap),
-                max: p + DVec3::splat(gap),
-            };
-            bvh.query_box(&b, |t| {
-                let [x, y, z] = mb.corners_of(t as usize);
-                best = best.min(closest_on_triangle(p, x, y, z).distance(p));
-            });
-            best
-        })
-        .collect();
+    let to_b = |p: DVec3| {
+        let mut best = f64::INFINITY;
+        let b = Aabb {
+            min: p - DVec3::splat(gap),
+            max: p + DVec3::splat(gap),
+        };
+        bvh.query_box(&b, |t| {
+            let [x, y, z] = mb.corners_of(t as usize);
+            best = best.min(closest_on_triangle(p, x, y, z).distance(p));
+        });
+        best
+    };
+    let dist: Vec<f64> = va.iter().map(|&p| to_b(p)).collect();
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let signed_gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    for (i, reach) in low_vertices(ma, &dist, gap, curves) {
-        if near_any(va[i], &out, 4.0 * reach) {
+    let mut seeds: Vec<(DVec3, f64)> = low_vertices(ma, &dist, gap, curves)
+        .into_iter()
+        .map(|(i, reach)| (va[i], reach))
+        .collect();
+    seeds.extend(low_edges(ma, &dist, gap, &to_b, curves));
+    for (q, reach) in seeds {
+        if near_any(q, &out, 4.0 * reach) {
             continue;
         }
-        if let Some((uv, p)) = touch(a, b, va[i], tol) {
+        if let Some((uv, p)) = touch(a, b, q, tol) {
             if near_any(p, &out, 4.0 * reach) {
                 continue;
             }
@@ -392,14 +395,48 @@ fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(
     }
     (0..va.len())
         .filter(|&i| low[i] && has_edge[i])
-        .filter(|&i| {
-            !curves
-                .iter()
-                .flat_map(|c| c.points.iter())
-                .any(|q| q.distance(va[i]) <= 4.0 * reach[i])
-        })
+        .filter(|&i| !near_points(va[i], curves, 4.0 * reach[i]))
         .map(|i| (i, reach[i]))
         .collect()
+}
+
+/// Whether a point of `curves` lies within `r` of `p` (a seed there belongs to a curve found).
+fn near_points(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
+    curves
+        .iter()
+        .flat_map(|c| c.points.iter())
+        .any(|q| q.distance(p) <= r)
+}
+
+/// The midpoints of edges of `m` that come nearer the other surface (`to_b`, within `gap`) than
+/// both their ends, away from `curves`, with the edge's length: a long edge over a narrow
+/// surface (the rulings of a ruled cylinder over a plate narrower than they are long) has no
+/// vertex near the contact.
+fn low_edges(
+    m: &Mesh,
+    dist: &[f64],
+    gap: f64,
+    to_b: &dyn Fn(DVec3) -> f64,
+    curves: &[Polyline3],
+) -> Vec<(DVec3, f64)> {
+    let va = m.vertices();
+    let mut out: Vec<(DVec3, f64)> = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    for t in m.triangles() {
+        for k in 0..3 {
+            let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            if !seen.insert((i.min(j), i.max(j))) {
+                continue;
+            }
+            let l = va[i].distance(va[j]);
+            let q = 0.5 * (va[i] + va[j]);
+            let d = to_b(q);
+            if d <= gap && d < dist[i].min(dist[j]) && !near_points(q, curves, 4.0 * l) {
+                out.push((q, l));
+            }
+        }
+    }
+    out
 }
 
 /// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the

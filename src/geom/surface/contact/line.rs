@@ -7,9 +7,10 @@
 //! being the curve's tangent. From a contact point the curve is followed both ways: a step along
 //! the tangent, then the extremum of `h` across it (Newton on the transverse derivative, exact
 //! for the quadratic `h` of a tangency). A step is kept when the surfaces meet there within the
-//! tolerance; it is halved where they part (finding the contact's end), held at the edge of a
-//! bounded parameter, and the loop closes when the walk returns to its start. The nodes are then
-//! densified within the chord tolerance like every refined curve.
+//! tolerance; it is halved where they part (bisecting for the contact's end to a hundredth of the
+//! tolerance), held at the edge of a bounded parameter, and the loop closes when the walk returns
+//! to its start. The nodes are then densified within the chord tolerance like every refined
+//! curve.
 
 use super::super::refine::{assemble, mid, Patch};
 use crate::geom::mesh::Polyline3;
@@ -155,7 +156,8 @@ fn walk(
         let cand = settle(a, &h, uv + t * step, t.perp());
         let g = gap(cand);
         let moved = cand - uv;
-        if g.dist <= tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step {
+        // Half the tolerance, so the end, where the surfaces part, is found within it.
+        if g.dist <= 0.5 * tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step {
             // Back round to the start (this step reaches or passes it): the loop closes there.
             let (d, f) = to_segment(p_start, p_prev, g.point);
             if nodes.len() >= 2 && d <= 0.1 * len && f > 0.0 {
@@ -168,11 +170,14 @@ fn walk(
             if at_edge {
                 return (nodes, false);
             }
-            frac = 1.0;
+            // Back up to full steps gradually: near an end the next full step fails again,
+            // and growing fourfold keeps the search for the end a bisection.
+            frac = (4.0 * frac).min(1.0);
         } else {
-            // The surfaces part (or the step left the curve): shorter steps find the end.
+            // The surfaces part (or the step left the curve): shorter steps find the end, to
+            // well within the tolerance.
             frac *= 0.5;
-            if frac < 1e-7 {
+            if frac * len < 0.01 * tol {
                 break;
             }
         }

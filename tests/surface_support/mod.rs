@@ -1,0 +1,101 @@
+//! What the surface-intersection tests share: the cylinders built through the mesh-path kinds,
+//! a one-line summary of a result for assertion messages, `lispcad eval` of one expression, and
+//! the check that two surfaces'
+//! common region comes back as the expected closed loops, the same bits on every run.
+#![allow(dead_code)] // each test file uses its own part of this module
+
+use lispcad::geom::curve::Curve;
+use lispcad::geom::mesh::Polyline3;
+use lispcad::geom::surface::Surface;
+use lispcad::geom::DVec3;
+use std::f64::consts::PI;
+use std::process::Command;
+use std::sync::Arc;
+
+/// Three cylinders of radius 1 about the x axis through (0, 0, 1), from x = 0 to 4, built
+/// through the mesh-path kinds: ruled between two circles, a circle swept along a line, a line
+/// revolved about the axis.
+pub fn cylinders() -> Vec<(&'static str, Surface)> {
+    let c = DVec3::new(0.0, 0.0, 1.0);
+    let c0 = Curve::circle(c, 1.0, Some(DVec3::X)).unwrap();
+    let c1 = Curve::circle(c + DVec3::X * 4.0, 1.0, Some(DVec3::X)).unwrap();
+    let guide = Curve::line(c, c + DVec3::X * 4.0).unwrap();
+    let prof = Curve::line(DVec3::new(0.0, 1.0, 1.0), DVec3::new(4.0, 1.0, 1.0)).unwrap();
+    vec![
+        ("ruled", Surface::ruled(Arc::new(c0.clone()), Arc::new(c1))),
+        (
+            "sweep",
+            Surface::sweep(Arc::new(c0), Arc::new(guide)).unwrap(),
+        ),
+        (
+            "revolve",
+            Surface::revolve(Arc::new(prof), c, DVec3::X, 2.0 * PI).unwrap(),
+        ),
+    ]
+}
+
+/// Each curve's point count, closure, length and ends, for assertion messages.
+pub fn summary(r: &[Polyline3]) -> String {
+    r.iter()
+        .map(|c| {
+            format!(
+                "[{} pts{} len {:.12} {:?}..{:?}]",
+                c.points.len(),
+                if c.closed { " closed" } else { "" },
+                c.length(),
+                c.points.first(),
+                c.points.last()
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Both orders of `meet`: `loops` closed loops of total length `length` (to 1e-6 relative),
+/// every point accepted by `on`, and two more runs giving the same bits. Returns each order's
+/// result for further checks.
+pub fn check_loops(
+    meet: impl Fn(&Surface, &Surface) -> Vec<Polyline3>,
+    a: &Surface,
+    b: &Surface,
+    loops: usize,
+    length: f64,
+    on: impl Fn(DVec3) -> bool,
+) -> Vec<Vec<Polyline3>> {
+    [(a, b), (b, a)]
+        .into_iter()
+        .map(|(x, y)| {
+            let r = meet(x, y);
+            assert_eq!(r.len(), loops, "{}", summary(&r));
+            assert!(r.iter().all(|c| c.closed), "{}", summary(&r));
+            let total: f64 = r.iter().map(Polyline3::length).sum();
+            assert!(
+                (total - length).abs() <= 1e-6 * length,
+                "length {total} vs {length}"
+            );
+            for p in r.iter().flat_map(|c| &c.points) {
+                assert!(on(*p), "{p}");
+            }
+            for _ in 0..2 {
+                let again = meet(x, y);
+                assert!(again.len() == r.len());
+                assert!(again.iter().zip(&r).all(|(c, d)| c.points == d.points));
+            }
+            r
+        })
+        .collect()
+}
+
+/// What `lispcad eval EXPR` prints, trimmed; the command must succeed.
+pub fn eval(expr: &str) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_lispcad"))
+        .args(["eval", expr])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap().trim().to_string()
+}
