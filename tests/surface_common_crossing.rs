@@ -213,21 +213,63 @@ fn a_ruled_wall_against_a_true_cylinder_gives_the_band_and_the_crossing() {
     );
 }
 
-/// The ruled surface over the square [0, 10]² that is the plane z = 0 for y ≤ 4 and the
-/// hyperbolic paraboloid 6z = (y − 4)(0.7x − 3) beyond (rulings along x between two folded
-/// lines): it crosses z = 0 along x = 30/7, a line that runs into the flat part at y = 4.
-fn folded(crossing: bool) -> Surface {
-    let (h0, h1) = if crossing { (-3.0, 4.0) } else { (3.0, 3.0) };
-    Surface::ruled(
-        pline(
-            vec![v(0.0, 0.0, 0.0), v(0.0, 4.0, 0.0), v(0.0, 10.0, h0)],
-            None,
-        ),
-        pline(
-            vec![v(10.0, 0.0, 0.0), v(10.0, 4.0, 0.0), v(10.0, 10.0, h1)],
-            None,
-        ),
-    )
+/// A fold of the square [0, 10]²: the plane z = 0 for y ≤ 4, and beyond y = 4 the ruled surface
+/// (rulings along x between two folded lines) whose far edge y = 10 runs from height `h0` at
+/// x = 0 to `h1` at x = 10: the hyperbolic paraboloid 6z = (y − 4)(h0 + (h1 − h0)x/10). Unless
+/// h0 = h1 it crosses z = 0 along the line x = −10·h0/(h1 − h0), which runs into the flat part
+/// at y = 4.
+struct Fold {
+    h0: f64,
+    h1: f64,
+}
+
+/// The fold crossing z = 0 along x = 30/7.
+const CROSSING: Fold = Fold { h0: -3.0, h1: 4.0 };
+
+impl Fold {
+    fn surface(&self) -> Surface {
+        Surface::ruled(
+            pline(
+                vec![v(0.0, 0.0, 0.0), v(0.0, 4.0, 0.0), v(0.0, 10.0, self.h0)],
+                None,
+            ),
+            pline(
+                vec![v(10.0, 0.0, 0.0), v(10.0, 4.0, 0.0), v(10.0, 10.0, self.h1)],
+                None,
+            ),
+        )
+    }
+
+    /// Where the fold crosses z = 0 (when it does).
+    fn x0(&self) -> f64 {
+        -10.0 * self.h0 / (self.h1 - self.h0)
+    }
+
+    /// A point within GEOMTOL of both z = 0 and the fold, on the rectangle's outline or on the
+    /// crossing. Where the fold leaves the plane at a small angle, its loop side and the
+    /// crossing's end are only defined to where the two are GEOMTOL apart, hence the looser
+    /// place checks.
+    fn on_pair(&self, p: DVec3) -> bool {
+        let k = (self.h1 - self.h0) / 10.0;
+        // The paraboloid f = 6z − (y − 4)(h0 + kx) = 0: distance |f| / |∇f|.
+        let f = 6.0 * p.z - (p.y - 4.0) * (self.h0 + k * p.x);
+        let grad = v(-k * (p.y - 4.0), -(self.h0 + k * p.x), 6.0).length();
+        let on_fold = if p.y <= 4.0 {
+            p.z.abs()
+        } else {
+            f.abs() / grad
+        } <= GT;
+        let on_both = p.z.abs() <= GT && on_fold;
+        let in_square = (-GT..=10.0 + GT).contains(&p.x) && (-GT..=10.0 + GT).contains(&p.y);
+        let on_rect = p.y <= 4.0 + 1e-6
+            && (p.x.abs() <= GT
+                || (p.x - 10.0).abs() <= GT
+                || p.y.abs() <= GT
+                || (p.y - 4.0).abs() <= 1e-6);
+        let crosses = self.h0 != self.h1;
+        let on_crossing = crosses && (p.x - self.x0()).abs() <= 1e-6 && p.y >= 4.0 - GT;
+        on_both && in_square && (on_rect || on_crossing)
+    }
 }
 
 fn flat_square() -> Surface {
@@ -237,56 +279,40 @@ fn flat_square() -> Surface {
     )
 }
 
-/// A point within GEOMTOL of both surfaces of the folded pairs (the plane z = 0 and the folded
-/// square: z = 0 up to y = 4, the paraboloid beyond), on the rectangle's outline or on the
-/// crossing. Where the fold leaves the plane at a small angle, its loop side and the crossing's
-/// end are only defined to where the two are GEOMTOL apart, hence the looser place checks.
-fn on_folded_pair(p: DVec3) -> bool {
-    let x0 = 30.0 / 7.0;
-    // The paraboloid f = 6z − (y − 4)(0.7x − 3) = 0: distance |f| / |∇f|.
-    let f = 6.0 * p.z - (p.y - 4.0) * (0.7 * p.x - 3.0);
-    let grad = v(-0.7 * (p.y - 4.0), -(0.7 * p.x - 3.0), 6.0).length();
-    let on_fold = if p.y <= 4.0 {
-        p.z.abs()
-    } else {
-        f.abs() / grad
-    } <= GT;
-    let on_both = p.z.abs() <= GT && on_fold;
-    let in_square = (-GT..=10.0 + GT).contains(&p.x) && (-GT..=10.0 + GT).contains(&p.y);
-    let on_rect = p.y <= 4.0 + 1e-6
-        && (p.x.abs() <= GT
-            || (p.x - 10.0).abs() <= GT
-            || p.y.abs() <= GT
-            || (p.y - 4.0).abs() <= 1e-6);
-    let on_crossing = (p.x - x0).abs() <= 1e-6 && p.y >= 4.0 - GT;
-    on_both && in_square && (on_rect || on_crossing)
-}
-
-#[test]
-fn a_crossing_running_into_the_common_region_ends_on_its_loop() {
-    // The region is the rectangle [0, 10] × [0, 4] (length 28); the crossing x = 30/7 runs
-    // from the square's far edge y = 10 to the rectangle's side y = 4 (length 6).
-    let x0 = 30.0 / 7.0;
-    let ends = [v(x0, 4.0, 0.0), v(x0, 10.0, 0.0)];
-    let e = Expect {
-        loops: 1,
-        loop_length: 28.0,
-        crossings: 1,
-        crossing_length: 6.0,
-        on: &on_folded_pair,
-        ends: &ends,
-        on_loop: &[v(x0, 4.0, 0.0)],
-    };
-    check(&flat_square(), &folded(true), &e);
-    // The same against a planar region (no closed form for a ruled surface and a plane).
-    let plane = Surface::plane(vec![
+fn flat_plane() -> Surface {
+    Surface::plane(vec![
         v(0.0, 0.0, 0.0),
         v(10.0, 0.0, 0.0),
         v(10.0, 10.0, 0.0),
         v(0.0, 10.0, 0.0),
     ])
-    .unwrap();
-    check(&plane, &folded(true), &e);
+    .unwrap()
+}
+
+/// The fold against the flat square (ruled) and against the plane region: the rectangle
+/// [0, 10] × [0, 4] (length 28) and the crossing from the square's far edge y = 10 to the
+/// rectangle's side y = 4 (length 6), which ends on the loop.
+fn check_fold_crossing(fold: &Fold) {
+    let x0 = fold.x0();
+    let ends = [v(x0, 4.0, 0.0), v(x0, 10.0, 0.0)];
+    let on = |p: DVec3| fold.on_pair(p);
+    let e = Expect {
+        loops: 1,
+        loop_length: 28.0,
+        crossings: 1,
+        crossing_length: 6.0,
+        on: &on,
+        ends: &ends,
+        on_loop: &[v(x0, 4.0, 0.0)],
+    };
+    check(&flat_square(), &fold.surface(), &e);
+    // Against a planar region: no closed form for a ruled surface and a plane.
+    check(&flat_plane(), &fold.surface(), &e);
+}
+
+#[test]
+fn a_crossing_running_into_the_common_region_ends_on_its_loop() {
+    check_fold_crossing(&CROSSING);
 }
 
 #[test]
@@ -306,14 +332,16 @@ fn pairs_sharing_only_a_region_give_its_loop_and_nothing_else() {
     check(&cyl, &bent_wall(false), &e);
     // The square folded upward beyond y = 4 leaves the plane along the fold and never comes
     // back: the rectangle alone.
+    let fold = Fold { h0: 3.0, h1: 3.0 };
+    let on = |p: DVec3| fold.on_pair(p);
     let e = Expect {
         loops: 1,
         loop_length: 28.0,
         crossings: 0,
         crossing_length: 0.0,
-        on: &on_folded_pair,
+        on: &on,
         ends: &[],
         on_loop: &[],
     };
-    check(&flat_square(), &folded(false), &e);
+    check(&flat_square(), &fold.surface(), &e);
 }

@@ -59,8 +59,18 @@ impl<'a> Region<'a> {
 
     /// Whether `p`, a point on both surfaces, lies in (or on the boundary of) the region.
     fn contains(&self, p: DVec3) -> bool {
+        self.holds(p, f64::INFINITY)
+    }
+
+    /// Whether `p`, a point within `near` of both surfaces (a mesh vertex or a seed point),
+    /// lies in (or on the boundary of) the region: its nearest point on the surface does, and
+    /// is no farther than `near` (a point beyond the surface's edge is not in the region).
+    pub(super) fn holds(&self, p: DVec3, near: f64) -> bool {
         let uv = self.s.project(p, self.hint.get());
         self.hint.set(Some(uv));
+        if self.s.eval(uv).distance(p) > near {
+            return false;
+        }
         let (su, sv) = self.s.derivs(uv);
         // A parameter step of about `step` on the surface (bounded where it degenerates).
         let du = DVec2::new(
@@ -160,6 +170,48 @@ pub(super) fn outside(
                     });
                 }
             }
+            i = j;
+        }
+    }
+    out
+}
+
+/// The mesh `seeds` with what lies inside the region dropped before they are refined: two
+/// inscribed meshes of one surface cross all over the region, and refining those fragments
+/// costs many times what the region's loops do. A seed point (within `near` of both surfaces)
+/// is tested as a refined one is.
+/// Each run kept takes one point inside at either end, so that its refined curve still reaches
+/// the region, where [`outside`] cuts it exactly.
+pub(super) fn seeds_outside(region: &Region, seeds: Vec<Polyline3>, near: f64) -> Vec<Polyline3> {
+    let mut out = Vec::new();
+    for c in seeds {
+        let flags: Vec<bool> = c.points.iter().map(|p| region.holds(*p, near)).collect();
+        if !flags.iter().any(|&f| f) {
+            out.push(c);
+            continue;
+        }
+        let n = c.points.len();
+        // Indices walked from a point inside, so a closed seed's runs do not wrap.
+        let first = flags.iter().position(|&f| f).unwrap_or(0);
+        let order: Vec<usize> = if c.closed {
+            (0..=n).map(|i| (first + i) % n).collect()
+        } else {
+            (0..n).collect()
+        };
+        let mut i = 0;
+        while i < order.len() {
+            if flags[order[i]] {
+                i += 1;
+                continue;
+            }
+            let j = (i..order.len())
+                .find(|&k| flags[order[k]])
+                .unwrap_or(order.len());
+            let (lo, hi) = (i.saturating_sub(1), (j + 1).min(order.len()));
+            out.push(Polyline3 {
+                points: order[lo..hi].iter().map(|&k| c.points[k]).collect(),
+                closed: false,
+            });
             i = j;
         }
     }

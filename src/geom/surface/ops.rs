@@ -350,6 +350,12 @@ fn intersect_seeded(
     through_meshes(a, b, tols, contacts, None).map(Some)
 }
 
+/// The seeding meshes' tolerance beside a common region, as a fraction of the smaller
+/// surface's size. Crossings the meshes cannot tell from a touch at that tolerance can be
+/// missed there: a loop less than about a hundredth of the size across, on surfaces curved on
+/// the scale of their size.
+const COARSE_SEED: f64 = 1e-4;
+
 /// The intersection seeded by the meshes and refined on the true surfaces, with the tangent
 /// contacts the meshes miss (when `contacts`). Beside a common region, only what lies outside
 /// it: the curves are cut where they enter it, and end on its `loops`.
@@ -361,9 +367,21 @@ fn through_meshes(
     mut region: Option<(&super::beside::Region, &mut Vec<Polyline3>)>,
 ) -> Result<Vec<Polyline3>, SurfaceError> {
     use super::beside::{outside, Reach};
+    let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    // Beside a common region, seeded from coarse meshes: their curves are refined onto both
+    // true surfaces to GEOMTOL and densified within CHORDTOL all the same, and meshes within
+    // a tiny CHORDTOL of a twisted surface cost seconds where the region's loops take
+    // milliseconds.
+    let seed_tol = match region {
+        Some(_) => seed_tol.max(COARSE_SEED * pa.scale().min(pb.scale())),
+        None => seed_tol,
+    };
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
-    let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    let seeds = match region.as_ref() {
+        Some((r, _)) => super::beside::seeds_outside(r, seeds, 8.0 * seed_tol),
+        None => seeds,
+    };
     let reach = Reach {
         tol: gtol,
         chord_tol: ctol,
@@ -393,11 +411,19 @@ fn through_meshes(
     if let Some((_, loops)) = region.as_ref() {
         found.extend(loops.iter().cloned());
     }
+    // Inside the region the surfaces touch everywhere: every mesh vertex there would seed a
+    // search, and each walk would wander the region to its edge.
+    // The seeds are mesh vertices, within the seeding tolerance of their own surface.
+    let shared = |p: DVec3| {
+        region
+            .as_ref()
+            .is_some_and(|(r, _)| r.holds(p, 8.0 * seed_tol))
+    };
     let mut touch =
-        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &found, seed_tol, gtol, ctol);
+        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &found, &shared, seed_tol, gtol, ctol);
     found.extend(touch.iter().cloned());
     touch.extend(super::contact::tangent_contacts(
-        &pb, &pa, &mb, &ma, &found, seed_tol, gtol, ctol,
+        &pb, &pa, &mb, &ma, &found, &shared, seed_tol, gtol, ctol,
     ));
     let touch = match region.as_mut() {
         Some((r, loops)) => outside(r, (&pa, &pb), touch, loops, reach),
