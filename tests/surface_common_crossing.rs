@@ -6,8 +6,9 @@
 //!
 //! Every pair is run in both orders and three times (bit-identical). The references are closed
 //! forms written out here: the carriers' implicit equations (the cylinder x² + y² = 1, the
-//! planes z = 0 and 3x − 4y + 4 = 0, the hyperbolic paraboloid 6z = (y − 4)(0.7x − 3)), the
-//! crossings' end points and the loops' and crossings' exact lengths.
+//! planes z = 0 and 3x − 4y + 4 = 0, the hyperbolic paraboloids 6z = (y − 4)(0.7x − 3) and
+//! 6z = (y − 4)(0.7x − 3.5)), the crossings' end points and the loops' and crossings' exact
+//! lengths.
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
@@ -313,6 +314,17 @@ fn check_fold_crossing(fold: &Fold) {
 #[test]
 fn a_crossing_running_into_the_common_region_ends_on_its_loop() {
     check_fold_crossing(&CROSSING);
+}
+
+#[test]
+fn a_crossing_along_a_grid_line_of_the_region_trace_leaves_the_loop_without_a_spike() {
+    // The crossing x = 5 runs along the middle grid line of both ruled squares' domains (x is
+    // 10 times a parameter of each, traced on a 32-cell grid), so grid nodes beyond the region
+    // lie on both surfaces: a bisection along that line from inside the region must not take
+    // them for the region (a spike out to the next node, 0.375 long, then back).
+    let fold = Fold { h0: -3.5, h1: 3.5 };
+    assert_eq!(fold.x0(), 5.0);
+    check_fold_crossing(&fold);
 }
 
 #[test]

@@ -134,7 +134,9 @@ pub(super) fn outside(
                     extend(region, (a, b), &mut c.points, at_start, loops, r);
                 }
             }
-            out.push(c);
+            if !along_loops(&c.points, loops, region) {
+                out.push(c);
+            }
             continue;
         }
         // Start a closed curve at a point in the region: its runs outside then do not wrap.
@@ -161,9 +163,7 @@ pub(super) fn outside(
                 for at_start in [true, false] {
                     extend(region, (a, b), &mut run, at_start, loops, r);
                 }
-                // A sliver along the boundary (points just outside it) is not a crossing.
-                let along = run.iter().all(|p| near_loops(*p, loops, 2.0 * region.step));
-                if !along {
+                if !along_loops(&run, loops, region) {
                     out.push(Polyline3 {
                         points: run,
                         closed: false,
@@ -173,7 +173,20 @@ pub(super) fn outside(
             i = j;
         }
     }
-    out
+    without_doubles(out, 2.0 * region.step)
+}
+
+/// The `curves` without the open ones lying along a longer one within `d` (the meshes can
+/// seed a crossing twice, as a hairpin out along it and back where the surfaces part slowly).
+fn without_doubles(mut curves: Vec<Polyline3>, d: f64) -> Vec<Polyline3> {
+    curves.sort_by(|x, y| y.length().total_cmp(&x.length()));
+    let mut kept: Vec<Polyline3> = Vec::with_capacity(curves.len());
+    for c in curves {
+        if c.closed || !c.points.iter().all(|p| near_loops(*p, &kept, d)) {
+            kept.push(c);
+        }
+    }
+    kept
 }
 
 /// The mesh `seeds` with what lies inside the region dropped before they are refined: two
@@ -303,6 +316,14 @@ fn extend(
     } else {
         run.extend(inner);
     }
+}
+
+/// Whether the curve through `points` is a sliver along the region's boundary (every point
+/// just outside it, as where a crossing meets the boundary): not a crossing.
+fn along_loops(points: &[DVec3], loops: &[Polyline3], region: &Region) -> bool {
+    points
+        .iter()
+        .all(|p| near_loops(*p, loops, 2.0 * region.step))
 }
 
 /// Whether `p` lies within `d` of one of the loops.
