@@ -40,6 +40,10 @@ pub(crate) enum Overlap {
 const N: usize = 32;
 /// Samples per direction in the quick look.
 const K: usize = 12;
+/// How far to either side of a grid edge (in parameters, a 312th of a cell) its region edge is
+/// looked for when a crossing may run along it: off the crossing by far more than the
+/// tolerance allows, near enough that a curved region edge is straight across the two lines.
+const OFF_LINE: f64 = 1e-4;
 
 /// What a point is tested against: a surface, or the plane of a section.
 enum Target<'a> {
@@ -485,8 +489,36 @@ impl Tracer<'_, '_> {
         } else {
             (ub, ua)
         };
-        let p = self.edge(lo, hi);
+        let p = if self.on(hi) {
+            self.edge_beside(lo, hi)
+        } else {
+            self.edge(lo, hi)
+        };
         self.cross.insert(e, p);
+    }
+
+    /// [`Self::edge`] where the node out of the region still lies on the target: a crossing
+    /// runs through it, maybe along this grid edge, whose points then all lie on the target and
+    /// bisection would end at that node (a spike out along the crossing). The edge is found on
+    /// the parallel lines a little to either side, off the crossing, and the mean of where they
+    /// meet it taken (which cancels their offset's slant across an oblique edge); when neither
+    /// does, as before.
+    fn edge_beside(&self, lo: DVec2, hi: DVec2) -> DVec2 {
+        let d = hi - lo;
+        let len = d.length();
+        let side = DVec2::new(-d.y, d.x) * (OFF_LINE / len);
+        let mut along = Vec::with_capacity(2);
+        for s in [side, -side] {
+            let (l, h) = (lo + s, hi + s);
+            if self.on(l) && !self.on(h) {
+                along.push((self.edge(l, h) - l).dot(d) / (len * len));
+            }
+        }
+        if along.is_empty() {
+            return self.edge(lo, hi);
+        }
+        let t = along.iter().sum::<f64>() / along.len() as f64;
+        lo + d * t.clamp(0.0, 1.0)
     }
 
     fn bisect(&self, mut lo: DVec2, mut hi: DVec2) -> DVec2 {
@@ -619,4 +651,11 @@ impl Tracer<'_, '_> {
 
 fn uv_of(i: usize, j: usize) -> DVec2 {
     DVec2::new(i as f64 / N as f64, j as f64 / N as f64)
+}
+
+/// Whether a point lies on `s` within `tol` (inside its extent), tested as the tracing tests it:
+/// for the crossings kept beside a common region ([`super::beside`]).
+pub(super) fn on_surface(s: &Surface, tol: f64) -> impl Fn(DVec3) -> bool + '_ {
+    let t = Target::of(s);
+    move |p| t.on(p, tol)
 }

@@ -26,7 +26,9 @@ use std::cell::Cell;
 /// The contacts of `a` and `b` (meshed as `ma`, `mb` within `seed_tol`) not on `curves`: a
 /// one-point polyline for an isolated contact, the contact curve (closed when it closes) where
 /// the surfaces touch along one; every point within `tol` of both surfaces, curves densified
-/// within `chord_tol`.
+/// within `chord_tol`. Seeds and contact points for which `shared` holds (a common region of
+/// the two, where the surfaces touch everywhere and whose loops are already found) are passed
+/// over.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn tangent_contacts(
     a: &Patch,
@@ -34,6 +36,7 @@ pub(crate) fn tangent_contacts(
     ma: &Mesh,
     mb: &Mesh,
     curves: &[Polyline3],
+    shared: &dyn Fn(DVec3) -> bool,
     seed_tol: f64,
     tol: f64,
     chord_tol: f64,
@@ -68,11 +71,11 @@ pub(crate) fn tangent_contacts(
         .collect();
     seeds.extend(low_edges(ma, &dist, gap, &to_b, curves));
     for (q, reach) in seeds {
-        if near_any(q, &out, 4.0 * reach) {
+        if near_any(q, &out, 4.0 * reach) || shared(q) {
             continue;
         }
         if let Some((uv, p)) = touch(a, b, q, tol) {
-            if near_any(p, &out, 4.0 * reach) {
+            if near_any(p, &out, 4.0 * reach) || shared(p) {
                 continue;
             }
             out.push(

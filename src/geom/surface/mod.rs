@@ -7,6 +7,7 @@
 //! [`CurveRef`] (any [`ParamCurve`]); [`SampledCurve`] wraps a point list.
 
 mod analytic;
+mod beside;
 mod coaxial;
 mod coincide;
 mod common;

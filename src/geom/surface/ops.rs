@@ -324,13 +324,20 @@ fn intersect_seeded(
     let ctol = check_positive("CHORDTOL (chord-tol)", chord_tol)?;
     let seed_tol = check_positive("seed tolerance", seed_tol)?;
     let gtol = check_positive("GEOMTOL", geom_tol)?;
-    // A common region is its boundary loops (None: everywhere, no boundary), with the closed
-    // form's curves elsewhere (the meshes of coincident surfaces cross all over the region, so
-    // other pairs give the loops alone).
+    // A common region is its boundary loops (None: everywhere, no boundary), with the curves
+    // elsewhere: the closed form's, or the meshes' kept where they leave the region.
+    let tols = (seed_tol, gtol, ctol);
     match super::common::overlap(a, b, gtol, ctol) {
         Some(super::common::Overlap::Loops(mut l)) => {
             if let Some(c) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
                 l.extend(super::common::outside_common(a, b, c, gtol));
+            } else {
+                let region = super::beside::Region::new(a, b, gtol);
+                // Meshes too fine to make (a twisted patch at a tiny CHORDTOL) leave the loops,
+                // which are found on the true surfaces alone, as before the mesh path ran here.
+                if let Ok(c) = through_meshes(a, b, tols, contacts, Some((&region, &mut l))) {
+                    l.extend(c);
+                }
             }
             return Ok(Some(l));
         }
@@ -340,9 +347,46 @@ fn intersect_seeded(
     if let Some(curves) = super::analytic::analytic_intersect(a, b, gtol, ctol) {
         return Ok(Some(curves));
     }
+    through_meshes(a, b, tols, contacts, None).map(Some)
+}
+
+/// The seeding meshes' tolerance beside a common region, as a fraction of the smaller
+/// surface's size. Crossings the meshes cannot tell from a touch at that tolerance can be
+/// missed there: a loop less than about a hundredth of the size across, on surfaces curved on
+/// the scale of their size.
+const COARSE_SEED: f64 = 1e-4;
+
+/// The intersection seeded by the meshes and refined on the true surfaces, with the tangent
+/// contacts the meshes miss (when `contacts`). Beside a common region, only what lies outside
+/// it: the curves are cut where they enter it, and end on its `loops`.
+fn through_meshes(
+    a: &Surface,
+    b: &Surface,
+    (seed_tol, gtol, ctol): (f64, f64, f64),
+    contacts: bool,
+    mut region: Option<(&super::beside::Region, &mut Vec<Polyline3>)>,
+) -> Result<Vec<Polyline3>, SurfaceError> {
+    use super::beside::{outside, Reach};
+    let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    // Beside a common region, seeded from coarse meshes: their curves are refined onto both
+    // true surfaces to GEOMTOL and densified within CHORDTOL all the same, and meshes within
+    // a tiny CHORDTOL of a twisted surface cost seconds where the region's loops take
+    // milliseconds.
+    let seed_tol = match region {
+        Some(_) => seed_tol.max(COARSE_SEED * pa.scale().min(pb.scale())),
+        None => seed_tol,
+    };
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
     let seeds = intersect_meshes(&ma, &mb);
-    let (pa, pb) = (super::refine::Patch::new(a), super::refine::Patch::new(b));
+    let seeds = match region.as_ref() {
+        Some((r, _)) => super::beside::seeds_outside(r, seeds, 8.0 * seed_tol),
+        None => seeds,
+    };
+    let reach = Reach {
+        tol: gtol,
+        chord_tol: ctol,
+        seed_tol,
+    };
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
@@ -352,19 +396,41 @@ fn intersect_seeded(
         })
         .filter(|c| !c.points.is_empty())
         .collect();
+    let curves = match region.as_mut() {
+        Some((r, loops)) => outside(r, (&pa, &pb), curves, loops, reach),
+        None => curves,
+    };
     let mut curves = super::contact::regroup_pair(&pa, &pb, curves, gtol, ctol);
     if !contacts {
-        return Ok(Some(curves));
+        return Ok(curves);
     }
     // Touching without crossing: the meshes miss each other there. Seeded from both meshes'
-    // vertices (a coarse plane region has none near a contact on the other surface).
-    let contacts =
-        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &curves, seed_tol, gtol, ctol);
-    curves.extend(contacts);
-    let contacts =
-        super::contact::tangent_contacts(&pb, &pa, &mb, &ma, &curves, seed_tol, gtol, ctol);
-    curves.extend(contacts);
-    Ok(Some(curves))
+    // vertices (a coarse plane region has none near a contact on the other surface); the
+    // region's loops count as curves found.
+    let mut found = curves.clone();
+    if let Some((_, loops)) = region.as_ref() {
+        found.extend(loops.iter().cloned());
+    }
+    // Inside the region the surfaces touch everywhere: every mesh vertex there would seed a
+    // search, and each walk would wander the region to its edge.
+    // The seeds are mesh vertices, within the seeding tolerance of their own surface.
+    let shared = |p: DVec3| {
+        region
+            .as_ref()
+            .is_some_and(|(r, _)| r.holds(p, 8.0 * seed_tol))
+    };
+    let mut touch =
+        super::contact::tangent_contacts(&pa, &pb, &ma, &mb, &found, &shared, seed_tol, gtol, ctol);
+    found.extend(touch.iter().cloned());
+    touch.extend(super::contact::tangent_contacts(
+        &pb, &pa, &mb, &ma, &found, &shared, seed_tol, gtol, ctol,
+    ));
+    let touch = match region.as_mut() {
+        Some((r, loops)) => outside(r, (&pa, &pb), touch, loops, reach),
+        None => touch,
+    };
+    curves.extend(touch);
+    Ok(curves)
 }
 
 /// Where the segment `p0 → p1` meets a surface, as `(t, point)` sorted by t: closed form for

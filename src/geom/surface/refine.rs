@@ -325,10 +325,10 @@ pub(crate) fn refine_pair_curve(
     )
 }
 
-/// Closes an open refined curve whose ends are within a few of its own segment lengths — the
-/// meshes lose the last pieces before a branch point, where the surfaces touch (two equal
-/// cylinders crossing) — when the gap refines onto both surfaces: the gap is densified like
-/// any other segment.
+/// Closes an open refined curve whose ends are within a few of its own segment lengths and
+/// head for each other — the meshes lose the last pieces before a branch point, where the
+/// surfaces touch (two equal cylinders crossing) — when the gap refines onto both surfaces: the
+/// gap is densified like any other segment.
 pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord_tol: f64) {
     let n = c.points.len();
     if c.closed || n < 4 {
@@ -340,7 +340,7 @@ pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord
         .map(|w| w[0].distance(w[1]))
         .fold(0.0, f64::max);
     let (s, e) = (c.points[0], c.points[n - 1]);
-    if s.distance(e) > 3.0 * h {
+    if s.distance(e) > 3.0 * h || !ends_meet(&c.points) {
         return;
     }
     let node = |p: DVec3| newton_pair(a, b, [a.project(p, None), b.project(p, None)], tol);
@@ -362,6 +362,33 @@ pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord
     );
     c.points.extend(extra);
     c.closed = true;
+}
+
+/// Whether the open curve `p` (at least two points) could close across the gap between its
+/// ends: each end runs on towards the other (within 60°). A straight or gently bent curve is
+/// densified to a few long segments, so its ends can lie within a few segment lengths of each
+/// other while it runs away from the gap at both.
+fn ends_meet(p: &[DVec3]) -> bool {
+    let n = p.len();
+    let (s, e) = (p[0], p[n - 1]);
+    let Some(gap) = (s - e).try_normalize() else {
+        return true;
+    };
+    let (Some(out_e), Some(out_s)) = (
+        leaving(e, p.iter().rev().skip(1)),
+        leaving(s, p.iter().skip(1)),
+    ) else {
+        return false;
+    };
+    out_e.dot(gap) >= 0.5 && out_s.dot(-gap) >= 0.5
+}
+
+/// The direction a curve leaves at `end`, from the first of the `inner` points (walking in from
+/// that end) apart from it.
+fn leaving<'p>(end: DVec3, mut inner: impl Iterator<Item = &'p DVec3>) -> Option<DVec3> {
+    inner
+        .find(|q| **q != end)
+        .and_then(|q| (end - *q).try_normalize())
 }
 
 /// A point of a plane section: Newton on `n·(S(u, v) − p0) = 0` (minimum-norm step).
