@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use glam::{DVec2, DVec3};
 
 use crate::builtin;
+use crate::builtins::fs_policy::Confined;
 use crate::builtins::geometry::CurveValue;
 use crate::builtins::io::FsPolicy;
 use crate::builtins::surfaces::mesh_of;
@@ -224,17 +225,41 @@ pub fn output_options(
 
 /// Saves through the write policy: the file is replaced atomically in the confined directory.
 fn save_to(it: &mut Interp, path: &Path, opts: &OutputOptions) -> Result<(), Exn> {
-    let c = it
-        .ext::<FsPolicy>()
-        .confine(path, crate::builtins::io::Access::Write)
+    let policy = std::mem::take(it.ext::<FsPolicy>());
+    let r = save_prepared(
+        &policy,
+        &crate::output::Prepared::new(drawing(it)),
+        path,
+        opts,
+        None,
+    );
+    *it.ext::<FsPolicy>() = policy;
+    r.map(drop)
+}
+
+/// Saves `path` (confined by `policy`, reusing `prev`'s directory handle when it is the same
+/// directory); returns the confinement, for the next file.
+fn save_prepared(
+    policy: &FsPolicy,
+    p: &crate::output::Prepared,
+    path: &Path,
+    opts: &OutputOptions,
+    prev: Option<&Confined>,
+) -> Result<Confined, Exn> {
+    let c = policy
+        .confine_after(path, crate::builtins::io::Access::Write, prev)
         .map_err(err)?;
-    let d = drawing(it);
-    crate::output::save(d, &c.path, opts).map_err(|e| {
+    let r = match c.dir_and_name() {
+        Some((dir, name)) => crate::output::save_prepared_at(p, dir, name, path, opts),
+        None => crate::output::save_prepared(p, &c.path, opts),
+    };
+    r.map_err(|e| {
         let msg = e
             .to_string()
             .replace(&c.path.display().to_string(), &path.display().to_string());
         err(format!("save {}: {msg}", path.display()))
-    })
+    })?;
+    Ok(c)
 }
 
 fn save(it: &mut Interp, a: &[Value]) -> LResult {
@@ -367,8 +392,20 @@ pub fn write_outputs(
     for o in outputs {
         crate::output::Format::from_path(o).map_err(|e| e.to_string())?;
     }
+    // The policy is taken out for the loop (the drawing is borrowed meanwhile) and put back.
+    let policy = std::mem::take(it.ext::<FsPolicy>());
+    let prepared = crate::output::Prepared::new(drawing(it));
+    let mut prev = None;
+    let mut r = Ok(());
     for o in outputs {
-        save_to(it, o, &opts).map_err(|e| e.message.clone())?;
+        match save_prepared(&policy, &prepared, o, &opts, prev.as_ref()) {
+            Ok(c) => prev = Some(c),
+            Err(e) => {
+                r = Err(e.message);
+                break;
+            }
+        }
     }
-    Ok(())
+    *it.ext::<FsPolicy>() = policy;
+    r
 }

@@ -45,15 +45,13 @@ fn opt_int(it: &Interp, a: &[Value], i: usize) -> Result<Option<i32>, Exn> {
 
 fn rtos(it: &mut Interp, a: &[Value]) -> LResult {
     let x = it.num(&a[0])?;
+    let mode = opt_int(it, a, 1)?;
+    let prec = opt_int(it, a, 2)?;
+    // Each variable is a lookup by name: LUNITS and LUPREC only when the call leaves them out.
     let vars = it.ext::<SysVars>();
-    let (lunits, luprec, dimzin, unitmode) = (
-        vars.int("LUNITS"),
-        vars.int("LUPREC"),
-        vars.int("DIMZIN"),
-        vars.int("UNITMODE"),
-    );
-    let mode = opt_int(it, a, 1)?.unwrap_or(lunits);
-    let prec = opt_int(it, a, 2)?.unwrap_or(luprec);
+    let mode = mode.unwrap_or_else(|| vars.int("LUNITS"));
+    let prec = prec.unwrap_or_else(|| vars.int("LUPREC"));
+    let (dimzin, unitmode) = (vars.int("DIMZIN"), vars.int("UNITMODE"));
     text::rtos(x, mode, prec, dimzin, unitmode)
         .map(|s| Value::str(&s))
         .map_err(fmt_err)

@@ -13,9 +13,13 @@
 //! with cap-std: a symlink is followed only while it stays below the root, atomically with
 //! the open, so no swap between a check and the read can lead out.
 
+use std::ffi::{OsStr, OsString};
 use std::fs::File;
 use std::io::Read;
+use std::os::fd::{AsFd, BorrowedFd};
 use std::path::{Component, Path, PathBuf};
+use std::rc::Rc;
+use std::sync::OnceLock;
 
 /// The policy of one run; `Default` (no roots) confines writes to the current directory.
 #[derive(Default, Clone, Debug)]
@@ -35,8 +39,24 @@ pub struct FsPolicy {
 /// A path the policy allows, as the caller must use it: through the directory handle kept
 /// here when confined. Drop it only after the file operation.
 pub struct Confined {
-    _dir: Option<cap_std::fs::Dir>,
+    dir: Option<Rc<cap_std::fs::Dir>>,
+    /// The file's name in `dir` (None: the path is `dir` itself, or not confined).
+    name: Option<OsString>,
+    /// Which directory `dir` is (the root, and the parent below it), for `confine_after`.
+    key: Option<(PathBuf, PathBuf)>,
     pub path: PathBuf,
+}
+
+impl Confined {
+    /// The open directory and the file's name in it, for calls relative to the directory
+    /// (`openat`, `renameat`): the same file as `path` without the kernel walking
+    /// `/proc/self/fd/N/` again for each call.
+    pub fn dir_and_name(&self) -> Option<(BorrowedFd<'_>, &OsStr)> {
+        match (&self.dir, &self.name) {
+            (Some(d), Some(n)) => Some((d.as_fd(), n.as_os_str())),
+            _ => None,
+        }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -58,16 +78,19 @@ fn refused(path: &Path, access: Access, why: &str) -> String {
     }
 }
 
+/// The current directory, asked of the kernel once per process: nothing in lispcad changes
+/// it, and a batch resolves two paths or more per row.
+fn current_dir() -> Option<&'static Path> {
+    static CWD: OnceLock<Option<PathBuf>> = OnceLock::new();
+    CWD.get_or_init(|| std::env::current_dir().ok()).as_deref()
+}
+
 /// `path` made absolute against the current directory, `.` dropped; None if it has `..`.
-/// The current directory is asked of the kernel at most once across calls sharing `cwd`.
-fn absolute_in(path: &Path, cwd: &mut Option<PathBuf>) -> Option<PathBuf> {
+fn absolute_in(path: &Path) -> Option<PathBuf> {
     let abs = if path.is_absolute() {
         path.to_path_buf()
     } else {
-        if cwd.is_none() {
-            *cwd = Some(std::env::current_dir().ok()?);
-        }
-        cwd.as_ref()?.join(path)
+        current_dir()?.join(path)
     };
     let mut out = PathBuf::new();
     for c in abs.components() {
@@ -123,11 +146,10 @@ impl FsPolicy {
         if free {
             return Ok(Place::Free);
         }
-        let cwd = &mut None;
-        let abs = absolute_in(path, cwd).ok_or_else(|| refused(path, access, "contains `..`"))?;
+        let abs = absolute_in(path).ok_or_else(|| refused(path, access, "contains `..`"))?;
         if access == Access::Read {
             for f in &self.read_files {
-                if absolute_in(f, cwd).as_deref() == Some(&abs) {
+                if absolute_in(f).as_deref() == Some(&abs) {
                     return Ok(Place::Free);
                 }
             }
@@ -147,7 +169,7 @@ impl FsPolicy {
             })
         };
         for root in &roots {
-            if let Some(p) = absolute_in(root, cwd).and_then(|r| beneath(&r, root)) {
+            if let Some(p) = absolute_in(root).and_then(|r| beneath(&r, root)) {
                 return Ok(p);
             }
         }
@@ -165,18 +187,42 @@ impl FsPolicy {
 
     /// The path to use for `access` to `path`, or the refusal message.
     pub fn confine(&self, path: &Path, access: Access) -> Result<Confined, String> {
+        self.confine_after(path, access, None)
+    }
+
+    /// `confine`, reusing the directory handle of `prev` (confined just before by this
+    /// policy) when `path` lies in the same directory below the same root: a run writing
+    /// `a.dxf` and `a.svg` side by side opens their directory once.
+    pub fn confine_after(
+        &self,
+        path: &Path,
+        access: Access,
+        prev: Option<&Confined>,
+    ) -> Result<Confined, String> {
         match self.locate(path, access)? {
             Place::Free => Ok(Confined {
-                _dir: None,
+                dir: None,
+                name: None,
+                key: None,
                 path: path.to_path_buf(),
             }),
-            Place::Beneath { root, shown, rel } => open_beneath(&root, &rel).map_err(|e| {
-                refused(
-                    path,
-                    access,
-                    &format!("cannot be reached below {}: {e}", shown.display()),
-                )
-            }),
+            Place::Beneath { root, shown, rel } => {
+                if let (Some(prev), Some(name)) = (prev, rel.file_name()) {
+                    let parent = rel.parent().unwrap_or(Path::new("")).to_path_buf();
+                    if let (Some(dir), Some(key)) = (&prev.dir, &prev.key) {
+                        if key.0 == root && key.1 == parent && prev.name.is_some() {
+                            return Ok(through(dir.clone(), Some(name), (root, parent)));
+                        }
+                    }
+                }
+                open_beneath(&root, &rel).map_err(|e| {
+                    refused(
+                        path,
+                        access,
+                        &format!("cannot be reached below {}: {e}", shown.display()),
+                    )
+                })
+            }
         }
     }
 
@@ -370,12 +416,16 @@ enum Place {
 
 /// Opens the parent of `rel` below `root` and names the file through that handle.
 fn open_beneath(root: &Path, rel: &Path) -> std::io::Result<Confined> {
+    let key = (
+        root.to_path_buf(),
+        rel.parent().unwrap_or(Path::new("")).to_path_buf(),
+    );
     let name = match rel.file_name() {
         Some(n) => n.to_owned(),
         // The root itself (e.g. `vl-directory-files` of the script directory).
         None => {
             let dir = cap_std::fs::Dir::open_ambient_dir(root, cap_std::ambient_authority())?;
-            return Ok(through(dir, None));
+            return Ok(through(Rc::new(dir), None, key));
         }
     };
     let root_dir = cap_std::fs::Dir::open_ambient_dir(root, cap_std::ambient_authority())?;
@@ -384,10 +434,10 @@ fn open_beneath(root: &Path, rel: &Path) -> std::io::Result<Confined> {
         Some(p) => root_dir.open_dir(p)?,
         None => root_dir,
     };
-    Ok(through(dir, Some(&name)))
+    Ok(through(Rc::new(dir), Some(&name), key))
 }
 
-fn through(dir: cap_std::fs::Dir, name: Option<&std::ffi::OsStr>) -> Confined {
+fn through(dir: Rc<cap_std::fs::Dir>, name: Option<&OsStr>, key: (PathBuf, PathBuf)) -> Confined {
     use std::os::fd::AsRawFd;
     let base = PathBuf::from(format!("/proc/self/fd/{}", dir.as_raw_fd()));
     let path = match name {
@@ -395,7 +445,9 @@ fn through(dir: cap_std::fs::Dir, name: Option<&std::ffi::OsStr>) -> Confined {
         None => base,
     };
     Confined {
-        _dir: Some(dir),
+        dir: Some(dir),
+        name: name.map(OsStr::to_os_string),
+        key: Some(key),
         path,
     }
 }

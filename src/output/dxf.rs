@@ -57,6 +57,12 @@ pub fn write_cad(d: &Drawing) -> String {
 
 /// `write_cad` with the drawing unit (`$INSUNITS` code) in the header.
 pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
+    write_cad_prepared(&super::Prepared::new(d), insunits)
+}
+
+/// `write_cad_units` of a prepared drawing.
+pub fn write_cad_prepared(p: &super::Prepared, insunits: i32) -> String {
+    let d = p.drawing;
     let mut next = d.next_handle();
     let mut alloc = || {
         let h = next;
@@ -85,7 +91,7 @@ pub fn write_cad_units(d: &Drawing, insunits: i32) -> String {
     };
 
     let mut w = DxfWriter::new();
-    let extents = d.extents();
+    let extents = p.extents();
     write_header(&mut w, d, extents, handseed, insunits);
     w.out.push_str(prepared(&CLASSES, write_classes));
     w.str(0, "SECTION");

@@ -231,16 +231,50 @@ pub(crate) fn check_drawing(d: &Drawing) -> Result<(), OutputError> {
     Ok(())
 }
 
+/// A drawing about to be written, with what several formats need worked out once: a run
+/// with `-o a.dxf -o a.svg` (every batch row) used to compute the extents, which means
+/// decomposing every spline, once for each file.
+pub struct Prepared<'a> {
+    pub drawing: &'a Drawing,
+    extents: std::cell::OnceCell<Option<(DVec3, DVec3)>>,
+}
+
+impl<'a> Prepared<'a> {
+    pub fn new(drawing: &'a Drawing) -> Self {
+        Prepared {
+            drawing,
+            extents: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// `Drawing::extents`, computed on first use.
+    pub fn extents(&self) -> Option<(DVec3, DVec3)> {
+        *self.extents.get_or_init(|| self.drawing.extents())
+    }
+}
+
 /// The file contents for `format`.
 pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u8>, OutputError> {
+    render_prepared(&Prepared::new(d), format, opts)
+}
+
+/// `render` of a prepared drawing (shared by the formats of one save).
+pub fn render_prepared(
+    p: &Prepared,
+    format: Format,
+    opts: &OutputOptions,
+) -> Result<Vec<u8>, OutputError> {
+    let d = p.drawing;
     opts.validate()?;
     check_drawing(d)?;
     Ok(match format {
-        Format::Svg => svg::write_svg(d, opts).into_bytes(),
+        Format::Svg => svg::svg_layers_prepared(p, opts).to_svg().into_bytes(),
         Format::Dxf => match (opts.dxf_profile, d.document()) {
             // An opened drawing is written back in its own version and code page.
             (DxfProfile::Cad, Some(doc)) => dxf_opened::write_opened(d, doc),
-            (DxfProfile::Cad, None) => dxf::encode_cp1252(dxf::write_cad_units(d, opts.insunits)),
+            (DxfProfile::Cad, None) => {
+                dxf::encode_cp1252(dxf::write_cad_prepared(p, opts.insunits))
+            }
             (DxfProfile::Cam, _) => {
                 let out = cam::write_cam_with(d, opts);
                 for w in &out.warnings {
@@ -249,16 +283,39 @@ pub fn render(d: &Drawing, format: Format, opts: &OutputOptions) -> Result<Vec<u
                 dxf::encode_cp1252(out.dxf)
             }
         },
-        Format::Pdf => pdf::layers_to_pdf(&svg::svg_layers(d, opts))?,
-        Format::Png => png::svg_to_png(&svg::write_svg(d, opts), opts.dpi)?,
+        Format::Pdf => pdf::layers_to_pdf(&svg::svg_layers_prepared(p, opts))?,
+        Format::Png => png::svg_to_png(&svg::svg_layers_prepared(p, opts).to_svg(), opts.dpi)?,
     })
 }
 
 /// Write the drawing to `path` atomically, in the format of its extension (.svg, .dxf, .pdf,
 /// .png).
 pub fn save(d: &Drawing, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
+    save_prepared(&Prepared::new(d), path, opts)
+}
+
+/// `save_prepared` of the file `name` in the open directory `dir` (`shown`: the path for
+/// messages), replaced atomically relative to the handle.
+#[cfg(unix)]
+pub fn save_prepared_at(
+    p: &Prepared,
+    dir: std::os::fd::BorrowedFd,
+    name: &std::ffi::OsStr,
+    shown: &Path,
+    opts: &OutputOptions,
+) -> Result<(), OutputError> {
+    let format = Format::from_path(shown)?;
+    let bytes = render_prepared(p, format, opts)?;
+    atomic::write_atomic_at(dir, name, &bytes).map_err(|source| OutputError::Io {
+        path: shown.display().to_string(),
+        source,
+    })
+}
+
+/// `save` of a prepared drawing (shared by the files of one run).
+pub fn save_prepared(p: &Prepared, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
     let format = Format::from_path(path)?;
-    let bytes = render(d, format, opts)?;
+    let bytes = render_prepared(p, format, opts)?;
     atomic::write_atomic(path, &bytes).map_err(|source| OutputError::Io {
         path: path.display().to_string(),
         source,

@@ -13,9 +13,6 @@
 use std::fmt::Write as _;
 
 use glam::{DVec2, DVec3};
-use svg::node::element::{Group, Text};
-use svg::node::Blob;
-use svg::Document;
 
 use super::aci::aci_to_hex;
 use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
@@ -113,7 +110,7 @@ fn fixed6(out: &mut String, r: f64) {
     }
     let n = r.abs() as u64;
     let (int, frac) = (n / 1_000_000, n % 1_000_000);
-    let _ = write!(out, "{int}");
+    push_u64(out, int);
     if frac != 0 {
         let mut digits = [b'0'; 6];
         let mut f = frac;
@@ -125,6 +122,22 @@ fn fixed6(out: &mut String, r: f64) {
         out.push('.');
         out.push_str(std::str::from_utf8(&digits[..len]).unwrap_or("0"));
     }
+}
+
+/// `n` in decimal (what `write!(out, "{n}")` writes, without the formatting machinery: the
+/// integer part of every number of a path).
+fn push_u64(out: &mut String, mut n: u64) {
+    let mut digits = [0u8; 20];
+    let mut i = digits.len();
+    loop {
+        i -= 1;
+        digits[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    out.push_str(std::str::from_utf8(&digits[i..]).unwrap_or("0"));
 }
 
 fn pt(out: &mut String, p: DVec2) {
@@ -382,7 +395,12 @@ fn entity_path(e: &Entity, v: &View) -> Option<String> {
     Some(d)
 }
 
-fn text_element(insert: DVec3, height: f64, value: &str, rotation: f64, v: &View) -> Text {
+fn text_element(
+    out: &mut String,
+    (insert, height, value, rotation): (DVec3, f64, &str, f64),
+    color: Option<&str>,
+    v: &View,
+) {
     let p = v.project(insert);
     let mut tf = String::from("translate(");
     pt(&mut tf, p);
@@ -395,12 +413,74 @@ fn text_element(insert: DVec3, height: f64, value: &str, rotation: f64, v: &View
     }
     let mut size = String::new();
     num(&mut size, height);
-    Text::new(value)
-        .set("transform", tf)
-        .set("font-size", size)
-        .set("font-family", "sans-serif")
-        .set("stroke", "none")
-        .set("fill", "currentColor")
+    let mut attrs = [
+        ("transform", tf.as_str()),
+        ("font-size", size.as_str()),
+        ("font-family", "sans-serif"),
+        ("stroke", "none"),
+        ("fill", "currentColor"),
+        ("color", color.unwrap_or_default()),
+    ];
+    let n = if color.is_some() { 6 } else { 5 };
+    push_element(out, "text", &mut attrs[..n], value, true);
+}
+
+/// `<name attrs>` as the svg crate writes a start tag: attributes sorted by name, values
+/// escaped.
+fn push_start_tag(out: &mut String, name: &str, attrs: &mut [(&str, &str)]) {
+    attrs.sort_by_key(|a| a.0);
+    out.push('<');
+    out.push_str(name);
+    for (k, v) in attrs.iter() {
+        out.push(' ');
+        out.push_str(k);
+        out.push_str("=\"");
+        push_escaped(out, v, true);
+        out.push('"');
+    }
+    out.push('>');
+}
+
+/// An element of one child as the svg crate writes a `Group` holding a `Blob` or a `Text`
+/// (the child on a line of its own; a text's content escaped), the same bytes without the
+/// crate's allocations for every attribute and escape, which a batch paid for every row.
+fn push_element(
+    out: &mut String,
+    name: &str,
+    attrs: &mut [(&str, &str)],
+    child: &str,
+    escape: bool,
+) {
+    push_start_tag(out, name, attrs);
+    out.push('\n');
+    if escape {
+        push_escaped(out, child, false);
+    } else {
+        out.push_str(child);
+    }
+    out.push_str("\n</");
+    out.push_str(name);
+    out.push('>');
+}
+
+/// The svg crate's escaping in one pass: `&`, `<`, `>` in text, and quotes too in attribute
+/// values (its successive replacements, `&` first, give the same bytes).
+fn push_escaped(out: &mut String, s: &str, quotes: bool) {
+    let special = |c: char| matches!(c, '&' | '<' | '>') || (quotes && matches!(c, '"' | '\''));
+    if !s.contains(special) {
+        out.push_str(s);
+        return;
+    }
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' if quotes => out.push_str("&quot;"),
+            '\'' if quotes => out.push_str("&apos;"),
+            c => out.push(c),
+        }
+    }
 }
 
 /// One drawing layer's part of the SVG: what its `<g>` is built from.
@@ -427,21 +507,23 @@ impl SvgLayers {
     /// Layer `i`'s `<g>` element; `show` draws it even when the layer is hidden.
     pub fn group(&self, i: usize, show: bool) -> String {
         let l = &self.layers[i];
-        let mut g = Group::new()
-            .set("id", l.id.as_str())
-            .set("inkscape:groupmode", "layer")
-            .set("inkscape:label", l.name.as_str())
-            .set("transform", "scale(1 -1)")
-            .set("fill", "none")
-            .set("stroke", l.color.as_str())
-            .set("color", l.color.as_str())
-            .set("stroke-width", self.stroke_width.as_str())
-            .set("stroke-linecap", "round")
-            .set("stroke-linejoin", "round");
-        if l.hidden && !show {
-            g = g.set("display", "none");
-        }
-        g.add(Blob::new(l.body.clone())).to_string()
+        let mut attrs = [
+            ("id", l.id.as_str()),
+            ("inkscape:groupmode", "layer"),
+            ("inkscape:label", l.name.as_str()),
+            ("transform", "scale(1 -1)"),
+            ("fill", "none"),
+            ("stroke", l.color.as_str()),
+            ("color", l.color.as_str()),
+            ("stroke-width", self.stroke_width.as_str()),
+            ("stroke-linecap", "round"),
+            ("stroke-linejoin", "round"),
+            ("display", "none"),
+        ];
+        let n = if l.hidden && !show { 11 } else { 10 };
+        let mut out = String::with_capacity(l.body.len() + 400);
+        push_element(&mut out, "g", &mut attrs[..n], &l.body, false);
+        out
     }
 
     /// A whole SVG document of the head and the given groups.
@@ -479,8 +561,14 @@ pub fn write_svg(d: &Drawing, opts: &OutputOptions) -> String {
 
 /// The drawing's SVG, split by layer (layers without entities are left out).
 pub fn svg_layers(d: &Drawing, opts: &OutputOptions) -> SvgLayers {
+    svg_layers_prepared(&super::Prepared::new(d), opts)
+}
+
+/// `svg_layers` of a prepared drawing (its extents shared with the other formats).
+pub fn svg_layers_prepared(p: &super::Prepared, opts: &OutputOptions) -> SvgLayers {
+    let d = p.drawing;
     let v = View::new(opts.view_dir);
-    let head = head(d, opts, &v);
+    let head = head(p, opts, &v);
     // Bucket entities by layer (layer table order, entities in insertion order).
     let layers = d.layers();
     let mut buckets: Vec<Vec<&Entity>> = vec![Vec::new(); layers.len()];
@@ -515,24 +603,8 @@ pub fn svg_layers(d: &Drawing, opts: &OutputOptions) -> SvgLayers {
 }
 
 /// The `<svg>` start tag: physical size and viewBox from the extents in the view plane.
-fn head(d: &Drawing, opts: &OutputOptions, v: &View) -> String {
-    // Extents in the view plane.
-    let mut lo = DVec2::splat(f64::INFINITY);
-    let mut hi = DVec2::splat(f64::NEG_INFINITY);
-    let mut pts = Vec::new();
-    for e in d.entities() {
-        pts.clear();
-        e.kind.extent_points(&mut pts);
-        for p in &pts {
-            let q = v.project(*p);
-            lo = lo.min(q);
-            hi = hi.max(q);
-        }
-    }
-    if !lo.is_finite() {
-        lo = DVec2::ZERO;
-        hi = DVec2::ZERO;
-    }
+fn head(p: &super::Prepared, opts: &OutputOptions, v: &View) -> String {
+    let (lo, hi) = view_extents(p, v);
     let unit = opts.unit_mm();
     let m = opts.margin.max(0.0) / unit;
     let (x0, y0) = (lo.x - m, -(hi.y + m));
@@ -559,28 +631,61 @@ fn head(d: &Drawing, opts: &OutputOptions, v: &View) -> String {
         s.push_str(suffix);
         s
     };
-    let doc = Document::new()
-        .set(
+    let (width, height) = (mm(w), mm(h));
+    let mut attrs = [
+        ("xmlns", "http://www.w3.org/2000/svg"),
+        (
             "xmlns:inkscape",
             "http://www.inkscape.org/namespaces/inkscape",
-        )
-        .set("version", "1.1")
-        .set("width", mm(w))
-        .set("height", mm(h))
-        .set("viewBox", vb);
-
-    let mut s = doc.to_string();
-    // The empty element's "/>" becomes the start tag's ">".
-    s.truncate(s.len() - 2);
-    s.push('>');
+        ),
+        ("version", "1.1"),
+        ("width", width.as_str()),
+        ("height", height.as_str()),
+        ("viewBox", vb.as_str()),
+    ];
+    let mut s = String::new();
+    push_start_tag(&mut s, "svg", &mut attrs);
     s
+}
+
+/// The extents in the view plane, (0, 0) twice for an empty drawing.
+fn view_extents(p: &super::Prepared, v: &View) -> (DVec2, DVec2) {
+    if v.right == DVec3::X && v.up == DVec3::Y {
+        // Plan view: projecting is taking x and y (x·1 + y·0 + z·0 is x, up to the sign of a
+        // zero, which no number written from here shows), so the box of the projected points
+        // is the drawing's own box, shared with the DXF header.
+        return match p.extents() {
+            Some((lo, hi)) => (lo.truncate(), hi.truncate()),
+            None => (DVec2::ZERO, DVec2::ZERO),
+        };
+    }
+    projected_extents(p.drawing, v)
+}
+
+/// The box of every entity's extent points projected on the view plane.
+fn projected_extents(d: &Drawing, v: &View) -> (DVec2, DVec2) {
+    let mut lo = DVec2::splat(f64::INFINITY);
+    let mut hi = DVec2::splat(f64::NEG_INFINITY);
+    let mut pts = Vec::new();
+    for e in d.entities() {
+        pts.clear();
+        e.kind.extent_points(&mut pts);
+        for p in &pts {
+            let q = v.project(*p);
+            lo = lo.min(q);
+            hi = hi.max(q);
+        }
+    }
+    if !lo.is_finite() {
+        return (DVec2::ZERO, DVec2::ZERO);
+    }
+    (lo, hi)
 }
 
 /// A layer's elements, serialized here into one string: the svg crate would copy and re-escape
 /// every path's data (digits, spaces and command letters only, nothing to escape) several
-/// times, which dominated writing large drawings. Text still goes through the crate's `Text`
-/// element for its escaping. The bytes are the same as adding `Path` elements one by one
-/// (attributes in the crate's sorted order).
+/// times, which dominated writing large drawings. The bytes are the same as adding `Path` and
+/// `Text` elements one by one (attributes in the crate's sorted order).
 fn layer_body(ents: &[&Entity], v: &View) -> String {
     let mut body = String::new();
     for e in ents {
@@ -596,14 +701,11 @@ fn layer_body(ents: &[&Entity], v: &View) -> String {
             ..
         } = &e.kind
         {
-            let mut t = text_element(*insert, *height, value, *rotation, v);
-            if let Some(c) = &own {
-                t = t.set("color", c.as_str());
-            }
             if !body.is_empty() {
                 body.push('\n');
             }
-            let _ = write!(body, "{t}");
+            let t = (*insert, *height, value.as_str(), *rotation);
+            text_element(&mut body, t, own.as_deref(), v);
             continue;
         }
         if let Some(data) = entity_path(e, v) {
@@ -738,6 +840,123 @@ mod tests {
                 assert_eq!(s, ryu_form(r), "r = {r}");
             }
         }
+    }
+
+    /// In plan view the SVG takes the drawing's own box (shared with the DXF header) instead
+    /// of projecting every extent point: the same box, for every kind of entity, negative
+    /// zeros and points off the plane included.
+    #[test]
+    fn plan_view_box_is_the_projected_box() {
+        let mut d = Drawing::new();
+        let v = View::new(DVec3::Z);
+        assert_eq!((v.right, v.up), (DVec3::X, DVec3::Y));
+        let p = super::super::Prepared::new(&d);
+        assert_eq!(view_extents(&p, &v), (DVec2::ZERO, DVec2::ZERO));
+        let kinds = [
+            EntityKind::Line {
+                p0: DVec3::new(-0.0, 0.0, 5.0),
+                p1: DVec3::new(0.0, -0.0, -1e9),
+            },
+            EntityKind::Arc {
+                center: DVec3::new(3.0, -2.0, 1.0),
+                radius: 1.5,
+                start: 0.3,
+                end: 2.0,
+                normal: DVec3::new(0.2, 0.1, 1.0).normalize(),
+            },
+            EntityKind::Circle {
+                center: DVec3::new(-7.25, 1e-9, 0.0),
+                radius: 0.125,
+                normal: DVec3::Z,
+            },
+            EntityKind::Spline {
+                curve: crate::geom::bspline::BSpline::new(
+                    2,
+                    vec![
+                        DVec3::new(0.1, 0.2, 0.3),
+                        DVec3::new(11.0, -13.0, 2.0),
+                        DVec3::new(1e-7, 4.5, -3.0),
+                        DVec3::new(-2.0, 8.0, 0.0),
+                    ],
+                    None,
+                    None,
+                )
+                .unwrap(),
+                fit_points: Vec::new(),
+                closed: false,
+            },
+        ];
+        for k in kinds {
+            d.add_kind(k).unwrap();
+            let p = super::super::Prepared::new(&d);
+            let (lo, hi) = view_extents(&p, &v);
+            let (plo, phi) = projected_extents(&d, &v);
+            assert_eq!((lo, hi), (plo, phi));
+        }
+        // The box grew past the first line's single projected point.
+        let p = super::super::Prepared::new(&d);
+        let (lo, hi) = view_extents(&p, &v);
+        assert!(lo.x < -7.0 && hi.x > 3.0 && hi.y >= 8.0, "{lo} {hi}");
+    }
+
+    /// The hand-written elements are the svg crate's bytes: escaping in names, values and
+    /// text, the optional attributes, attribute order.
+    #[test]
+    fn elements_are_the_svg_crates_bytes() {
+        use svg::node::element::{Group, Text};
+        use svg::node::Blob;
+        let tricky = ["plain", "a&b<c>d\"e'f", "", "&amp; é ' \" <<"];
+        for name in tricky {
+            for hidden in [false, true] {
+                let mut attrs = vec![
+                    ("id", "layer1"),
+                    ("inkscape:label", name),
+                    ("stroke", "#ff0000"),
+                    ("transform", "scale(1 -1)"),
+                ];
+                let mut g = Group::new();
+                for (k, v) in &attrs {
+                    g = g.set(*k, *v);
+                }
+                if hidden {
+                    attrs.push(("display", "none"));
+                    g = g.set("display", "none");
+                }
+                let body = format!("<path d=\"M0 0\"/>\n<text>{name}</text>");
+                let mut mine = String::new();
+                push_element(&mut mine, "g", &mut attrs, &body, false);
+                assert_eq!(mine, g.add(Blob::new(body.clone())).to_string());
+            }
+            for color in [None, Some("#00ff00")] {
+                let v = View::new(DVec3::Z);
+                let mut mine = String::new();
+                text_element(
+                    &mut mine,
+                    (DVec3::new(1.5, -2.0, 0.0), 2.5, name, 0.5),
+                    color,
+                    &v,
+                );
+                let mut t = Text::new(name)
+                    .set(
+                        "transform",
+                        "translate(1.5 -2) scale(1 -1) rotate(-28.64789)",
+                    )
+                    .set("font-size", "2.5")
+                    .set("font-family", "sans-serif")
+                    .set("stroke", "none")
+                    .set("fill", "currentColor");
+                if let Some(c) = color {
+                    t = t.set("color", c);
+                }
+                assert_eq!(mine, t.to_string());
+            }
+        }
+        let mut attrs = [("width", "1mm"), ("xmlns", "http://www.w3.org/2000/svg")];
+        let mut mine = String::new();
+        push_start_tag(&mut mine, "svg", &mut attrs);
+        let mut doc = svg::Document::new().set("width", "1mm").to_string();
+        doc.truncate(doc.len() - 2);
+        assert_eq!(mine, doc + ">");
     }
 
     #[test]
