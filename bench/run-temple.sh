@@ -7,7 +7,11 @@
 # BEFORE=path runs an older lispcad on the same -j 2 batch right after this build's and
 # compares every output file's SHA-256 with this build's (a speed change must not change a byte).
 # PDF=0 skips the contact sheet and the two DXF + PDF runs (about 4 minutes, most of it Python).
-# Usage: [JOBS=N] [BEFORE=path] [PDF=0] bench/run-temple.sh [ROWS.csv]
+# Outputs go under $TMPDIR (default /tmp). On this machine's ext4, creating a file costs a scan
+# of the files deleted from its block group in the last minutes (the previous run's 6,000
+# outputs), so kernel time there depends on what ran before: TMPDIR=/dev/shm (tmpfs, for both
+# tools) measures the programs rather than that history.
+# Usage: [TMPDIR=dir] [JOBS=N] [BEFORE=path] [PDF=0] bench/run-temple.sh [ROWS.csv]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 table=${1:-bench/temple/variants.csv}
