@@ -16,7 +16,6 @@
 use std::ffi::{OsStr, OsString};
 use std::fs::File;
 use std::io::Read;
-use std::os::fd::{AsFd, BorrowedFd};
 use std::path::{Component, Path, PathBuf};
 use std::rc::Rc;
 use std::sync::OnceLock;
@@ -51,9 +50,9 @@ impl Confined {
     /// The open directory and the file's name in it, for calls relative to the directory
     /// (`openat`, `renameat`): the same file as `path` without the kernel walking
     /// `/proc/self/fd/N/` again for each call.
-    pub fn dir_and_name(&self) -> Option<(BorrowedFd<'_>, &OsStr)> {
+    pub fn dir_and_name(&self) -> Option<(&cap_std::fs::Dir, &OsStr)> {
         match (&self.dir, &self.name) {
-            (Some(d), Some(n)) => Some((d.as_fd(), n.as_os_str())),
+            (Some(d), Some(n)) => Some((d, n.as_os_str())),
             _ => None,
         }
     }

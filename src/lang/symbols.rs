@@ -136,41 +136,16 @@ impl Prebuilt {
         p
     }
 
-    const fn name_eq(&self, s: u32, key: &[u8]) -> bool {
-        let start = if s == 0 {
-            0
-        } else {
-            self.ends[s as usize - 1] as usize
-        };
-        let end = self.ends[s as usize] as usize;
-        if end - start != key.len() {
-            return false;
-        }
-        let mut i = 0;
-        while i < key.len() {
-            if self.text[start + i] != key[i].to_ascii_uppercase() {
-                return false;
-            }
-            i += 1;
-        }
-        true
-    }
-
     /// `SymbolTable::intern_key` over the fixed arrays, without growth.
     const fn intern(&mut self, key: &[u8]) -> u32 {
-        let mask = INITIAL_SLOTS - 1;
-        let mut i = hash_bytes(key) as usize & mask;
-        loop {
-            match self.slots[i] {
-                0 => break,
-                n => {
-                    if self.name_eq(n - 1, key) {
-                        return n - 1;
-                    }
-                }
-            }
-            i = (i + 1) & mask;
-        }
+        let (text, ends) = (
+            self.text.split_at(self.text_len).0,
+            self.ends.split_at(self.len).0,
+        );
+        let i = match probe(text, ends, &self.slots, key) {
+            Probe::Found(s) => return s.0,
+            Probe::Free(i) => i,
+        };
         assert!(
             self.text_len + key.len() <= INITIAL_TEXT,
             "names beyond INITIAL_TEXT"
@@ -209,6 +184,34 @@ enum Probe {
     Free(usize),
 }
 
+/// The open-addressing lookup shared by `SymbolTable` and the compile-time `Prebuilt`: names
+/// upper case end to end in `text`, symbol `s` ending at `ends[s]`, `slots` holding symbol + 1
+/// (0 free). `key` is either ASCII (matched case-insensitively) or already upper-cased.
+#[inline]
+const fn probe(text: &[u8], ends: &[u32], slots: &[u32], key: &[u8]) -> Probe {
+    let mask = slots.len() - 1;
+    let mut i = hash_bytes(key) as usize & mask;
+    loop {
+        let n = slots[i];
+        if n == 0 {
+            return Probe::Free(i);
+        }
+        let s = (n - 1) as usize;
+        let start = if s == 0 { 0 } else { ends[s - 1] as usize };
+        let end = ends[s] as usize;
+        if end - start == key.len() {
+            let mut j = 0;
+            while j < key.len() && text[start + j] == key[j].to_ascii_uppercase() {
+                j += 1;
+            }
+            if j == key.len() {
+                return Probe::Found(Sym(n - 1));
+            }
+        }
+        i = (i + 1) & mask;
+    }
+}
+
 impl SymbolTable {
     pub fn new() -> Self {
         let mut t = SymbolTable {
@@ -241,20 +244,12 @@ impl SymbolTable {
     /// case) or already upper-cased.
     #[inline]
     fn probe(&self, key: &str) -> Probe {
-        let mask = self.slots.len() - 1;
-        let mut i = hash(key) as usize & mask;
-        loop {
-            match self.slots[i] {
-                0 => return Probe::Free(i),
-                n => {
-                    let s = Sym(n - 1);
-                    if self.name(s).eq_ignore_ascii_case(key) {
-                        return Probe::Found(s);
-                    }
-                }
-            }
-            i = (i + 1) & mask;
-        }
+        probe(
+            self.text.as_bytes(),
+            &self.ends,
+            &self.slots,
+            key.as_bytes(),
+        )
     }
 
     /// The symbol for `name`, case-insensitively.

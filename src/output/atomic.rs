@@ -31,54 +31,43 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 }
 
 /// `write_atomic` of `name` in the open directory `dir`: the temporary file is created,
-/// renamed over `name` and (on failure) removed relative to the handle, never through a
-/// symlink in its place. The same four system calls as a plain write (open, write, rename,
-/// close), where a path through `/proc/self/fd/N/` made the kernel walk it for each.
-#[cfg(unix)]
+/// renamed over `name` and (on failure) removed relative to the handle (cap-std, as the
+/// confinement that opened it), never through a symlink in its place. The same four system
+/// calls as a plain write (open, write, rename, close), where a path through
+/// `/proc/self/fd/N/` made the kernel walk it for each.
 pub fn write_atomic_at(
-    dir: std::os::fd::BorrowedFd,
+    dir: &cap_std::fs::Dir,
     name: &std::ffi::OsStr,
     bytes: &[u8],
 ) -> std::io::Result<()> {
-    use std::ffi::CString;
-    use std::os::fd::{AsRawFd, FromRawFd};
-    use std::os::unix::ffi::OsStrExt;
     use std::sync::atomic::{AtomicU64, Ordering};
     static NEXT: AtomicU64 = AtomicU64::new(0);
     // The process id names this run's temporaries; asked once (each getpid is a system call).
     static PID: std::sync::OnceLock<u32> = std::sync::OnceLock::new();
     let pid = *PID.get_or_init(std::process::id);
-    let last = std::io::Error::last_os_error;
-    let target = CString::new(name.as_bytes())?;
-    let fd = dir.as_raw_fd();
+    let mut options = cap_std::fs::OpenOptions::new();
+    // create_new: O_EXCL, which neither follows nor reuses a symlink or file in its place.
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use cap_std::fs::OpenOptionsExt;
+        options.mode(0o644);
+    }
     // A name taken (by a file left over from a killed run) only moves on to the next.
     for _ in 0..64 {
         let n = NEXT.fetch_add(1, Ordering::Relaxed);
-        let tmp = CString::new(format!(".lispcad-{pid:x}-{n:x}.tmp"))?;
-        let flags =
-            libc::O_WRONLY | libc::O_CREAT | libc::O_EXCL | libc::O_CLOEXEC | libc::O_NOFOLLOW;
-        // SAFETY: both strings are NUL-terminated and outlive the call; `fd` is open.
-        let f = unsafe { libc::openat(fd, tmp.as_ptr(), flags, 0o644 as libc::c_uint) };
-        if f < 0 {
-            let e = last();
-            if e.kind() == std::io::ErrorKind::AlreadyExists {
-                continue;
-            }
-            return Err(e);
-        }
-        // SAFETY: `f` was just opened here and is owned by nothing else.
-        let mut file = unsafe { std::fs::File::from_raw_fd(f) };
-        let r = file.write_all(bytes).and_then(|()| {
-            // SAFETY: as for openat.
-            match unsafe { libc::renameat(fd, tmp.as_ptr(), fd, target.as_ptr()) } {
-                0 => Ok(()),
-                _ => Err(last()),
-            }
-        });
+        let tmp = format!(".lispcad-{pid:x}-{n:x}.tmp");
+        let mut file = match dir.open_with(&tmp, &options) {
+            Ok(f) => f,
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        };
+        let r = file
+            .write_all(bytes)
+            .and_then(|()| dir.rename(&tmp, dir, name));
         drop(file);
         if r.is_err() {
-            // SAFETY: as for openat.
-            unsafe { libc::unlinkat(fd, tmp.as_ptr(), 0) };
+            let _ = dir.remove_file(&tmp);
         }
         return r;
     }
@@ -95,12 +84,13 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn at_a_directory_handle_replaces_content_and_leaves_no_temporary() {
-        use std::os::fd::AsFd;
         let dir = tempfile::tempdir().unwrap();
-        let handle = std::fs::File::open(dir.path()).unwrap();
+        let handle =
+            cap_std::fs::Dir::open_ambient_dir(dir.path(), cap_std::ambient_authority()).unwrap();
+        let handle = &handle;
         let name = std::ffi::OsStr::new("a.txt");
-        write_atomic_at(handle.as_fd(), name, b"one").unwrap();
-        write_atomic_at(handle.as_fd(), name, b"two!").unwrap();
+        write_atomic_at(handle, name, b"one").unwrap();
+        write_atomic_at(handle, name, b"two!").unwrap();
         let p = dir.path().join("a.txt");
         assert_eq!(std::fs::read(&p).unwrap(), b"two!");
         use std::os::unix::fs::PermissionsExt;
@@ -114,7 +104,7 @@ mod tests {
         let victim = outside.path().join("v.txt");
         std::fs::write(&victim, b"keep").unwrap();
         std::os::unix::fs::symlink(&victim, dir.path().join("l.txt")).unwrap();
-        write_atomic_at(handle.as_fd(), std::ffi::OsStr::new("l.txt"), b"new").unwrap();
+        write_atomic_at(handle, std::ffi::OsStr::new("l.txt"), b"new").unwrap();
         assert_eq!(std::fs::read(&victim).unwrap(), b"keep");
         assert!(!std::fs::symlink_metadata(dir.path().join("l.txt"))
             .unwrap()
@@ -123,7 +113,7 @@ mod tests {
         // A failed rename (the name is a non-empty directory) leaves no temporary behind.
         std::fs::create_dir(dir.path().join("d")).unwrap();
         std::fs::write(dir.path().join("d/x"), b"x").unwrap();
-        assert!(write_atomic_at(handle.as_fd(), std::ffi::OsStr::new("d"), b"x").is_err());
+        assert!(write_atomic_at(handle, std::ffi::OsStr::new("d"), b"x").is_err());
         let mut left: Vec<_> = std::fs::read_dir(dir.path())
             .unwrap()
             .map(|e| e.unwrap().file_name().into_string().unwrap())

@@ -296,28 +296,34 @@ pub fn save(d: &Drawing, path: &Path, opts: &OutputOptions) -> Result<(), Output
 
 /// `save_prepared` of the file `name` in the open directory `dir` (`shown`: the path for
 /// messages), replaced atomically relative to the handle.
-#[cfg(unix)]
 pub fn save_prepared_at(
     p: &Prepared,
-    dir: std::os::fd::BorrowedFd,
+    dir: &cap_std::fs::Dir,
     name: &std::ffi::OsStr,
     shown: &Path,
     opts: &OutputOptions,
 ) -> Result<(), OutputError> {
-    let format = Format::from_path(shown)?;
-    let bytes = render_prepared(p, format, opts)?;
-    atomic::write_atomic_at(dir, name, &bytes).map_err(|source| OutputError::Io {
-        path: shown.display().to_string(),
-        source,
+    write_rendered(p, shown, opts, |bytes| {
+        atomic::write_atomic_at(dir, name, bytes)
     })
 }
 
 /// `save` of a prepared drawing (shared by the files of one run).
 pub fn save_prepared(p: &Prepared, path: &Path, opts: &OutputOptions) -> Result<(), OutputError> {
-    let format = Format::from_path(path)?;
+    write_rendered(p, path, opts, |bytes| atomic::write_atomic(path, bytes))
+}
+
+/// Renders `p` in the format of `shown`'s extension and hands the bytes to `write`.
+fn write_rendered(
+    p: &Prepared,
+    shown: &Path,
+    opts: &OutputOptions,
+    write: impl FnOnce(&[u8]) -> std::io::Result<()>,
+) -> Result<(), OutputError> {
+    let format = Format::from_path(shown)?;
     let bytes = render_prepared(p, format, opts)?;
-    atomic::write_atomic(path, &bytes).map_err(|source| OutputError::Io {
-        path: path.display().to_string(),
+    write(&bytes).map_err(|source| OutputError::Io {
+        path: shown.display().to_string(),
         source,
     })
 }

@@ -110,7 +110,7 @@ fn fixed6(out: &mut String, r: f64) {
     }
     let n = r.abs() as u64;
     let (int, frac) = (n / 1_000_000, n % 1_000_000);
-    push_u64(out, int);
+    out.push_str(itoa::Buffer::new().format(int));
     if frac != 0 {
         let mut digits = [b'0'; 6];
         let mut f = frac;
@@ -122,22 +122,6 @@ fn fixed6(out: &mut String, r: f64) {
         out.push('.');
         out.push_str(std::str::from_utf8(&digits[..len]).unwrap_or("0"));
     }
-}
-
-/// `n` in decimal (what `write!(out, "{n}")` writes, without the formatting machinery: the
-/// integer part of every number of a path).
-fn push_u64(out: &mut String, mut n: u64) {
-    let mut digits = [0u8; 20];
-    let mut i = digits.len();
-    loop {
-        i -= 1;
-        digits[i] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    out.push_str(std::str::from_utf8(&digits[i..]).unwrap_or("0"));
 }
 
 fn pt(out: &mut String, p: DVec2) {

@@ -182,7 +182,12 @@ fn without_doubles(mut curves: Vec<Polyline3>, d: f64) -> Vec<Polyline3> {
     curves.sort_by(|x, y| y.length().total_cmp(&x.length()));
     let mut kept: Vec<Polyline3> = Vec::with_capacity(curves.len());
     for c in curves {
-        if c.closed || !c.points.iter().all(|p| near_loops(*p, &kept, d)) {
+        if c.closed
+            || !c
+                .points
+                .iter()
+                .all(|p| super::contact::near_any(*p, &kept, d))
+        {
             kept.push(c);
         }
     }
@@ -323,16 +328,7 @@ fn extend(
 fn along_loops(points: &[DVec3], loops: &[Polyline3], region: &Region) -> bool {
     points
         .iter()
-        .all(|p| near_loops(*p, loops, 2.0 * region.step))
-}
-
-/// Whether `p` lies within `d` of one of the loops.
-fn near_loops(p: DVec3, loops: &[Polyline3], d: f64) -> bool {
-    loops.iter().any(|l| {
-        let m = l.points.len();
-        let segs = if l.closed { m } else { m.saturating_sub(1) };
-        (0..segs).any(|k| segment_gap(p, p, l.points[k], l.points[(k + 1) % m]).2 <= d)
-    })
+        .all(|p| super::contact::near_any(*p, loops, 2.0 * region.step))
 }
 
 /// The closest points of the segments `p0 p1` and `q0 q1`: their parameters and distance.

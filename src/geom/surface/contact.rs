@@ -222,7 +222,7 @@ fn regroup(
 }
 
 /// Whether `p` lies within `r` of one of `curves` (points, or segments of polylines).
-fn near_any(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
+pub(super) fn near_any(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
     curves.iter().any(|c| {
         let n = c.points.len();
         if n == 1 {
