@@ -2,8 +2,9 @@
 # Start-up of `lispcad run` on an empty script beside /bin/true and `lua5.4 -e ''`, measured
 # with `perf stat -r N` (elapsed, task-clock, page faults), the three interleaved for ROUNDS
 # rounds so that they share the machine's load; then instructions under cachegrind when
-# valgrind is installed (those do not depend on load). Elapsed times on a loaded machine are
-# mostly waiting for a CPU: compare them only with /bin/true's in the same round.
+# valgrind is installed and system calls under strace (neither depends on load). Elapsed times
+# on a loaded machine are mostly waiting for a CPU: compare them only with /bin/true's in the
+# same round.
 #   bench/run-startup.sh                 # N=300 ROUNDS=3, target/release/lispcad
 #   BIN=/tmp/old-lispcad bench/run-startup.sh
 set -euo pipefail
@@ -36,4 +37,8 @@ if command -v valgrind >/dev/null; then
     i=$(valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
         "$BIN" run "$tmp/empty.lsp" 2>&1 | awk '/I *refs/ {print $NF}')
     echo "instructions (cachegrind), lispcad run empty.lsp: $i"
+fi
+if command -v strace >/dev/null; then
+    c=$(strace -f -c "$BIN" run "$tmp/empty.lsp" 2>&1 >/dev/null | awk '$NF == "total" {print $4}')
+    echo "system calls (strace -f -c), lispcad run empty.lsp: $c"
 fi
