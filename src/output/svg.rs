@@ -16,6 +16,7 @@ use glam::{DVec2, DVec3};
 
 use super::aci::aci_to_hex;
 use super::drawing::{bulge_arc, bulge_segments, ccw_sweep, is_flat, Drawing, Entity, EntityKind};
+use super::entity::BezierSource;
 use super::OutputOptions;
 use crate::geom::frame::{arbitrary_axis, Ocs};
 
@@ -236,7 +237,7 @@ fn ocs_polyline(
     }
 }
 
-fn entity_path(e: &Entity, v: &View) -> Option<String> {
+fn entity_path(e: &Entity, v: &View, beziers: &BezierSource) -> Option<String> {
     let mut d = String::new();
     match &e.kind {
         EntityKind::Line { p0, p1 } => {
@@ -308,7 +309,7 @@ fn entity_path(e: &Entity, v: &View) -> Option<String> {
             }
         }
         EntityKind::Spline { curve, .. } => {
-            let pieces = curve.to_beziers();
+            let pieces = beziers(curve);
             let exact = curve.weights.is_none() && curve.degree <= 3;
             for (i, (pts, _)) in pieces.iter().enumerate() {
                 if i == 0 {
@@ -576,7 +577,7 @@ pub fn svg_layers_prepared(p: &super::Prepared, opts: &OutputOptions) -> SvgLaye
             hidden: layer.is_off() || layer.frozen,
             id: format!("layer{}", i + 1),
             color: aci_to_hex(layer.color),
-            body: layer_body(ents, &v),
+            body: layer_body(ents, &v, &|c| p.beziers(c)),
         })
         .collect();
     SvgLayers {
@@ -670,7 +671,7 @@ fn projected_extents(d: &Drawing, v: &View) -> (DVec2, DVec2) {
 /// every path's data (digits, spaces and command letters only, nothing to escape) several
 /// times, which dominated writing large drawings. The bytes are the same as adding `Path` and
 /// `Text` elements one by one (attributes in the crate's sorted order).
-fn layer_body(ents: &[&Entity], v: &View) -> String {
+fn layer_body(ents: &[&Entity], v: &View, beziers: &BezierSource) -> String {
     let mut body = String::new();
     for e in ents {
         let own = match e.color {
@@ -692,7 +693,7 @@ fn layer_body(ents: &[&Entity], v: &View) -> String {
             text_element(&mut body, t, own.as_deref(), v);
             continue;
         }
-        if let Some(data) = entity_path(e, v) {
+        if let Some(data) = entity_path(e, v, beziers) {
             if !body.is_empty() {
                 body.push('\n');
             }

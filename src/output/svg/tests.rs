@@ -182,3 +182,57 @@ fn plan_arc_is_ccw_svg_arc() {
     let s = write_svg(&d, &OutputOptions::default());
     assert!(s.contains(r#"d="M1 0 A1 1 0 0 1 0 1""#), "{s}");
 }
+
+/// The extents and the SVG path share one decomposition per spline: `Prepared::beziers`
+/// hands out the pieces of `to_beziers` (same bits), each curve decomposed once, two curves
+/// kept apart; the extents computed through it are `Drawing::extents`.
+#[test]
+fn prepared_decomposes_each_spline_once() {
+    let spline = |dx: f64| EntityKind::Spline {
+        curve: crate::geom::bspline::BSpline::new(
+            2,
+            vec![
+                DVec3::new(dx, 0.2, 0.0),
+                DVec3::new(dx + 11.0, -13.0, 0.0),
+                DVec3::new(dx + 1e-7, 4.5, 0.0),
+                DVec3::new(dx - 2.0, 8.0, 0.0),
+                DVec3::new(dx + 3.0, 9.0, 0.0),
+            ],
+            None,
+            None,
+        )
+        .unwrap(),
+        fit_points: Vec::new(),
+        closed: false,
+    };
+    let mut d = Drawing::new();
+    d.add_kind(spline(0.0)).unwrap();
+    d.add_kind(spline(100.0)).unwrap();
+    let p = super::super::Prepared::new(&d);
+    assert_eq!(p.extents(), d.extents());
+    let bits = |v: &[(Vec<DVec3>, Vec<f64>)]| -> Vec<u64> {
+        v.iter()
+            .flat_map(|(pts, ws)| {
+                let c: Vec<f64> = pts.iter().flat_map(|q| q.to_array()).collect();
+                c.into_iter()
+                    .chain(ws.iter().copied())
+                    .map(f64::to_bits)
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    };
+    let curves: Vec<_> = d
+        .entities()
+        .map(|e| match &e.kind {
+            EntityKind::Spline { curve, .. } => curve,
+            _ => unreachable!(),
+        })
+        .collect();
+    let first = p.beziers(curves[0]);
+    let second = p.beziers(curves[1]);
+    assert!(std::rc::Rc::ptr_eq(&first, &p.beziers(curves[0])));
+    assert!(!std::rc::Rc::ptr_eq(&first, &second));
+    assert_eq!(bits(&first), bits(&curves[0].to_beziers()));
+    assert_eq!(bits(&second), bits(&curves[1].to_beziers()));
+    assert_ne!(bits(&first), bits(&second));
+}
