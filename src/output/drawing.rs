@@ -505,11 +505,16 @@ impl Drawing {
 
     /// The bounding box (min, max) of every live entity, or `None` for an empty drawing.
     pub fn extents(&self) -> Option<(DVec3, DVec3)> {
+        self.extents_with(&|c| std::rc::Rc::new(c.to_beziers()))
+    }
+
+    /// `extents` with splines decomposed by `beziers` (see `EntityKind::extent_points_with`).
+    pub fn extents_with(&self, beziers: &super::entity::BezierSource) -> Option<(DVec3, DVec3)> {
         let mut pts = Vec::new();
         let mut bb: Option<(DVec3, DVec3)> = None;
         for e in self.entities() {
             pts.clear();
-            e.kind.extent_points(&mut pts);
+            e.kind.extent_points_with(&mut pts, beziers);
             for p in &pts {
                 bb = Some(match bb {
                     None => (*p, *p),

@@ -1,10 +1,17 @@
 //! Entities: AutoCAD's entity kinds with their checks, extents and the bulge arithmetic that
 //! LWPOLYLINE/POLYLINE segments share with the writers.
 
+use std::rc::Rc;
+
 use glam::{DVec2, DVec3, DVec4};
 
 use super::drawing::DrawingError;
 use crate::geom::bspline::BSpline;
+
+/// A spline's Bézier pieces (`BSpline::to_beziers`), shared.
+pub type BezierPieces = Rc<Vec<(Vec<DVec3>, Vec<f64>)>>;
+/// Where `extent_points_with` and the SVG writer get a spline's pieces from.
+pub type BezierSource<'a> = dyn Fn(&BSpline) -> BezierPieces + 'a;
 use crate::geom::frame::Ocs;
 
 /// One drawn entity.
@@ -269,6 +276,12 @@ impl EntityKind {
     /// Points that bound the entity (exact for lines, polylines without bulges, faces and
     /// meshes; arcs and curves are sampled densely, so the box may be short by a hair).
     pub fn extent_points(&self, out: &mut Vec<DVec3>) {
+        self.extent_points_with(out, &|c: &BSpline| Rc::new(c.to_beziers()));
+    }
+
+    /// `extent_points` with a spline's Bézier pieces taken from `beziers` (a writer that
+    /// needs them again for the same file shares one decomposition).
+    pub fn extent_points_with(&self, out: &mut Vec<DVec3>, beziers: &BezierSource) {
         match self {
             EntityKind::Line { p0, p1 } => out.extend([*p0, *p1]),
             EntityKind::Circle {
@@ -332,17 +345,17 @@ impl EntityKind {
                     }
                     buf[0].truncate() / buf[0].w
                 };
-                for (pts, w) in curve.to_beziers() {
+                for (pts, w) in beziers(curve).iter() {
                     out.push(pts[0]);
                     out.push(pts[pts.len() - 1]);
                     if curve.weights.is_none() && curve.degree <= 3 {
                         // Exact: the coordinate extremes are the roots of the hodograph.
-                        for t in hodograph_roots(&pts) {
-                            out.push(eval(&pts, &w, t));
+                        for t in hodograph_roots(pts) {
+                            out.push(eval(pts, w, t));
                         }
                     } else {
                         for k in 1..32 {
-                            out.push(eval(&pts, &w, k as f64 / 32.0));
+                            out.push(eval(pts, w, k as f64 / 32.0));
                         }
                     }
                 }

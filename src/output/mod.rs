@@ -30,9 +30,12 @@ pub mod record;
 pub mod sheet;
 pub mod svg;
 
+use std::collections::HashMap;
 use std::path::Path;
 
 use glam::DVec3;
+
+use crate::geom::bspline::BSpline;
 
 pub use drawing::{Drawing, DrawingError, Entity, EntityKind, Layer};
 pub use dxfin::{open_drawing, read_dxf, DxfReadError};
@@ -237,6 +240,9 @@ pub(crate) fn check_drawing(d: &Drawing) -> Result<(), OutputError> {
 pub struct Prepared<'a> {
     pub drawing: &'a Drawing,
     extents: std::cell::OnceCell<Option<(DVec3, DVec3)>>,
+    /// Each spline's Bézier pieces, by the curve's address (the drawing is borrowed, so its
+    /// entities stay put): the extents and the SVG path both need them.
+    beziers: std::cell::RefCell<HashMap<usize, entity::BezierPieces>>,
 }
 
 impl<'a> Prepared<'a> {
@@ -244,12 +250,26 @@ impl<'a> Prepared<'a> {
         Prepared {
             drawing,
             extents: std::cell::OnceCell::new(),
+            beziers: Default::default(),
         }
     }
 
     /// `Drawing::extents`, computed on first use.
     pub fn extents(&self) -> Option<(DVec3, DVec3)> {
-        *self.extents.get_or_init(|| self.drawing.extents())
+        *self
+            .extents
+            .get_or_init(|| self.drawing.extents_with(&|c| self.beziers(c)))
+    }
+
+    /// `curve.to_beziers()`, worked out once per curve. Only for curves of `drawing`'s
+    /// entities: the key is the address, which a temporary could share with another.
+    pub(crate) fn beziers(&self, curve: &BSpline) -> entity::BezierPieces {
+        let key = std::ptr::from_ref(curve) as usize;
+        let mut cache = self.beziers.borrow_mut();
+        cache
+            .entry(key)
+            .or_insert_with(|| std::rc::Rc::new(curve.to_beziers()))
+            .clone()
     }
 }
 
