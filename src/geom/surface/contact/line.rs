@@ -95,7 +95,7 @@ fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
 }
 
 /// `y − x` the short way round in periodic directions.
-fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
+pub(super) fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
     let mut d = y - x;
     for k in 0..2 {
         if a.periodic()[k] {
