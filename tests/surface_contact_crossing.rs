@@ -115,3 +115,29 @@ fn a_crossing_beside_a_contact_line_comes_back_with_it() {
         }
     }
 }
+
+#[test]
+fn a_crossing_beyond_the_other_surfaces_edge_is_not_reported() {
+    // The plate stops at y = d/2: the sheet crosses the plate's plane at y = d, off the plate,
+    // so only the contact is shared. The scan across the contact sees the gap's sign change
+    // there (measured to the plate's edge), which must not pass for a crossing.
+    let d = 0.01;
+    let plate = Surface::plane(vec![
+        DVec3::new(-1.0, -0.5, 0.0),
+        DVec3::new(5.0, -0.5, 0.0),
+        DVec3::new(5.0, 0.5 * d, 0.0),
+        DVec3::new(-1.0, 0.5 * d, 0.0),
+    ])
+    .unwrap();
+    let s = sheet(d);
+    for (x, y) in [(&s, &plate), (&plate, &s)] {
+        let r = surface_intersect_seeded(x, y, 1e-2, 1e-6, 1e-9).unwrap();
+        assert_eq!(r.len(), 1, "{}", summary(&r));
+        let c = &r[0];
+        for p in &c.points {
+            assert!(p.y.abs() <= 0.25 * d && p.z.abs() <= 1e-9, "{p}");
+            assert!((p.z - p.y * p.y * (d - p.y)).abs() <= 1e-9, "{p}");
+        }
+        assert!((c.length() - 4.0).abs() <= 1e-6, "{}", summary(&r));
+    }
+}
