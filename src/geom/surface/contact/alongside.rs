@@ -103,9 +103,11 @@ fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<usize> {
     at
 }
 
-/// Smallest distance scanned from the contact, as a fraction of the step (geometric steps of
-/// √2 from there: a crossing farther off than the tolerance band has a stretch of gap beyond
-/// the tolerance before it wider than that ratio).
+/// Smallest distance scanned from the contact, as a fraction of the step. The samples grow
+/// fourfold from there while the gap is within the tolerance, so a crossing is found when the
+/// stretch of gap beyond the tolerance between it and the contact spans a ratio of four in
+/// distance (for a quadratic contact, when the gap there rises to about twice the tolerance):
+/// one closer is within the tolerance of the contact all the way.
 const FIRST: f64 = 1e-7;
 
 /// The first point from `uv0` along `dir` (in (u, v)) where the gap changes sign between two
@@ -177,7 +179,9 @@ fn first_crossing(
                 return None;
             }
         }
-        s *= std::f64::consts::SQRT_2;
+        // Fast through the tolerance band about the contact (its samples tell nothing), then
+        // doubling: a sign change is seen between any two samples beyond the tolerance.
+        s *= if last.is_none() { 4.0 } else { 2.0 };
     }
     None
 }
