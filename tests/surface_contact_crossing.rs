@@ -74,6 +74,9 @@ fn check(name: &str, r: &[Polyline3], d: f64) {
     }
 }
 
+/// One way of asking for the intersection.
+type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
+
 #[test]
 fn a_crossing_beside_a_contact_line_comes_back_with_it() {
     let plate = Surface::plane(vec![
@@ -85,7 +88,7 @@ fn a_crossing_beside_a_contact_line_comes_back_with_it() {
     .unwrap();
     for d in [0.01, 0.03] {
         let s = sheet(d);
-        let runs: [(&str, Box<dyn Fn() -> Vec<Polyline3>>); 3] = [
+        let runs: [(&str, Run); 3] = [
             (
                 "section",
                 Box::new(|| {

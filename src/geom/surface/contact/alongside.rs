@@ -131,9 +131,7 @@ fn first_crossing(
             dir[k] = 0.0;
         }
     }
-    let Some(dir) = dir.try_normalize() else {
-        return None;
-    };
+    let dir = dir.try_normalize()?;
     let uv0 = w;
     let (su, sv) = a.derivs(w);
     let speed = (su * dir.x + sv * dir.y).length();
