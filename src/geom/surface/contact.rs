@@ -15,7 +15,6 @@
 //! Where the contact is a curve rather than a point (the gap flat along one direction), it is
 //! followed on the true surfaces and comes back as one polyline ([`line`]).
 
-mod alongside;
 mod line;
 
 use super::refine::Patch;
@@ -223,12 +222,12 @@ fn regroup(
             .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
     );
     for (c, step) in traced.iter().zip(steps) {
-        let scan = alongside::Scan {
+        let scan = line::Scan {
             step,
             apart: 8.0 * seed_tol,
             dup: near,
         };
-        let found = alongside::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
+        let found = line::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
         kept.extend(found);
     }
     kept.extend(traced);
