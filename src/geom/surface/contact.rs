@@ -147,12 +147,11 @@ pub(crate) fn regroup_section(
     a: &Patch,
     (p0, n): (DVec3, DVec3),
     curves: Vec<Polyline3>,
-    tol: f64,
-    chord_tol: f64,
+    (seed_tol, tol, chord_tol): (f64, f64, f64),
 ) -> Vec<Polyline3> {
     let gap = |uv: DVec2| plane_gap(a, (p0, n), uv);
     let tangent = |uv: DVec2| unit_normal(a, uv).cross(n).length() <= PARALLEL;
-    regroup(a, &gap, &tangent, curves, tol, chord_tol)
+    regroup(a, &gap, &tangent, curves, (seed_tol, tol, chord_tol))
 }
 
 /// [`regroup_section`] for the refined intersection `curves` of `a` and `b`.
@@ -160,8 +159,7 @@ pub(crate) fn regroup_pair(
     a: &Patch,
     b: &Patch,
     curves: Vec<Polyline3>,
-    tol: f64,
-    chord_tol: f64,
+    (seed_tol, tol, chord_tol): (f64, f64, f64),
 ) -> Vec<Polyline3> {
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
@@ -169,16 +167,18 @@ pub(crate) fn regroup_pair(
         let ub = b.project(a.eval(uv), None);
         unit_normal(a, uv).cross(unit_normal(b, ub)).length() <= PARALLEL
     };
-    regroup(a, &gap, &tangent, curves, tol, chord_tol)
+    regroup(a, &gap, &tangent, curves, (seed_tol, tol, chord_tol))
 }
 
+/// The touching `curves` replaced by the contacts traced through them, with the crossings
+/// found alongside those contacts (the meshes, made within `seed_tol`, see a contact and a
+/// crossing closer than their cells as one curve).
 fn regroup(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     tangent: &dyn Fn(DVec2) -> bool,
     curves: Vec<Polyline3>,
-    tol: f64,
-    chord_tol: f64,
+    (seed_tol, tol, chord_tol): (f64, f64, f64),
 ) -> Vec<Polyline3> {
     let mut kept = Vec::with_capacity(curves.len());
     let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
@@ -199,6 +199,7 @@ fn regroup(
     // A point within `tol` of both surfaces beside a contact can be √(tol·R) off it.
     let near = 2.0 * chord_tol.max(tol) + 4.0 * (tol * a.scale()).sqrt();
     let mut traced: Vec<Polyline3> = Vec::new();
+    let mut steps: Vec<f64> = Vec::new();
     for (c, uv) in &touching {
         if c.points.len() < 2 || c.points.iter().all(|p| near_any(*p, &traced, near)) {
             continue;
@@ -208,7 +209,10 @@ fn regroup(
             .windows(2)
             .map(|w| w[0].distance(w[1]))
             .fold(0.0, f64::max);
-        traced.extend(contact_curve(a, gap, *uv, len, tol, chord_tol));
+        if let Some(t) = contact_curve(a, gap, *uv, len, tol, chord_tol) {
+            traced.push(t);
+            steps.push(len);
+        }
     }
     // The pieces a traced contact covers go; any other stays.
     kept.extend(
@@ -217,6 +221,15 @@ fn regroup(
             .map(|(c, _)| c)
             .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
     );
+    for (c, step) in traced.iter().zip(steps) {
+        let scan = line::Scan {
+            step,
+            apart: 8.0 * seed_tol,
+            dup: near,
+        };
+        let found = line::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
+        kept.extend(found);
+    }
     kept.extend(traced);
     kept
 }

@@ -91,8 +91,12 @@ fn section_seeded(
             .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
             .filter(|c| !c.points.is_empty())
             .collect();
-        let mut curves =
-            super::contact::regroup_section(&patch, (plane_point, n), curves, geom_tol, tol);
+        let mut curves = super::contact::regroup_section(
+            &patch,
+            (plane_point, n),
+            curves,
+            (seed_tol, geom_tol, tol),
+        );
         if !contacts {
             return Ok(curves);
         }
@@ -400,7 +404,7 @@ fn through_meshes(
         Some((r, loops)) => outside(r, (&pa, &pb), curves, loops, reach),
         None => curves,
     };
-    let mut curves = super::contact::regroup_pair(&pa, &pb, curves, gtol, ctol);
+    let mut curves = super::contact::regroup_pair(&pa, &pb, curves, (seed_tol, gtol, ctol));
     if !contacts {
         return Ok(curves);
     }
