@@ -505,7 +505,7 @@ impl Drawing {
 
     /// The bounding box (min, max) of every live entity, or `None` for an empty drawing.
     pub fn extents(&self) -> Option<(DVec3, DVec3)> {
-        self.extents_with(&|c| std::rc::Rc::new(c.to_beziers()))
+        self.extents_with(&super::entity::fresh_beziers)
     }
 
     /// `extents` with splines decomposed by `beziers` (see `EntityKind::extent_points_with`).

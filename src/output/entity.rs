@@ -7,12 +7,17 @@ use glam::{DVec2, DVec3, DVec4};
 
 use super::drawing::DrawingError;
 use crate::geom::bspline::BSpline;
+use crate::geom::frame::Ocs;
 
 /// A spline's Bézier pieces (`BSpline::to_beziers`), shared.
 pub type BezierPieces = Rc<Vec<(Vec<DVec3>, Vec<f64>)>>;
 /// Where `extent_points_with` and the SVG writer get a spline's pieces from.
 pub type BezierSource<'a> = dyn Fn(&BSpline) -> BezierPieces + 'a;
-use crate::geom::frame::Ocs;
+
+/// The [`BezierSource`] that decomposes the spline afresh on every call.
+pub fn fresh_beziers(curve: &BSpline) -> BezierPieces {
+    Rc::new(curve.to_beziers())
+}
 
 /// One drawn entity.
 #[derive(Clone, Debug, PartialEq)]
@@ -276,7 +281,7 @@ impl EntityKind {
     /// Points that bound the entity (exact for lines, polylines without bulges, faces and
     /// meshes; arcs and curves are sampled densely, so the box may be short by a hair).
     pub fn extent_points(&self, out: &mut Vec<DVec3>) {
-        self.extent_points_with(out, &|c: &BSpline| Rc::new(c.to_beziers()));
+        self.extent_points_with(out, &fresh_beziers);
     }
 
     /// `extent_points` with a spline's Bézier pieces taken from `beziers` (a writer that

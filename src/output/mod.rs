@@ -268,7 +268,7 @@ impl<'a> Prepared<'a> {
         let mut cache = self.beziers.borrow_mut();
         cache
             .entry(key)
-            .or_insert_with(|| std::rc::Rc::new(curve.to_beziers()))
+            .or_insert_with(|| entity::fresh_beziers(curve))
             .clone()
     }
 }
