@@ -580,7 +580,8 @@ pub fn init(it: &mut Interp) {
         ("acWhite", 7),
         ("acByLayer", 256),
     ] {
-        it.set_global(&name.to_uppercase(), Value::Int(v));
+        // Interning upper-cases an ASCII name itself: no copy needed here.
+        it.set_global(name, Value::Int(v));
     }
     for name in [":VLAX-TRUE", ":VLAX-FALSE", ":VLAX-NULL"] {
         let s = it.intern(name);
