@@ -7,11 +7,15 @@
 # same round.
 #   bench/run-startup.sh                 # N=300 ROUNDS=3, target/release/lispcad
 #   BIN=/tmp/old-lispcad bench/run-startup.sh
+#   BEFORE=/tmp/old-lispcad bench/run-startup.sh   # an older binary as one more row each round
+# Page faults of a binary depend on where its file lies (a fresh copy in /tmp faulted 11 fewer
+# pages than the same file hard-linked in target/): compare copies made the same way.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 N=${N:-300}
 ROUNDS=${ROUNDS:-3}
 BIN=${BIN:-target/release/lispcad}
+BEFORE=${BEFORE:-}
 [ -x "$BIN" ] || cargo build --release --bin lispcad
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -30,15 +34,20 @@ for r in $(seq "$ROUNDS"); do
     if command -v lua5.4 >/dev/null; then
         printf "%-6s %-10s %s\n" "$r" lua5.4 "$(stat lua5.4 -e '')"
     fi
+    if [ -n "$BEFORE" ]; then
+        printf "%-6s %-10s %s\n" "$r" before "$(stat "$BEFORE" run "$tmp/empty.lsp")"
+    fi
     printf "%-6s %-10s %s\n" "$r" lispcad "$(stat "$BIN" run "$tmp/empty.lsp")"
 done
 echo "load: $(cut -d' ' -f1-3 /proc/loadavg)"
-if command -v valgrind >/dev/null; then
-    i=$(valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
-        "$BIN" run "$tmp/empty.lsp" 2>&1 | awk '/I *refs/ {print $NF}')
-    echo "instructions (cachegrind), lispcad run empty.lsp: $i"
-fi
-if command -v strace >/dev/null; then
-    c=$(strace -f -c "$BIN" run "$tmp/empty.lsp" 2>&1 >/dev/null | awk '$NF == "total" {print $4}')
-    echo "system calls (strace -f -c), lispcad run empty.lsp: $c"
-fi
+for bin in ${BEFORE:+"$BEFORE"} "$BIN"; do
+    if command -v valgrind >/dev/null; then
+        i=$(valgrind --tool=cachegrind --cache-sim=no --cachegrind-out-file=/dev/null \
+            "$bin" run "$tmp/empty.lsp" 2>&1 | awk '/I *refs/ {print $NF}')
+        echo "instructions (cachegrind), $bin run empty.lsp: $i"
+    fi
+    if command -v strace >/dev/null; then
+        c=$(strace -f -c "$bin" run "$tmp/empty.lsp" 2>&1 >/dev/null | awk '$NF == "total" {print $4}')
+        echo "system calls (strace -f -c), $bin run empty.lsp: $c"
+    fi
+done

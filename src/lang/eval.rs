@@ -2,7 +2,6 @@
 //! stack, limits (steps, stack depth, Ctrl-C), `*error*`, and running sources.
 
 use std::any::{Any, TypeId};
-use std::collections::HashMap;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -110,7 +109,9 @@ pub struct Interp {
     /// >0 inside `vl-catch-all-apply`: errors are caught there, not offered to `*error*`.
     pub catch_depth: u32,
     pub(super) in_error_handler: bool,
-    pub(super) lambda_cache: HashMap<*const Cons, (Value, std::rc::Rc<Lambda>)>,
+    /// Keyed by address and never iterated, so FxHash: std's RandomState would ask the kernel
+    /// for random keys (a system call) when each interpreter is built, and SipHash each lookup.
+    pub(super) lambda_cache: rustc_hash::FxHashMap<*const Cons, (Value, std::rc::Rc<Lambda>)>,
     pub(super) exts: Vec<(TypeId, Box<dyn Any>)>,
     /// Files `load`ed so far (for `watch`).
     pub loaded_files: Vec<PathBuf>,
@@ -166,7 +167,7 @@ impl Interp {
             stack_floor: stack_top.saturating_sub(stack_budget),
             catch_depth: 0,
             in_error_handler: false,
-            lambda_cache: HashMap::new(),
+            lambda_cache: Default::default(),
             exts: Vec::new(),
             loaded_files: Vec::new(),
             base_dir: None,

@@ -6,8 +6,6 @@
 //! at the `(` itself (pest alone would report the end of file), bounds the nesting so hostile
 //! input cannot exhaust the stack, and tells the REPL whether an entry is complete.
 
-use std::collections::HashMap;
-
 use pest::iterators::Pair;
 use pest::Parser;
 
@@ -22,10 +20,12 @@ struct LispParser;
 /// The deepest list nesting the reader accepts.
 pub const MAX_NESTING: usize = 2_000;
 
-/// Where each list read from source starts and ends, by cons-cell identity.
+/// Where each list read from source starts and ends, by cons-cell identity. Keyed by address
+/// and never iterated, so FxHash: std's RandomState asked the kernel for keys (a system call
+/// per run) and SipHashed each list read.
 #[derive(Default)]
 pub struct SpanMap {
-    map: HashMap<*const Cons, Span>,
+    map: rustc_hash::FxHashMap<*const Cons, Span>,
 }
 
 impl SpanMap {
