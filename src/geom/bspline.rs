@@ -185,21 +185,26 @@ impl BSpline {
     pub fn to_beziers(&self) -> Vec<(Vec<DVec3>, Vec<f64>)> {
         let p = self.degree;
         let (a, b) = self.domain();
-        // Homogeneous control points and the knot vector, refined in place.
-        let mut pw: Vec<DVec4> = self
-            .ctrl
-            .iter()
-            .enumerate()
-            .map(|(i, c)| (*c * self.weight(i)).extend(self.weight(i)))
-            .collect();
-        let mut knots = self.knots.clone();
         // Raise every distinct interior knot (and the domain ends) to multiplicity p.
-        let mut breaks: Vec<f64> = knots
+        let mut breaks: Vec<f64> = self
+            .knots
             .iter()
             .copied()
             .filter(|u| *u >= a && *u <= b)
             .collect();
         breaks.dedup();
+        // Homogeneous control points and the knot vector, refined in place, with room for
+        // every insertion (at most p + 1 a break) made once instead of regrown as they come.
+        let room = breaks.len() * (p + 1);
+        let mut pw: Vec<DVec4> = Vec::with_capacity(self.ctrl.len() + room);
+        pw.extend(
+            self.ctrl
+                .iter()
+                .enumerate()
+                .map(|(i, c)| (*c * self.weight(i)).extend(self.weight(i))),
+        );
+        let mut knots = Vec::with_capacity(self.knots.len() + room);
+        knots.extend_from_slice(&self.knots);
         // Knots in order (as `new` checks; insertion keeps them so) let the searches below be
         // binary ones, with the same answers as the scans they replace; a batch row
         // decomposes its outline five times, and the scans made it quadratic.
@@ -216,7 +221,7 @@ impl BSpline {
             }
         }
         // Now every span [breaks[i], breaks[i+1]] has its own p+1 control points.
-        let mut out = Vec::new();
+        let mut out = Vec::with_capacity(breaks.len());
         for w in breaks.windows(2) {
             if w[1] <= w[0] {
                 continue;

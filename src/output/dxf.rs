@@ -179,50 +179,60 @@ fn write_header(
     handseed: u64,
     insunits: i32,
 ) {
-    // ---- HEADER ----
-    w.str(0, "SECTION");
-    w.str(2, "HEADER");
-    let var = |w: &mut DxfWriter, name: &str| w.str(9, name);
-    var(w, "$ACADVER");
-    w.str(1, "AC1015");
-    var(w, "$ACADMAINTVER");
-    w.int(70, 6);
-    var(w, "$DWGCODEPAGE");
-    w.str(3, "ANSI_1252");
-    var(w, "$INSBASE");
-    w.point(10, DVec3::ZERO);
+    // ---- HEADER ----: the variables no drawing changes come prepared, in three runs.
+    w.out.push_str(prepared(&HEADER_HEAD, |w| {
+        w.str(0, "SECTION");
+        w.str(2, "HEADER");
+        var(w, "$ACADVER");
+        w.str(1, "AC1015");
+        var(w, "$ACADMAINTVER");
+        w.int(70, 6);
+        var(w, "$DWGCODEPAGE");
+        w.str(3, "ANSI_1252");
+        var(w, "$INSBASE");
+        w.point(10, DVec3::ZERO);
+        var(w, "$EXTMIN");
+    }));
     let (lo, hi) = extents.unwrap_or((DVec3::splat(1e20), DVec3::splat(-1e20)));
-    var(w, "$EXTMIN");
     w.point(10, lo);
     var(w, "$EXTMAX");
     w.point(10, hi);
-    var(w, "$LIMMIN");
-    w.point2(10, DVec2::ZERO);
-    var(w, "$LIMMAX");
-    w.point2(10, DVec2::new(420.0, 297.0));
-    var(w, "$LTSCALE");
-    w.float(40, 1.0);
-    var(w, "$TEXTSTYLE");
-    w.str(7, "Standard");
-    var(w, "$CLAYER");
+    w.out.push_str(prepared(&HEADER_LIMITS, |w| {
+        var(w, "$LIMMIN");
+        w.point2(10, DVec2::ZERO);
+        var(w, "$LIMMAX");
+        w.point2(10, DVec2::new(420.0, 297.0));
+        var(w, "$LTSCALE");
+        w.float(40, 1.0);
+        var(w, "$TEXTSTYLE");
+        w.str(7, "Standard");
+        var(w, "$CLAYER");
+    }));
     w.str(8, d.current_layer());
-    var(w, "$CELTYPE");
-    w.str(6, "ByLayer");
-    var(w, "$CECOLOR");
-    w.int(62, 256);
-    var(w, "$DIMSTYLE");
-    w.str(2, "Standard");
-    var(w, "$LUNITS");
-    w.int(70, 2);
-    var(w, "$AUNITS");
-    w.int(70, 0);
-    var(w, "$HANDSEED");
+    w.out.push_str(prepared(&HEADER_UNITS, |w| {
+        var(w, "$CELTYPE");
+        w.str(6, "ByLayer");
+        var(w, "$CECOLOR");
+        w.int(62, 256);
+        var(w, "$DIMSTYLE");
+        w.str(2, "Standard");
+        var(w, "$LUNITS");
+        w.int(70, 2);
+        var(w, "$AUNITS");
+        w.int(70, 0);
+        var(w, "$HANDSEED");
+    }));
     w.handle(5, handseed);
     var(w, "$MEASUREMENT");
     w.int(70, super::measurement(insunits) as i64);
     var(w, "$INSUNITS");
     w.int(70, insunits as i64);
     w.str(0, "ENDSEC");
+}
+
+/// A header variable's name group.
+fn var(w: &mut DxfWriter, name: &str) {
+    w.str(9, name);
 }
 
 /// The active viewport, framing the drawing's extents.
@@ -273,13 +283,15 @@ fn write_vport(w: &mut DxfWriter, extents: Option<(DVec3, DVec3)>) {
 /// The LTYPE, LAYER, STYLE, VIEW/UCS and APPID tables.
 fn write_tables(w: &mut DxfWriter, d: &Drawing, t: &Tables) {
     table(w, "LTYPE", H_LTYPE_TABLE, 3 + t.linetypes.len());
-    let continuous_like = |w: &mut DxfWriter, h: u64, name: &str, desc: &str| {
+    fn continuous_like(w: &mut DxfWriter, h: u64, name: &str, desc: &str) {
         record(w, "LTYPE", h, H_LTYPE_TABLE, "AcDbLinetypeTableRecord");
         w.solid_linetype_fields(name, desc);
-    };
-    continuous_like(w, H_LTYPE_BYBLOCK, "ByBlock", "");
-    continuous_like(w, H_LTYPE_BYLAYER, "ByLayer", "");
-    continuous_like(w, H_LTYPE_CONTINUOUS, "Continuous", "Solid line");
+    }
+    w.out.push_str(prepared(&LTYPE_FIXED, |w| {
+        continuous_like(w, H_LTYPE_BYBLOCK, "ByBlock", "");
+        continuous_like(w, H_LTYPE_BYLAYER, "ByLayer", "");
+        continuous_like(w, H_LTYPE_CONTINUOUS, "Continuous", "Solid line");
+    }));
     // Line types the drawing names but does not define are written solid, so a reader never
     // meets an undefined name.
     for (lt, h) in t.linetypes.iter().zip(&t.ltype_handles) {
@@ -300,15 +312,16 @@ fn write_tables(w: &mut DxfWriter, d: &Drawing, t: &Tables) {
     w.str(0, "ENDTAB");
 
     table(w, "STYLE", H_STYLE_TABLE, 1 + t.styles.len());
-    for (name, h) in std::iter::once(("Standard", H_STYLE_STANDARD)).chain(
-        t.styles
-            .iter()
-            .map(|s| s.as_str())
-            .zip(t.style_handles.iter().copied()),
-    ) {
+    fn style(w: &mut DxfWriter, h: u64, name: &str) {
         record(w, "STYLE", h, H_STYLE_TABLE, "AcDbTextStyleTableRecord");
         w.str(2, name);
         w.text_style_fields();
+    }
+    w.out.push_str(prepared(&STYLE_STANDARD, |w| {
+        style(w, H_STYLE_STANDARD, "Standard");
+    }));
+    for (name, h) in t.styles.iter().zip(&t.style_handles) {
+        style(w, *h, name);
     }
     w.str(0, "ENDTAB");
 
@@ -390,6 +403,13 @@ static CLASSES: OnceLock<String> = OnceLock::new();
 static VIEW_UCS: OnceLock<String> = OnceLock::new();
 static TABLES_TAIL: OnceLock<String> = OnceLock::new();
 static OBJECTS: OnceLock<String> = OnceLock::new();
+static HEADER_HEAD: OnceLock<String> = OnceLock::new();
+static HEADER_LIMITS: OnceLock<String> = OnceLock::new();
+static HEADER_UNITS: OnceLock<String> = OnceLock::new();
+static LTYPE_FIXED: OnceLock<String> = OnceLock::new();
+static STYLE_STANDARD: OnceLock<String> = OnceLock::new();
+static BLOCK_RECORDS_FIXED: OnceLock<String> = OnceLock::new();
+static SPACE_BLOCKS: OnceLock<String> = OnceLock::new();
 
 fn prepared(cell: &'static OnceLock<String>, write: fn(&mut DxfWriter)) -> &'static str {
     cell.get_or_init(|| {
@@ -464,6 +484,24 @@ fn write_blocks(w: &mut DxfWriter, d: &Drawing) {
     };
     let user = d.new_block_records();
     table(w, "BLOCK_RECORD", H_BLOCK_RECORD_TABLE, 2 + user.len());
+    w.out
+        .push_str(prepared(&BLOCK_RECORDS_FIXED, write_space_records));
+    for r in user {
+        groups(w, r);
+    }
+    w.out.push_str(prepared(&SPACE_BLOCKS, write_space_blocks));
+    for r in d.block_section() {
+        groups(w, r);
+    }
+    w.str(0, "ENDSEC");
+
+    // ---- ENTITIES ----
+    w.str(0, "SECTION");
+    w.str(2, "ENTITIES");
+}
+
+/// The model and paper space records of the BLOCK_RECORD table.
+fn write_space_records(w: &mut DxfWriter) {
     for (h, name, layout) in [
         (H_MODEL_RECORD, "*Model_Space", H_MODEL_LAYOUT),
         (H_PAPER_RECORD, "*Paper_Space", H_PAPER_LAYOUT),
@@ -478,9 +516,10 @@ fn write_blocks(w: &mut DxfWriter, d: &Drawing) {
         w.str(2, name);
         w.handle(340, layout);
     }
-    for r in user {
-        groups(w, r);
-    }
+}
+
+/// The end of the TABLES section, and the BLOCKS section's model and paper space blocks.
+fn write_space_blocks(w: &mut DxfWriter) {
     w.str(0, "ENDTAB");
     w.str(0, "ENDSEC");
 
@@ -525,14 +564,6 @@ fn write_blocks(w: &mut DxfWriter, d: &Drawing) {
         w.str(8, "0");
         w.str(100, "AcDbBlockEnd");
     }
-    for r in d.block_section() {
-        groups(w, r);
-    }
-    w.str(0, "ENDSEC");
-
-    // ---- ENTITIES ----
-    w.str(0, "SECTION");
-    w.str(2, "ENTITIES");
 }
 
 /// The OBJECTS section after the dictionaries scripts can change, and EOF.

@@ -6,6 +6,33 @@ use std::fmt::Write as _;
 
 use glam::{DVec2, DVec3};
 
+/// Every group code below 1000 as it is written: right-justified in three columns and followed
+/// by its newline, four bytes each ("  0\n" … "999\n"), so writing one is a four-byte copy
+/// (the writers emit about 800 groups a file).
+const CODES: &str = {
+    const BYTES: [u8; 4000] = {
+        let mut b = [b' '; 4000];
+        let mut c = 0;
+        while c < 1000 {
+            let i = 4 * c;
+            if c >= 100 {
+                b[i] = b'0' + (c / 100) as u8;
+            }
+            if c >= 10 {
+                b[i + 1] = b'0' + (c / 10 % 10) as u8;
+            }
+            b[i + 2] = b'0' + (c % 10) as u8;
+            b[i + 3] = b'\n';
+            c += 1;
+        }
+        b
+    };
+    match std::str::from_utf8(&BYTES) {
+        Ok(s) => s,
+        Err(_) => panic!("group codes are ASCII"),
+    }
+};
+
 /// Group-code/value pair emitter into one string buffer.
 pub struct DxfWriter {
     pub out: String,
@@ -51,24 +78,16 @@ impl DxfWriter {
         }
     }
 
-    /// The group code right-justified in three columns (by hand: this is the hot path).
+    /// The group code right-justified in three columns, with its newline.
     fn code(&mut self, code: u16) {
-        let mut buf = [b' '; 6];
-        let mut i = buf.len();
-        let mut c = code;
-        loop {
-            i -= 1;
-            buf[i] = b'0' + (c % 10) as u8;
-            c /= 10;
-            if c == 0 {
-                break;
-            }
+        let c = usize::from(code);
+        if c < 1000 {
+            self.out.push_str(&CODES[4 * c..4 * c + 4]);
+        } else {
+            // Four digits and more (xdata's 1000-1071) fill the columns.
+            self.out.push_str(itoa::Buffer::new().format(code));
+            self.out.push('\n');
         }
-        let start = i.min(buf.len() - 3);
-        // Only ASCII digits and spaces were written.
-        self.out
-            .push_str(std::str::from_utf8(&buf[start..]).unwrap_or("  0"));
-        self.out.push('\n');
     }
 
     pub fn str(&mut self, code: u16, value: &str) {
@@ -84,12 +103,27 @@ impl DxfWriter {
 
     pub fn int(&mut self, code: u16, value: i64) {
         self.code(code);
-        let _ = writeln!(self.out, "{value}");
+        self.out.push_str(itoa::Buffer::new().format(value));
+        self.out.push('\n');
     }
 
+    /// A handle in upper-case hexadecimal (as `{:X}` writes it, without going through
+    /// `fmt`: a file has a few hundred of them).
     pub fn handle(&mut self, code: u16, h: u64) {
         self.code(code);
-        let _ = writeln!(self.out, "{h:X}");
+        let mut buf = [b'0'; 16];
+        let mut i = buf.len();
+        let mut h = h;
+        loop {
+            i -= 1;
+            buf[i] = b"0123456789ABCDEF"[(h & 0xF) as usize];
+            h >>= 4;
+            if h == 0 {
+                break;
+            }
+        }
+        self.out.extend(buf[i..].iter().map(|&b| char::from(b)));
+        self.out.push('\n');
     }
 
     pub fn float(&mut self, code: u16, value: f64) {
@@ -298,6 +332,40 @@ mod tests {
         push_dxf_string(&mut s, "a\nbé—α");
         assert_eq!(s, "a bé—\\U+03B1");
         assert_eq!(encode_cp1252(s), b"a b\xE9\x97\\U+03B1");
+    }
+
+    /// `code`, `int` and `handle` write what `fmt` writes (`{:>3}`, `{}`, `{:X}`), for every
+    /// code up to past xdata's and values at both ends of their ranges.
+    #[test]
+    fn groups_are_the_fmt_bytes() {
+        let mut w = DxfWriter::new();
+        let mut expected = String::new();
+        for c in (0..=1100u16).chain([9999, 10000, u16::MAX]) {
+            w.int(c, i64::from(c) - 500);
+            w.handle(c, u64::from(c) * 0x1F3);
+            let (v, h) = (i64::from(c) - 500, u64::from(c) * 0x1F3);
+            expected.push_str(&format!("{c:>3}\n{v}\n{c:>3}\n{h:X}\n"));
+        }
+        for v in [
+            0,
+            1,
+            -1,
+            9,
+            10,
+            99,
+            100,
+            i64::from(i32::MAX),
+            i64::MIN,
+            i64::MAX,
+        ] {
+            w.int(70, v);
+            expected.push_str(&format!(" 70\n{v}\n"));
+        }
+        for h in [0, 0xF, 0x10, 0xABC, 0xFFFF_FFFF, u64::MAX, 1 << 60] {
+            w.handle(5, h);
+            expected.push_str(&format!("  5\n{h:X}\n"));
+        }
+        assert_eq!(w.out, expected);
     }
 
     #[test]

@@ -121,7 +121,8 @@ fn fixed6(out: &mut String, r: f64) {
         }
         let len = 6 - digits.iter().rev().take_while(|&&d| d == b'0').count();
         out.push('.');
-        out.push_str(std::str::from_utf8(&digits[..len]).unwrap_or("0"));
+        // Pushed as characters: validating six ASCII bytes as UTF-8 cost more than this.
+        out.extend(digits[..len].iter().map(|&d| char::from(d)));
     }
 }
 
