@@ -344,13 +344,6 @@ impl Tracer<'_, '_> {
         self.target.on(self.eval(uv), self.tol)
     }
 
-    /// A node belongs to the region when it lies on the target and so does a point a quarter
-    /// cell away in one of four oblique directions (an irrational slope, so a crossing curve
-    /// along a grid line or a diagonal does not count).
-    fn in_region(&self, uv: DVec2) -> bool {
-        self.in_region_by(uv, DVec2::splat(0.25 / N as f64))
-    }
-
     /// The parameter steps of a probe [`PROBE`] of the surface's size long along u and v at
     /// `uv` (at most a quarter cell): a region narrower than a cell still holds the probes
     /// around a point inside it, and off a crossing they leave the other surface.
@@ -362,8 +355,10 @@ impl Tracer<'_, '_> {
         DVec2::new(d(du.length()), d(dv.length()))
     }
 
-    /// [`Self::in_region`] with the neighbour `d` away (per direction): a quarter of the grid's
-    /// local cell.
+    /// A point belongs to the region when it lies on the target and so does a point `d` away
+    /// (per direction; a quarter of the grid's local cell for a node) in one of four oblique
+    /// directions (an irrational slope, so a crossing curve along a grid line or a diagonal
+    /// does not count).
     fn in_region_by(&self, uv: DVec2, d: DVec2) -> bool {
         if !self.on(uv) {
             return false;

@@ -26,6 +26,9 @@ const CANDIDATES: usize = 12;
 /// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
 /// diagonal).
 pub(super) const W_MIN: f64 = 1e-5;
+/// The largest gap, as a fraction of the tolerance, inside a region's band
+/// ([`Tracer::flat_between`]).
+const FLAT: f64 = 1e-2;
 /// Golden-section steps per search (0.618^48 ≈ 1e-10 of the cell searched).
 const GOLDEN: usize = 48;
 
@@ -192,7 +195,7 @@ impl Tracer<'_, '_> {
             let (Some(hi), Some(lo)) = (hi, lo) else {
                 continue;
             };
-            if (hi - lo) * speed[k] < w_min {
+            if (hi - lo) * speed[k] < w_min || !self.flat_between(q, k, lo, hi) {
                 return None;
             }
             if hi - lo < 2.0 / N as f64 {
@@ -200,6 +203,20 @@ impl Tracer<'_, '_> {
             }
         }
         Some(out)
+    }
+
+    /// Whether the gap is far below the tolerance halfway from the middle of `lo..hi` (along
+    /// direction `k` through `q`) to either end. Along a tangent contact the gap stays under
+    /// the tolerance over a band too, but it grows as a power of the distance from the contact
+    /// line: a square law gives a quarter of the tolerance there, a sixth power 1/64; a region
+    /// is flat to rounding.
+    fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> bool {
+        let (mid, quarter) = (0.5 * (lo + hi), 0.25 * (hi - lo));
+        [mid - quarter, mid + quarter].into_iter().all(|x| {
+            let mut p = q;
+            p[k] = x;
+            self.gap_at(p).is_some_and(|g| g <= FLAT * self.tol)
+        })
     }
 
     /// Where the region ends from `q` in the unit direction `e` (its coordinate along `e`),
