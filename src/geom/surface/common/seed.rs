@@ -126,7 +126,7 @@ impl Tracer<'_, '_> {
                 }
                 (uv, g) = self.golden(uv, k, g);
             }
-            if !(g < 0.5 * before) {
+            if g.is_nan() || g >= 0.5 * before {
                 break;
             }
         }
@@ -180,7 +180,7 @@ impl Tracer<'_, '_> {
         let w_min = W_MIN * self.patch.scale();
         let mut out: Band = [None, None];
         for k in 0..2 {
-            if !(speed[k] > 0.0) {
+            if speed[k].is_nan() || speed[k] <= 0.0 {
                 return None;
             }
             let mut e = DVec2::ZERO;
