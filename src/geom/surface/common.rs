@@ -18,6 +18,7 @@
 //! than a quarter of a grid cell (1/128 of the parameter range) is not seen.
 
 mod edge;
+mod seed;
 
 use super::hits::point_in_polygon;
 use super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
@@ -44,6 +45,9 @@ const K: usize = 12;
 /// looked for when a crossing may run along it: off the crossing by far more than the
 /// tolerance allows, near enough that a curved region edge is straight across the two lines.
 const OFF_LINE: f64 = 1e-4;
+/// How far from a curve's middle point (as a fraction of the surface's size) the surfaces must
+/// still coincide for the curve to lie in their common region: as [`super::beside`]'s probes.
+const PROBE: f64 = 1e-4;
 
 /// What a point is tested against: a surface, or the plane of a section.
 enum Target<'a> {
@@ -121,17 +125,7 @@ pub(crate) fn outside_common(
 ) -> Vec<Polyline3> {
     let (s, other) = if free_form(a) { (a, b) } else { (b, a) };
     let t = Target::of(other);
-    let patch = Patch::new(s);
-    let periodic = patch.periodic();
-    let tr = Tracer {
-        patch,
-        periodic,
-        target: &t,
-        tol,
-        chord_tol: tol,
-        nodes: Vec::new(),
-        cross: HashMap::new(),
-    };
+    let tr = Tracer::new(s, &t, tol, tol);
     curves
         .into_iter()
         .filter(|c| {
@@ -139,7 +133,7 @@ pub(crate) fn outside_common(
                 return false;
             };
             let uv = tr.patch.project(p, None);
-            !(tr.patch.eval(uv).distance(p) <= tol && tr.in_region(uv))
+            !(tr.patch.eval(uv).distance(p) <= tol && tr.in_region_by(uv, tr.probe(uv)))
         })
         .collect()
 }
@@ -162,13 +156,18 @@ pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) 
     let on_b = on_count(a, &tb, tol);
     let on_a = on_count(b, &ta, tol);
     if on_a == 0 && on_b == 0 {
-        return None;
+        // No sample lies on the other surface: a region, if any, is narrower than the samples'
+        // spacing; it is looked for from where the gap vanishes, in each free-form domain.
+        return [(a, &tb), (b, &ta)]
+            .into_iter()
+            .filter(|(s, _)| free_form(s))
+            .find_map(|(s, t)| trace(s, t, tol, chord_tol, true));
     }
     // Trace in the domain of the one lying more on the other (a plane region has none).
     let a_first = !matches!(a, Surface::Plane(_))
         && (matches!(b, Surface::Plane(_)) || on_b * sample_count(b) >= on_a * sample_count(a));
     let (s, t) = if a_first { (a, &tb) } else { (b, &ta) };
-    trace(s, t, tol, chord_tol)
+    trace(s, t, tol, chord_tol, false)
 }
 
 /// The part of `s` lying in the plane through `p` with unit normal `n`, as its boundary loops;
@@ -197,7 +196,7 @@ pub(crate) fn in_plane(
             if on_count(s, &t, tol) == 0 {
                 return None;
             }
-            match trace(s, &t, tol, chord_tol)? {
+            match trace(s, &t, tol, chord_tol, false)? {
                 Overlap::Loops(l) => Some(l),
                 Overlap::Everywhere => None,
             }
@@ -258,24 +257,20 @@ struct Tracer<'a, 'b> {
     target: &'b Target<'b>,
     tol: f64,
     chord_tol: f64,
+    /// The grid's lines in u and in v, from 0 to 1: N cells each, with finer lines added
+    /// around a narrow region ([`seed`]).
+    lines: [Vec<f64>; 2],
     nodes: Vec<bool>,
     cross: HashMap<Key, DVec2>,
 }
 
 /// Traces the region of `s` lying on `t`.
-fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64) -> Option<Overlap> {
-    let patch = Patch::new(s);
-    let periodic = patch.periodic();
-    let mut tr = Tracer {
-        patch,
-        periodic,
-        target: t,
-        // Half the tolerance, so the boundary points found by bisection lie within it.
-        tol: 0.5 * tol,
-        chord_tol,
-        nodes: Vec::new(),
-        cross: HashMap::new(),
-    };
+fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64, narrow: bool) -> Option<Overlap> {
+    // Half the tolerance, so the boundary points found by bisection lie within it.
+    let mut tr = Tracer::new(s, t, 0.5 * tol, chord_tol);
+    if narrow && !tr.refine_narrow() {
+        return None;
+    }
     tr.classify();
     let segs = tr.segments();
     if segs.is_empty() {
@@ -290,7 +285,49 @@ fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64) -> Option<Overlap> {
     (!loops.is_empty()).then_some(Overlap::Loops(loops))
 }
 
+impl<'a, 'b> Tracer<'a, 'b> {
+    fn new(s: &'a Surface, target: &'b Target<'b>, tol: f64, chord_tol: f64) -> Self {
+        let patch = Patch::new(s);
+        let periodic = patch.periodic();
+        let uniform: Vec<f64> = (0..=N).map(|i| i as f64 / N as f64).collect();
+        Tracer {
+            patch,
+            periodic,
+            target,
+            tol,
+            chord_tol,
+            lines: [uniform.clone(), uniform],
+            nodes: Vec::new(),
+            cross: HashMap::new(),
+        }
+    }
+}
+
 impl Tracer<'_, '_> {
+    /// Cells in each direction.
+    fn cells(&self) -> [usize; 2] {
+        [self.lines[0].len() - 1, self.lines[1].len() - 1]
+    }
+
+    fn uv_of(&self, i: usize, j: usize) -> DVec2 {
+        DVec2::new(self.lines[0][i], self.lines[1][j])
+    }
+
+    /// The smaller of the two cells either side of line `i` in direction `k` (one at a domain
+    /// edge, the wrapped one across a seam).
+    fn cell_near(&self, k: usize, i: usize) -> f64 {
+        let l = &self.lines[k];
+        let n = l.len() - 1;
+        let after = (i < n).then(|| l[i + 1] - l[i]);
+        let before = if i > 0 {
+            Some(l[i] - l[i - 1])
+        } else {
+            self.periodic[k].then(|| l[n] - l[n - 1])
+        };
+        let after = after.or_else(|| self.periodic[k].then(|| l[1] - l[0]));
+        after.into_iter().chain(before).fold(f64::MAX, f64::min)
+    }
+
     fn eval(&self, uv: DVec2) -> DVec3 {
         let mut q = uv;
         self.patch.normalise(&mut q);
@@ -307,14 +344,25 @@ impl Tracer<'_, '_> {
         self.target.on(self.eval(uv), self.tol)
     }
 
-    /// A node belongs to the region when it lies on the target and so does a point a quarter
-    /// cell away in one of four oblique directions (an irrational slope, so a crossing curve
-    /// along a grid line or a diagonal does not count).
-    fn in_region(&self, uv: DVec2) -> bool {
+    /// The parameter steps of a probe [`PROBE`] of the surface's size long along u and v at
+    /// `uv` (at most a quarter cell): a region narrower than a cell still holds the probes
+    /// around a point inside it, and off a crossing they leave the other surface.
+    fn probe(&self, uv: DVec2) -> DVec2 {
+        let (du, dv) = self.patch.derivs(uv);
+        let step = PROBE * self.patch.scale();
+        let quarter = 0.25 / N as f64;
+        let d = |speed: f64| (step / speed.max(1e-300)).min(quarter);
+        DVec2::new(d(du.length()), d(dv.length()))
+    }
+
+    /// A point belongs to the region when it lies on the target and so does a point `d` away
+    /// (per direction; a quarter of the grid's local cell for a node) in one of four oblique
+    /// directions (an irrational slope, so a crossing curve along a grid line or a diagonal
+    /// does not count).
+    fn in_region_by(&self, uv: DVec2, d: DVec2) -> bool {
         if !self.on(uv) {
             return false;
         }
-        let d = 0.25 / N as f64;
         let phi = 0.618_033_988_749_895;
         [(1.0, phi), (-phi, 1.0), (-1.0, -phi), (phi, -1.0)]
             .iter()
@@ -322,9 +370,10 @@ impl Tracer<'_, '_> {
     }
 
     fn idx(&self, i: usize, j: usize) -> usize {
-        let i = if self.periodic[0] { i % N } else { i };
-        let j = if self.periodic[1] { j % N } else { j };
-        j * (N + 1) + i
+        let [nu, nv] = self.cells();
+        let i = if self.periodic[0] { i % nu } else { i };
+        let j = if self.periodic[1] { j % nv } else { j };
+        j * (nu + 1) + i
     }
 
     fn node(&self, i: usize, j: usize) -> bool {
@@ -332,19 +381,21 @@ impl Tracer<'_, '_> {
     }
 
     fn classify(&mut self) {
-        let mut nodes = vec![false; (N + 1) * (N + 1)];
-        for j in 0..=N {
-            for i in 0..=N {
-                let wrapped = (self.periodic[0] && i == N) || (self.periodic[1] && j == N);
+        let [nu, nv] = self.cells();
+        let mut nodes = vec![false; (nu + 1) * (nv + 1)];
+        for j in 0..=nv {
+            for i in 0..=nu {
+                let wrapped = (self.periodic[0] && i == nu) || (self.periodic[1] && j == nv);
                 if !wrapped {
-                    nodes[j * (N + 1) + i] = self.in_region(uv_of(i, j));
+                    let d = 0.25 * DVec2::new(self.cell_near(0, i), self.cell_near(1, j));
+                    nodes[j * (nu + 1) + i] = self.in_region_by(self.uv_of(i, j), d);
                 }
             }
         }
         // Nodes on the far side of a seam are the ones on the near side.
-        for j in 0..=N {
-            for i in 0..=N {
-                nodes[j * (N + 1) + i] = nodes[self.idx(i, j)];
+        for j in 0..=nv {
+            for i in 0..=nu {
+                nodes[j * (nu + 1) + i] = nodes[self.idx(i, j)];
             }
         }
         self.nodes = nodes;
@@ -368,8 +419,9 @@ impl Tracer<'_, '_> {
     }
 
     fn norm_key(&self, k: Key) -> Key {
-        let w0 = |i: usize| if self.periodic[0] { i % N } else { i };
-        let w1 = |j: usize| if self.periodic[1] { j % N } else { j };
+        let [nu, nv] = self.cells();
+        let w0 = |i: usize| if self.periodic[0] { i % nu } else { i };
+        let w1 = |j: usize| if self.periodic[1] { j % nv } else { j };
         match k {
             Key::Node(i, j) => Key::Node(w0(i), w1(j)),
             Key::H(i, j) => Key::H(i, w1(j)),
@@ -381,8 +433,9 @@ impl Tracer<'_, '_> {
     /// left), and the domain's own edges where its nodes are in the region.
     fn segments(&mut self) -> Vec<(Key, Key)> {
         let mut segs = Vec::new();
-        for j in 0..N {
-            for i in 0..N {
+        let [nu, nv] = self.cells();
+        for j in 0..nv {
+            for i in 0..nu {
                 self.cell(i, j, &mut segs);
             }
         }
@@ -390,22 +443,26 @@ impl Tracer<'_, '_> {
         let sides: [(bool, Vec<SideEdge>); 4] = [
             (
                 !self.periodic[1],
-                (0..N).map(|i| ((i, 0), (i + 1, 0), Key::H(i, 0))).collect(),
-            ),
-            (
-                !self.periodic[0],
-                (0..N).map(|j| ((N, j), (N, j + 1), Key::V(N, j))).collect(),
-            ),
-            (
-                !self.periodic[1],
-                (0..N)
-                    .rev()
-                    .map(|i| ((i + 1, N), (i, N), Key::H(i, N)))
+                (0..nu)
+                    .map(|i| ((i, 0), (i + 1, 0), Key::H(i, 0)))
                     .collect(),
             ),
             (
                 !self.periodic[0],
-                (0..N)
+                (0..nv)
+                    .map(|j| ((nu, j), (nu, j + 1), Key::V(nu, j)))
+                    .collect(),
+            ),
+            (
+                !self.periodic[1],
+                (0..nu)
+                    .rev()
+                    .map(|i| ((i + 1, nv), (i, nv), Key::H(i, nv)))
+                    .collect(),
+            ),
+            (
+                !self.periodic[0],
+                (0..nv)
                     .rev()
                     .map(|j| ((0, j + 1), (0, j), Key::V(0, j)))
                     .collect(),
@@ -457,7 +514,8 @@ impl Tracer<'_, '_> {
         }
         let entry = |k: usize| !c[k] && c[(k + 1) % 4];
         // A saddle is joined through the middle when the cell's centre is in the region.
-        let through = exit.len() == 2 && self.on(uv_of(i, j) + DVec2::splat(0.5 / N as f64));
+        let centre = 0.5 * (self.uv_of(i, j) + self.uv_of(i + 1, j + 1));
+        let through = exit.len() == 2 && self.on(centre);
         for &x in &exit {
             let e = if through {
                 (1..4).map(|d| (x + d) % 4).find(|&m| entry(m))
@@ -483,7 +541,7 @@ impl Tracer<'_, '_> {
             Key::V(i, j) => ((i, j), (i, j + 1)),
             Key::Node(..) => unreachable!("crossings lie on edges"),
         };
-        let (ua, ub) = (uv_of(a.0, a.1), uv_of(b.0, b.1));
+        let (ua, ub) = (self.uv_of(a.0, a.1), self.uv_of(b.0, b.1));
         let (lo, hi) = if self.node(a.0, a.1) {
             (ua, ub)
         } else {
@@ -538,12 +596,14 @@ impl Tracer<'_, '_> {
 
     fn pt(&self, k: Key) -> Pt {
         let (uv, pinned_i, pinned_j) = match k {
-            Key::Node(i, j) => (uv_of(i, j), Some(i), Some(j)),
+            Key::Node(i, j) => (self.uv_of(i, j), Some(i), Some(j)),
             Key::H(_, j) => (self.cross[&k], None, Some(j)),
             Key::V(i, _) => (self.cross[&k], Some(i), None),
         };
-        let edge =
-            |x: Option<usize>, k: usize| !self.periodic[k] && x.is_some_and(|x| x == 0 || x == N);
+        let n = self.cells();
+        let edge = |x: Option<usize>, k: usize| {
+            !self.periodic[k] && x.is_some_and(|x| x == 0 || x == n[k])
+        };
         Pt {
             uv,
             pinned: [edge(pinned_i, 0), edge(pinned_j, 1)],
@@ -647,10 +707,6 @@ impl Tracer<'_, '_> {
         }
         None
     }
-}
-
-fn uv_of(i: usize, j: usize) -> DVec2 {
-    DVec2::new(i as f64 / N as f64, j as f64 / N as f64)
 }
 
 /// Whether a point lies on `s` within `tol` (inside its extent), tested as the tracing tests it:

@@ -57,7 +57,7 @@ impl Tracer<'_, '_> {
     }
 
     /// The gap at the parameters `uv` (None outside the domain or the target's extent).
-    fn gap_at(&self, uv: DVec2) -> Option<f64> {
+    pub(super) fn gap_at(&self, uv: DVec2) -> Option<f64> {
         for k in 0..2 {
             if !self.periodic[k] && !(0.0..=1.0).contains(&uv[k]) {
                 return None;

@@ -1,0 +1,270 @@
+//! Common regions narrower than the tracer's grid: a band of a profile's short flat lying on a
+//! plane or a cylinder, 1/161 of the profile's parameter range, has no grid node with a
+//! neighbour a quarter cell away on it, and no sample of the quick look on it.
+//!
+//! Such a region is found from where the gap vanishes: the local minima of the gap over a
+//! coarse grid are followed downhill (golden-section searches along u and v in turn) to a point
+//! lying on the other surface. Crossings and tangent contacts reach such points too; they are
+//! told from a region by the region's width along u and along v, each measured from the point
+//! to the edges found as the tracer finds them ([`super::edge`]: where the surfaces part
+//! tangentially, extrapolated to the edge itself, so a contact line's "band" of gap below the
+//! tolerance has no width). A region at least [`W_MIN`] of the surface's size wide both ways
+//! gets grid lines at an eighth of its width across it in each direction where it is narrower
+//! than two cells; the tracer then classifies and traces it as any other region.
+//!
+//! The fine lines are placed from the width measured at the seed: a thin region lying oblique
+//! to the parameter lines, or one whose width changes along its length by more than the fine
+//! lines allow, can still be missed.
+
+use super::{Tracer, N};
+use glam::DVec2;
+
+/// Cells per direction of the grid whose gap minima are followed.
+const S: usize = 16;
+/// Most minima followed, smallest gap first.
+const CANDIDATES: usize = 12;
+/// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
+/// diagonal).
+pub(super) const W_MIN: f64 = 1e-5;
+/// The largest gap, as a fraction of the tolerance, inside a region's band
+/// ([`Tracer::flat_between`]).
+const FLAT: f64 = 1e-2;
+/// Golden-section steps per search (0.618^48 ≈ 1e-10 of the cell searched).
+const GOLDEN: usize = 48;
+
+/// A region found around a seed: per direction, its extent when narrow enough to need finer
+/// lines (None: at least two cells, or as wide as the search went).
+type Band = [Option<(f64, f64)>; 2];
+
+impl Tracer<'_, '_> {
+    /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
+    /// one found; false when none is found.
+    pub(super) fn refine_narrow(&mut self) -> bool {
+        let mut bands: Vec<Band> = Vec::new();
+        for uv in self.candidates() {
+            if bands.iter().any(|b| self.covers(b, uv)) {
+                continue;
+            }
+            let Some(q) = self.descend(uv) else { continue };
+            if bands.iter().any(|b| self.covers(b, q)) {
+                continue;
+            }
+            if let Some(b) = self.band(q) {
+                let wide = b.iter().all(Option::is_none);
+                bands.push(b);
+                if wide {
+                    break;
+                }
+            }
+        }
+        for b in &bands {
+            for (k, e) in b.iter().enumerate() {
+                if let Some((lo, hi)) = *e {
+                    self.add_lines(k, lo, hi);
+                }
+            }
+        }
+        !bands.is_empty()
+    }
+
+    /// The nodes of an S × S grid where the gap is no larger than at any neighbour, smallest
+    /// gap first (ties in grid order).
+    fn candidates(&self) -> Vec<DVec2> {
+        let at = |i: usize, j: usize| DVec2::new(i as f64 / S as f64, j as f64 / S as f64);
+        let wrap = |k: usize, i: usize| if self.periodic[k] { i % S } else { i };
+        let mut gap = vec![f64::INFINITY; (S + 1) * (S + 1)];
+        for j in 0..=S {
+            for i in 0..=S {
+                if wrap(0, i) == i && wrap(1, j) == j {
+                    gap[j * (S + 1) + i] = self.gap_at(at(i, j)).unwrap_or(f64::INFINITY);
+                }
+            }
+        }
+        let g = |i: usize, j: usize| gap[wrap(1, j) * (S + 1) + wrap(0, i)];
+        let step = |k: usize, i: usize, d: i64| -> Option<usize> {
+            let x = i as i64 + d;
+            if self.periodic[k] {
+                Some(x.rem_euclid(S as i64) as usize)
+            } else {
+                (0..=S as i64).contains(&x).then_some(x as usize)
+            }
+        };
+        let mut out: Vec<(f64, usize, usize)> = Vec::new();
+        for j in 0..=S {
+            for i in 0..=S {
+                let here = g(i, j);
+                if !here.is_finite() || wrap(0, i) != i || wrap(1, j) != j {
+                    continue;
+                }
+                let lowest = (-1..=1).all(|dj| {
+                    (-1..=1).all(|di| match (step(0, i, di), step(1, j, dj)) {
+                        (Some(a), Some(b)) => here <= g(a, b),
+                        _ => true,
+                    })
+                });
+                if lowest {
+                    out.push((here, j, i));
+                }
+            }
+        }
+        out.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        out.into_iter()
+            .take(CANDIDATES)
+            .map(|(_, j, i)| at(i, j))
+            .collect()
+    }
+
+    /// Down the gap from `uv` to a point on the target, by golden-section searches within a
+    /// seed cell along u and v in turn; None when the gap stops falling first.
+    fn descend(&self, mut uv: DVec2) -> Option<DVec2> {
+        let mut g = self.gap_at(uv)?;
+        for _ in 0..4 {
+            let before = g;
+            for k in 0..2 {
+                if self.on(uv) {
+                    return Some(uv);
+                }
+                (uv, g) = self.golden(uv, k, g);
+            }
+            if g.is_nan() || g >= 0.5 * before {
+                break;
+            }
+        }
+        self.on(uv).then_some(uv)
+    }
+
+    /// The least gap found along direction `k` within a seed cell of `uv` (whose gap is `g`).
+    fn golden(&self, uv: DVec2, k: usize, g: f64) -> (DVec2, f64) {
+        let h = 1.0 / S as f64;
+        let (mut a, mut b) = (uv[k] - h, uv[k] + h);
+        if !self.periodic[k] {
+            (a, b) = (a.max(0.0), b.min(1.0));
+        }
+        let put = |x: f64| {
+            let mut p = uv;
+            p[k] = x;
+            p
+        };
+        let f = |x: f64| self.gap_at(put(x)).unwrap_or(f64::INFINITY);
+        let r = 0.618_033_988_749_895;
+        let mut best = (uv, g);
+        let (mut x1, mut x2) = (b - r * (b - a), a + r * (b - a));
+        let (mut f1, mut f2) = (f(x1), f(x2));
+        for _ in 0..GOLDEN {
+            for (x, fx) in [(x1, f1), (x2, f2)] {
+                if fx < best.1 {
+                    best = (put(x), fx);
+                }
+            }
+            if best.1 <= self.tol {
+                break;
+            }
+            if f1 <= f2 {
+                (b, x2, f2) = (x2, x1, f1);
+                x1 = b - r * (b - a);
+                f1 = f(x1);
+            } else {
+                (a, x1, f1) = (x1, x2, f2);
+                x2 = a + r * (b - a);
+                f2 = f(x2);
+            }
+        }
+        best
+    }
+
+    /// The region around `q` (on the target), measured along u and v; None when it is narrower
+    /// than [`W_MIN`] either way (a crossing or a tangent contact, not a region).
+    fn band(&self, q: DVec2) -> Option<Band> {
+        let (du, dv) = self.patch.derivs(q);
+        let speed = [du.length(), dv.length()];
+        let w_min = W_MIN * self.patch.scale();
+        let mut out: Band = [None, None];
+        for k in 0..2 {
+            if speed[k].is_nan() || speed[k] <= 0.0 {
+                return None;
+            }
+            let mut e = DVec2::ZERO;
+            e[k] = 1.0;
+            // A region w_min wide around q reaches w_min/2 at least one way: quick refusal of
+            // most crossings before their edges are located.
+            let d = 0.5 * w_min / speed[k];
+            if !self.on(q + e * d) && !self.on(q - e * d) {
+                return None;
+            }
+            let (hi, lo) = (self.reach(q, e), self.reach(q, -e));
+            let (Some(hi), Some(lo)) = (hi, lo) else {
+                continue;
+            };
+            if (hi - lo) * speed[k] < w_min || !self.flat_between(q, k, lo, hi) {
+                return None;
+            }
+            if hi - lo < 2.0 / N as f64 {
+                out[k] = Some((lo, hi));
+            }
+        }
+        Some(out)
+    }
+
+    /// Whether the gap is far below the tolerance halfway from the middle of `lo..hi` (along
+    /// direction `k` through `q`) to either end. Along a tangent contact the gap stays under
+    /// the tolerance over a band too, but it grows as a power of the distance from the contact
+    /// line: a square law gives a quarter of the tolerance there, a sixth power 1/64; a region
+    /// is flat to rounding.
+    fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> bool {
+        let (mid, quarter) = (0.5 * (lo + hi), 0.25 * (hi - lo));
+        [mid - quarter, mid + quarter].into_iter().all(|x| {
+            let mut p = q;
+            p[k] = x;
+            self.gap_at(p).is_some_and(|g| g <= FLAT * self.tol)
+        })
+    }
+
+    /// Where the region ends from `q` in the unit direction `e` (its coordinate along `e`),
+    /// or None when it goes on for two grid cells.
+    fn reach(&self, q: DVec2, e: DVec2) -> Option<f64> {
+        let k = if e.x != 0.0 { 0 } else { 1 };
+        let mut inside = q;
+        let mut d = 1e-9;
+        while d <= 2.0 / N as f64 {
+            let p = q + e * d;
+            if !self.on(p) {
+                return Some(self.edge(inside, p)[k]);
+            }
+            inside = p;
+            d *= 2.0;
+        }
+        None
+    }
+
+    /// Whether `uv` lies within a seed cell of the band's narrow extents.
+    fn covers(&self, b: &Band, uv: DVec2) -> bool {
+        b.iter().enumerate().all(|(k, e)| {
+            e.is_none_or(|(lo, hi)| {
+                let mut d = uv[k] - 0.5 * (lo + hi);
+                if self.periodic[k] {
+                    d -= d.round();
+                }
+                d.abs() <= 0.5 * (hi - lo) + 1.0 / S as f64
+            })
+        })
+    }
+
+    /// Grid lines at an eighth of the extent `lo..hi` across it in direction `k`, reaching
+    /// almost its width beyond either edge.
+    fn add_lines(&mut self, k: usize, lo: f64, hi: f64) {
+        let (c, e) = (0.5 * (lo + hi), hi - lo);
+        let lines = &mut self.lines[k];
+        for i in -8..8 {
+            let mut x = c + e * (i as f64 + 0.5) / 8.0;
+            if self.periodic[k] {
+                x = x.rem_euclid(1.0);
+            } else if !(x > 0.0 && x < 1.0) {
+                continue;
+            }
+            if lines.iter().all(|l| (l - x).abs() > 1e-12) {
+                lines.push(x);
+            }
+        }
+        lines.sort_by(f64::total_cmp);
+    }
+}

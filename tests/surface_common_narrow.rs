@@ -1,0 +1,167 @@
+//! Common regions narrower than the region tracer's grid (issue 13): a profile of many arc
+//! segments with one short flat among them, so the flat spans well under 1/128 of the
+//! profile's parameter range, no sample of the quick look lies on it and no grid node has a
+//! neighbour a quarter cell away on it. The flat lies on a plane (ruled strip) or a cylinder
+//! (revolved profile); the region and its boundary are written here in closed form. The arcs
+//! leave the flat tangentially, so the edges are also the tangential-parting case.
+
+use lispcad::geom::curve::Curve;
+use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::DVec3;
+use std::f64::consts::{FRAC_PI_3, PI, TAU};
+use std::sync::Arc;
+
+mod surface_support;
+use surface_support::check_loops;
+
+const CT: f64 = 1e-6;
+const GT: f64 = 1e-9;
+/// The arcs' radius.
+const R: f64 = 2.0;
+/// Arc segments before and after the flat (161 segments in all: the flat is 1/161 of the
+/// parameter range).
+const M1: usize = 70;
+const M2: usize = 90;
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+/// Both orders: `loops` closed loops of total length `length` (to 1e-6), every point accepted
+/// by `on`, each edge in `reach` met by some point (to 1e-9); three runs give the same bits.
+fn check(
+    a: &Surface,
+    b: &Surface,
+    loops: usize,
+    length: f64,
+    on: impl Fn(DVec3) -> bool,
+    reach: &[&dyn Fn(DVec3) -> bool],
+) {
+    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, CT, GT).unwrap();
+    for r in check_loops(meet, a, b, loops, length, on) {
+        for (k, e) in reach.iter().enumerate() {
+            assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
+        }
+    }
+}
+
+/// A profile in local coordinates (s along the flat, t away from it): an arc of radius R
+/// through π/3 in `M1` segments down to (0, 0), the flat to (w, 0), an arc through π/3 in `M2`
+/// segments up again; both arcs are tangent to the flat and bend towards +t. `place` maps
+/// (s, t) to space; `ccw` says whether that map keeps the arcs counter-clockwise.
+fn u_profile(w: f64, place: impl Fn(f64, f64) -> DVec3, ccw: bool) -> Arc<Curve> {
+    let (d1, d2) = (FRAC_PI_3 / M1 as f64, FRAC_PI_3 / M2 as f64);
+    let mut pts = Vec::new();
+    for k in (0..=M1).rev() {
+        let f = k as f64 * d1;
+        pts.push(place(-R * f.sin(), R - R * f.cos()));
+    }
+    for k in 0..=M2 {
+        let f = k as f64 * d2;
+        pts.push(place(w + R * f.sin(), R - R * f.cos()));
+    }
+    let sign = if ccw { 1.0 } else { -1.0 };
+    let mut bulges = vec![sign * (d1 / 4.0).tan(); M1];
+    bulges.push(0.0);
+    bulges.extend(vec![sign * (d2 / 4.0).tan(); M2]);
+    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
+}
+
+#[test]
+fn the_profile_is_the_closed_form_one() {
+    let w = 0.05;
+    let c = u_profile(w, |s, t| v(s, t, 0.0), true);
+    let n = (M1 + M2 + 1) as f64;
+    for i in 0..=200 {
+        let p = c.eval(i as f64 / 200.0);
+        let centre = if p.x < 0.0 {
+            v(0.0, R, 0.0)
+        } else {
+            v(w, R, 0.0)
+        };
+        if p.x < 0.0 || p.x > w {
+            assert!((p.distance(centre) - R).abs() <= 1e-12, "{p}");
+        } else {
+            assert!(p.y.abs() <= 1e-12, "{p}");
+        }
+    }
+    // The flat is the one segment between the arcs: 1/161 of the parameter range.
+    let (a, b) = (c.eval(M1 as f64 / n), c.eval((M1 + 1) as f64 / n));
+    assert!(a.distance(v(0.0, 0.0, 0.0)) <= 1e-12 && b.distance(v(w, 0.0, 0.0)) <= 1e-12);
+}
+
+#[test]
+fn a_ruled_strip_with_a_narrow_flat_on_a_plane() {
+    // Ruled between the profile at z = 0 and at z = 3: it lies on the plane y = 0 over
+    // x ∈ [0, w], z ∈ [0, 3] and nowhere else (y > 0 off the flat).
+    let w = 0.05;
+    let prof = |z: f64| u_profile(w, move |s, t| v(s, t, z), true);
+    let strip = Surface::ruled(prof(0.0), prof(3.0));
+    let wall = Surface::plane(vec![
+        v(-1.0, 0.0, -1.0),
+        v(1.0, 0.0, -1.0),
+        v(1.0, 0.0, 4.0),
+        v(-1.0, 0.0, 4.0),
+    ])
+    .unwrap();
+    let on_rect = |p: DVec3| {
+        let side = p.x.abs() <= GT || (p.x - w).abs() <= GT;
+        let end = p.z.abs() <= GT || (p.z - 3.0).abs() <= GT;
+        p.y.abs() <= GT
+            && (side || end)
+            && (-GT..=w + GT).contains(&p.x)
+            && (-GT..=3.0 + GT).contains(&p.z)
+    };
+    let left = |p: DVec3| p.x.abs() <= GT && (p.z - 1.5).abs() <= 1.0;
+    let right = |p: DVec3| (p.x - w).abs() <= GT && (p.z - 1.5).abs() <= 1.0;
+    check(&strip, &wall, 1, 2.0 * (w + 3.0), on_rect, &[&left, &right]);
+}
+
+/// The band y ∈ [2, 2 + w] on the cylinder ρ = 1 about the y axis, revolved from a profile
+/// whose flat is x = 1 there (x > 1 elsewhere).
+fn narrow_band(w: f64) -> Surface {
+    let prof = u_profile(w, |s, t| v(1.0 + t, 2.0 + s, 0.0), false);
+    Surface::revolve(prof, DVec3::ZERO, DVec3::Y, TAU).unwrap()
+}
+
+fn on_band_circles(w: f64) -> impl Fn(DVec3) -> bool {
+    move |p: DVec3| {
+        let rho = (p.x * p.x + p.z * p.z).sqrt();
+        (rho - 1.0).abs() <= GT && ((p.y - 2.0).abs() <= GT || (p.y - 2.0 - w).abs() <= GT)
+    }
+}
+
+#[test]
+fn a_revolved_profile_with_a_narrow_flat_on_a_cylinder() {
+    let w = 0.04;
+    let cyl = Surface::cylinder(v(0.0, -1.0, 0.0), DVec3::Y, 1.0, 12.0).unwrap();
+    let low = |p: DVec3| (p.y - 2.0).abs() <= GT;
+    let high = |p: DVec3| (p.y - 2.0 - w).abs() <= GT;
+    check(
+        &narrow_band(w),
+        &cyl,
+        2,
+        4.0 * PI,
+        on_band_circles(w),
+        &[&low, &high],
+    );
+}
+
+#[test]
+#[ignore = "about 2 minutes in debug (4 s in release): run with --ignored"]
+fn a_revolved_profile_with_a_narrow_flat_on_a_revolved_line() {
+    // The cylinder as a surface of revolution: both surfaces are free-form.
+    let w = 0.04;
+    let line = Arc::new(Curve::line(v(1.0, -1.0, 0.0), v(1.0, 6.0, 0.0)).unwrap());
+    let cyl = Surface::revolve(line, DVec3::ZERO, DVec3::Y, TAU).unwrap();
+    let low = |p: DVec3| (p.y - 2.0).abs() <= GT;
+    let high = |p: DVec3| (p.y - 2.0 - w).abs() <= GT;
+    check(
+        &narrow_band(w),
+        &cyl,
+        2,
+        4.0 * PI,
+        on_band_circles(w),
+        &[&low, &high],
+    );
+}
