@@ -148,7 +148,6 @@ fn a_revolved_profile_with_a_narrow_flat_on_a_cylinder() {
 }
 
 #[test]
-#[ignore = "about 2 minutes in debug (4 s in release): run with --ignored"]
 fn a_revolved_profile_with_a_narrow_flat_on_a_revolved_line() {
     // The cylinder as a surface of revolution: both surfaces are free-form.
     let w = 0.04;
