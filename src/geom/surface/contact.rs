@@ -72,11 +72,11 @@ pub(crate) fn tangent_contacts(
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let signed_gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    let tangent = |c: DVec3| {
+    let sine = |c: DVec3| {
         let (ua, ub) = (a.project(c, None), b.project(c, None));
-        unit_normal(a, ua).cross(unit_normal(b, ub)).length() <= PARALLEL
+        unit_normal(a, ua).cross(unit_normal(b, ub)).length()
     };
-    let lows = Lows::new(ma, (&dist, &side), gap, curves, &tangent);
+    let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
     let mut seeds: Vec<(DVec3, f64)> = lows
         .vertices(ma)
         .into_iter()
@@ -282,11 +282,10 @@ pub(crate) fn plane_contacts(
     (seed_tol, chord_tol): (f64, f64),
     tol: f64,
 ) -> Vec<Polyline3> {
-    let gap = 8.0 * seed_tol;
     let side: Vec<f64> = ma.vertices().iter().map(|v| n.dot(*v - p0)).collect();
     let dist: Vec<f64> = side.iter().map(|h| h.abs()).collect();
-    let tangent = |c: DVec3| unit_normal(a, a.project(c, None)).cross(n).length() <= PARALLEL;
-    let lows = Lows::new(ma, (&dist, &side), gap, curves, &tangent);
+    let sine = |c: DVec3| unit_normal(a, a.project(c, None)).cross(n).length();
+    let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
     let dup = beside(a, tol, chord_tol);
     let h = |uv: DVec2| {
         let mut uv = uv;
@@ -417,25 +416,26 @@ fn level(a: &Patch, uv0: DVec2, n: DVec3) -> DVec2 {
 struct Lows<'a> {
     /// Each vertex's distance to the other surface (its mesh, or the plane).
     dist: &'a [f64],
-    /// Seeds are within this distance.
-    gap: f64,
-    /// Whether the surfaces are parallel at a point of a curve found (a contact there).
-    tangent: &'a dyn Fn(DVec3) -> bool,
+    /// The meshes are within this of their surfaces; seeds are within 8 times it.
+    seed_tol: f64,
+    /// The sine of the angle between the surfaces at a point of a curve found (about zero on
+    /// a contact).
+    sine: &'a dyn Fn(DVec3) -> f64,
     /// Whether the triangles round each vertex meet both sides: the other surface crosses them.
     crossed: Vec<bool>,
-    /// The points of the curves found, and whether each is on a contact (`tangent` there,
-    /// asked once).
-    found: Vec<(DVec3, Cell<Option<bool>>)>,
+    /// The points of the curves found, with `sine` there (asked once).
+    found: Vec<(DVec3, Cell<Option<f64>>)>,
 }
 
 impl<'a> Lows<'a> {
     fn new(
         m: &Mesh,
         (dist, side): (&'a [f64], &[f64]),
-        gap: f64,
+        seed_tol: f64,
         curves: &[Polyline3],
-        tangent: &'a dyn Fn(DVec3) -> bool,
+        sine: &'a dyn Fn(DVec3) -> f64,
     ) -> Self {
+        let gap = 8.0 * seed_tol;
         let mut sides = vec![(false, false); m.vertices().len()];
         for t in m.triangles() {
             let t = t.map(|i| i as usize);
@@ -450,8 +450,8 @@ impl<'a> Lows<'a> {
         }
         Lows {
             dist,
-            gap,
-            tangent,
+            seed_tol,
+            sine,
             crossed: sides.into_iter().map(|(p, n)| p && n).collect(),
             found: curves
                 .iter()
@@ -461,26 +461,32 @@ impl<'a> Lows<'a> {
         }
     }
 
-    /// Whether a seed at `p` (of a mesh cell `reach` across) belongs to a curve found: one
-    /// lies within four cells, and either the other surface crosses the seed's cells
-    /// (`crossed`: the seed is that crossing's) or the nearest curve point is on a contact. A
-    /// seed beside a crossing that its cells do not cross is left in: a contact running a few
-    /// cells from a crossing is no part of it.
-    fn claimed(&self, p: DVec3, reach: f64, crossed: bool) -> bool {
-        let r = 4.0 * reach;
+    /// Whether a seed at `p` (of a mesh cell `reach` across, `dist` from the other surface)
+    /// belongs to a curve found: one lies within four cells, and the other surface crosses the
+    /// seed's cells (`crossed`: the seed is that crossing's), or the nearest curve point is on a
+    /// contact, or the crossing there accounts for `dist` (the surfaces part at its angle). A
+    /// seed nearer the other surface than the crossing beside it accounts for, by more than
+    /// the meshes' error, is left in: a contact running a few cells from a crossing.
+    fn claimed(&self, p: DVec3, reach: f64, dist: f64, crossed: bool) -> bool {
         let nearest = self
             .found
             .iter()
             .map(|(q, t)| (q.distance(p), q, t))
-            .filter(|x| x.0 <= r)
+            .filter(|x| x.0 <= 4.0 * reach)
             .min_by(|x, y| x.0.total_cmp(&y.0));
-        nearest.is_some_and(|(_, q, t)| {
-            crossed
-                || t.get().unwrap_or_else(|| {
-                    let on = (self.tangent)(*q);
-                    t.set(Some(on));
-                    on
-                })
+        nearest.is_some_and(|(r, q, t)| {
+            if crossed {
+                return true;
+            }
+            let sine = t.get().unwrap_or_else(|| {
+                let s = (self.sine)(*q);
+                t.set(Some(s));
+                s
+            });
+            // Half the first-order gap, against curving back towards the other surface; the
+            // seed (a vertex, or the midpoint of an edge) and the other mesh are each within
+            // the seed tolerance of their surfaces.
+            !(sine > PARALLEL) || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
         })
     }
 
@@ -488,7 +494,7 @@ impl<'a> Lows<'a> {
     /// (ties to the lower index), not claimed by `curves`: with the longest edge at each.
     fn vertices(&self, m: &Mesh) -> Vec<(usize, f64)> {
         let (va, ta) = (m.vertices(), m.triangles());
-        let (dist, gap) = (self.dist, self.gap);
+        let (dist, gap) = (self.dist, 8.0 * self.seed_tol);
         // One pass over the edges, with no neighbour lists: a vertex stays a candidate while
         // every neighbour is farther (a section of a large mesh has few vertices within the gap).
         let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
@@ -512,7 +518,7 @@ impl<'a> Lows<'a> {
         }
         (0..va.len())
             .filter(|&i| low[i] && has_edge[i])
-            .filter(|&i| !self.claimed(va[i], reach[i], self.crossed[i]))
+            .filter(|&i| !self.claimed(va[i], reach[i], dist[i], self.crossed[i]))
             .map(|i| (i, reach[i]))
             .collect()
     }
@@ -536,7 +542,8 @@ impl<'a> Lows<'a> {
                 let q = 0.5 * (va[i] + va[j]);
                 let d = to_b(q);
                 let crossed = self.crossed[i] || self.crossed[j];
-                if d <= self.gap && d < dist[i].min(dist[j]) && !self.claimed(q, l, crossed) {
+                let near_b = d <= 8.0 * self.seed_tol && d < dist[i].min(dist[j]);
+                if near_b && !self.claimed(q, l, d, crossed) {
                     out.push((q, l));
                 }
             }
