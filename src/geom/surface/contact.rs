@@ -439,7 +439,7 @@ impl<'a> Lows<'a> {
         let mut sides = vec![(false, false); m.vertices().len()];
         for t in m.triangles() {
             let t = t.map(|i| i as usize);
-            if t.iter().all(|&i| !(dist[i] <= gap)) {
+            if !t.iter().any(|&i| dist[i] <= gap) {
                 continue;
             }
             let s = t.map(|i| side[i]);
@@ -486,7 +486,7 @@ impl<'a> Lows<'a> {
             // Half the first-order gap, against curving back towards the other surface; the
             // seed (a vertex, or the midpoint of an edge) and the other mesh are each within
             // the seed tolerance of their surfaces.
-            !(sine > PARALLEL) || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
+            sine.is_nan() || sine <= PARALLEL || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
         })
     }
 
