@@ -5,6 +5,8 @@
 //! atan(d²) between the surfaces: 1e-4 rad for d = 0.01, 9e-4 rad for d = 0.03, both under
 //! 0.06°). Both are straight lines of length 4 from x = 0 to x = 4. The meshes see one change
 //! of side for the two, and the refined seed curve fell on the contact: the crossing was lost.
+//! Farther apart (d = 0.2 to 0.5, crossing at 0.04 to 0.24 rad) the meshes see the crossing,
+//! and the contact a few cells from it was lost instead.
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
@@ -15,45 +17,68 @@ use std::sync::Arc;
 mod surface_support;
 use surface_support::summary;
 
-/// The sheet for root `d`: the profile is one cubic Bézier span with control points evenly
-/// spaced in y (so y is linear in the parameter and z is exactly the cubic f), its Bernstein
-/// coefficients from f and f' at the ends.
+/// The sheet for root `d`, the same at every x.
 fn sheet(d: f64) -> Surface {
-    let f = |y: f64| y * y * (d - y);
-    let df = |y: f64| 2.0 * d * y - 3.0 * y * y;
-    // y = 2t − 1: dz/dt = 2 f'(y).
-    let z = [
-        f(-1.0),
-        f(-1.0) + 2.0 * df(-1.0) / 3.0,
-        f(1.0) - 2.0 * df(1.0) / 3.0,
-        f(1.0),
-    ];
-    let ctrl: Vec<DVec3> = (0..4)
-        .map(|i| DVec3::new(0.0, 2.0 * i as f64 / 3.0 - 1.0, z[i]))
-        .collect();
-    let far: Vec<DVec3> = ctrl.iter().map(|c| *c + DVec3::X * 4.0).collect();
-    let p = Curve::bspline(ctrl, 3, None, None).unwrap();
-    let q = Curve::bspline(far, 3, None, None).unwrap();
-    Surface::ruled(Arc::new(p), Arc::new(q))
+    sheet_between(d, d)
 }
 
-/// The contact (every point within d/4 of y = 0, where the sheet is parallel to the plane)
-/// and the crossing (within d/4 of y = d): open, from x = 0 to x = 4 to 1e-9, length 4 to
-/// 1e-6, every point within 1e-9 of the plane and of the sheet.
-fn check(name: &str, r: &[Polyline3], d: f64) {
+/// The sheet whose root runs from `d0` at x = 0 to `d1` at x = 4: ruled between two profiles,
+/// z = y²(d0 − y) at x = 0 and z = y²(d1 − y) at x = 4, each one cubic Bézier span with
+/// control points evenly spaced in y (so y is linear in the parameter and z is exactly the
+/// cubic), its Bernstein coefficients from z and dz/dy at the ends. A ruling joins the points of
+/// equal y, so the sheet is z = y²(d(x) − y) with d(x) = d0 + (d1 − d0)·x/4: the contact along
+/// y = 0 for every x, the crossing along y = d(x).
+fn sheet_between(d0: f64, d1: f64) -> Surface {
+    let profile = |d: f64, x: f64| {
+        let f = |y: f64| y * y * (d - y);
+        let df = |y: f64| 2.0 * d * y - 3.0 * y * y;
+        // y = 2t − 1: dz/dt = 2 f'(y).
+        let z = [
+            f(-1.0),
+            f(-1.0) + 2.0 * df(-1.0) / 3.0,
+            f(1.0) - 2.0 * df(1.0) / 3.0,
+            f(1.0),
+        ];
+        let ctrl: Vec<DVec3> = (0..4)
+            .map(|i| DVec3::new(x, 2.0 * i as f64 / 3.0 - 1.0, z[i]))
+            .collect();
+        Curve::bspline(ctrl, 3, None, None).unwrap()
+    };
+    Surface::ruled(Arc::new(profile(d0, 0.0)), Arc::new(profile(d1, 4.0)))
+}
+
+/// The root d(x) of [`sheet_between`].
+fn root(d0: f64, d1: f64, x: f64) -> f64 {
+    d0 + (d1 - d0) * x / 4.0
+}
+
+/// On [`sheet_between`]`(d0, d1)`, with d = d(x) at each point: the contact (every point
+/// within d/4 of y = 0, where the sheet is parallel to the plane) and the crossing (within d/4
+/// of y = d): open, from x = 0 to x = 4 to 1e-9, lengths 4 and √(16 + (d1 − d0)²) to 1e-6,
+/// every point within 1e-9 of the plane and of the sheet.
+fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     assert_eq!(r.len(), 2, "{name}: {}", summary(r));
-    let f = |y: f64| y * y * (d - y);
-    let on_line = |c: &Polyline3, y0: f64| c.points.iter().all(|p| (p.y - y0).abs() <= 0.25 * d);
+    let d = |x: f64| root(d0, d1, x);
+    let f = |x: f64, y: f64| y * y * (d(x) - y);
+    let on_line = |c: &Polyline3, k: f64| {
+        c.points
+            .iter()
+            .all(|p| (p.y - k * d(p.x)).abs() <= 0.25 * d(p.x))
+    };
     let contact = r.iter().find(|c| on_line(c, 0.0));
-    let crossing = r.iter().find(|c| on_line(c, d));
+    let crossing = r.iter().find(|c| on_line(c, 1.0));
     let (Some(contact), Some(crossing)) = (contact, crossing) else {
         panic!("{name}: {}", summary(r));
     };
-    for c in [contact, crossing] {
+    let slant = (16.0 + (d1 - d0) * (d1 - d0)).sqrt();
+    for (c, len) in [(contact, 4.0), (crossing, slant)] {
         assert!(!c.closed, "{name}: {}", summary(r));
         for p in &c.points {
             assert!(p.z.abs() <= 1e-9, "{name}: {p} off the plane");
-            assert!((p.z - f(p.y)).abs() <= 1e-9, "{name}: {p} off the sheet");
+            assert!(
+                (p.z - f(p.x, p.y)).abs() <= 1e-9,
+                "{name}: {p} off the sheet"
+            );
             assert!((-1e-9..=4.0 + 1e-9).contains(&p.x), "{name}: {p}");
         }
         let (a, b) = (c.points[0].x, c.points[c.points.len() - 1].x);
@@ -63,12 +88,12 @@ fn check(name: &str, r: &[Polyline3], d: f64) {
             "{name}: {}",
             summary(r)
         );
-        assert!((c.length() - 4.0).abs() <= 1e-6, "{name}: {}", summary(r));
+        assert!((c.length() - len).abs() <= 1e-6, "{name}: {}", summary(r));
     }
-    // Tangent along the contact: the sheet's slope f'(y) = 2dy − 3y² vanishes there.
+    // Tangent along the contact: the sheet's slope ∂z/∂y = 2dy − 3y² vanishes there.
     for p in &contact.points {
         assert!(
-            (2.0 * d * p.y - 3.0 * p.y * p.y).abs() <= 1e-6,
+            (2.0 * d(p.x) * p.y - 3.0 * p.y * p.y).abs() <= 1e-6,
             "{name}: {p}"
         );
     }
@@ -77,45 +102,62 @@ fn check(name: &str, r: &[Polyline3], d: f64) {
 /// One way of asking for the intersection.
 type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
 
-#[test]
-fn a_crossing_beside_a_contact_line_comes_back_with_it() {
-    let plate = Surface::plane(vec![
+/// The plate z = 0 over x in [−1, 5], y in [−2, 2]: wider than the sheet both ways.
+fn plate() -> Surface {
+    Surface::plane(vec![
         DVec3::new(-1.0, -2.0, 0.0),
         DVec3::new(5.0, -2.0, 0.0),
         DVec3::new(5.0, 2.0, 0.0),
         DVec3::new(-1.0, 2.0, 0.0),
     ])
-    .unwrap();
-    for d in [0.01, 0.03] {
-        let s = sheet(d);
-        let runs: [(&str, Run); 3] = [
-            (
-                "section",
-                Box::new(|| {
-                    surface_section_seeded(&s, DVec3::ZERO, DVec3::Z, 1e-2, 1e-6, 1e-9).unwrap()
-                }),
-            ),
-            (
-                "sheet ∩ plate",
-                Box::new(|| surface_intersect_seeded(&s, &plate, 1e-2, 1e-6, 1e-9).unwrap()),
-            ),
-            (
-                "plate ∩ sheet",
-                Box::new(|| surface_intersect_seeded(&plate, &s, 1e-2, 1e-6, 1e-9).unwrap()),
-            ),
-        ];
-        for (name, run) in &runs {
-            let r = run();
-            check(&format!("{name} d = {d}"), &r, d);
-            for _ in 0..2 {
-                let again = run();
-                assert_eq!(again.len(), r.len());
-                assert!(again
-                    .iter()
-                    .zip(&r)
-                    .all(|(c, e)| c.points == e.points && c.closed == e.closed));
-            }
+    .unwrap()
+}
+
+/// Both curves of the sheet for root `d` against the plane z = 0, the seeding meshes made
+/// within `seed` and the curves densified within `chord`: in section and in both orders of
+/// intersect, each run three times for the same bits.
+fn both_curves_come_back(d: f64, seed: f64, chord: f64) {
+    both_curves_come_back_between((d, d), seed, chord);
+}
+
+/// [`both_curves_come_back`] on [`sheet_between`]`(d0, d1)`.
+fn both_curves_come_back_between((d0, d1): (f64, f64), seed: f64, chord: f64) {
+    let (s, plate) = (sheet_between(d0, d1), plate());
+    let runs: [(&str, Run); 3] = [
+        (
+            "section",
+            Box::new(|| {
+                surface_section_seeded(&s, DVec3::ZERO, DVec3::Z, seed, chord, 1e-9).unwrap()
+            }),
+        ),
+        (
+            "sheet ∩ plate",
+            Box::new(|| surface_intersect_seeded(&s, &plate, seed, chord, 1e-9).unwrap()),
+        ),
+        (
+            "plate ∩ sheet",
+            Box::new(|| surface_intersect_seeded(&plate, &s, seed, chord, 1e-9).unwrap()),
+        ),
+    ];
+    for (name, run) in &runs {
+        let r = run();
+        let name = format!("{name} d = {d0}..{d1} seed {seed} chord {chord}");
+        check_between(&name, &r, (d0, d1));
+        for _ in 0..2 {
+            let again = run();
+            assert_eq!(again.len(), r.len());
+            assert!(again
+                .iter()
+                .zip(&r)
+                .all(|(c, e)| c.points == e.points && c.closed == e.closed));
         }
+    }
+}
+
+#[test]
+fn a_crossing_beside_a_contact_line_comes_back_with_it() {
+    for d in [0.01, 0.03] {
+        both_curves_come_back(d, 1e-2, 1e-6);
     }
 }
 
@@ -142,5 +184,20 @@ fn a_crossing_beyond_the_other_surfaces_edge_is_not_reported() {
             assert!((p.z - p.y * p.y * (d - p.y)).abs() <= 1e-9, "{p}");
         }
         assert!((c.length() - 4.0).abs() <= 1e-6, "{}", summary(&r));
+    }
+}
+
+/// The reverse: the meshes see the crossing, and the contact a few cells from it was lost
+/// (the search for contacts passed over every seed within four cells of a curve found). On
+/// `b48c411` only the crossing came back in all four cases.
+#[test]
+fn a_contact_beside_a_crossing_comes_back_with_it() {
+    for (d, seed, chord) in [
+        (0.2, 1e-3, 1e-3),
+        (0.2, 1e-3, 1e-6),
+        (0.3, 1e-3, 1e-3),
+        (0.5, 1e-2, 1e-2),
+    ] {
+        both_curves_come_back(d, seed, chord);
     }
 }

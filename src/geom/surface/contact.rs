@@ -48,34 +48,49 @@ pub(crate) fn tangent_contacts(
     // Two inscribed meshes of touching surfaces are apart by a few chord tolerances at most.
     let gap = 8.0 * seed_tol;
     let bvh = mb.bvh();
-    // Distance to mb, only within the gap (a box query rejects the far vertices quickly).
-    let to_b = |p: DVec3| {
-        let mut best = f64::INFINITY;
+    // Distance to mb, only within the gap (a box query rejects the far vertices quickly),
+    // and the side of mb it lies on (of its nearest triangle; 0 beyond the gap).
+    let to_b_side = |p: DVec3| {
+        let (mut best, mut side) = (f64::INFINITY, 0.0);
         let b = Aabb {
             min: p - DVec3::splat(gap),
             max: p + DVec3::splat(gap),
         };
         bvh.query_box(&b, |t| {
             let [x, y, z] = mb.corners_of(t as usize);
-            best = best.min(closest_on_triangle(p, x, y, z).distance(p));
+            let c = closest_on_triangle(p, x, y, z);
+            let d = c.distance(p);
+            if d < best {
+                best = d;
+                side = (p - c).dot((y - x).cross(z - x)).signum();
+            }
         });
-        best
+        (best, side)
     };
-    let dist: Vec<f64> = va.iter().map(|&p| to_b(p)).collect();
+    let to_b = |p: DVec3| to_b_side(p).0;
+    let (dist, side): (Vec<f64>, Vec<f64>) = va.iter().map(|&p| to_b_side(p)).unzip();
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let signed_gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    let mut seeds: Vec<(DVec3, f64)> = low_vertices(ma, &dist, gap, curves)
+    let sine = |c: DVec3| {
+        let (ua, ub) = (a.project(c, None), b.project(c, None));
+        unit_normal(a, ua).cross(unit_normal(b, ub)).length()
+    };
+    let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
+    let mut seeds: Vec<(DVec3, f64)> = lows
+        .vertices(ma)
         .into_iter()
         .map(|(i, reach)| (va[i], reach))
         .collect();
-    seeds.extend(low_edges(ma, &dist, gap, &to_b, curves));
+    seeds.extend(lows.edges(ma, &to_b));
+    let dup = beside(a, tol, chord_tol);
     for (q, reach) in seeds {
         if near_any(q, &out, 4.0 * reach) || shared(q) {
             continue;
         }
         if let Some((uv, p)) = touch(a, b, q, tol) {
-            if near_any(p, &out, 4.0 * reach) || shared(p) {
+            // A seed beside a curve found (let through by `Lows`) can lead onto that curve.
+            if near_any(p, &out, 4.0 * reach) || near_any(p, curves, dup) || shared(p) {
                 continue;
             }
             out.push(
@@ -196,8 +211,7 @@ fn regroup(
             kept.push(c);
         }
     }
-    // A point within `tol` of both surfaces beside a contact can be √(tol·R) off it.
-    let near = 2.0 * chord_tol.max(tol) + 4.0 * (tol * a.scale()).sqrt();
+    let near = beside(a, tol, chord_tol);
     let mut traced: Vec<Polyline3> = Vec::new();
     let mut steps: Vec<f64> = Vec::new();
     for (c, uv) in &touching {
@@ -234,6 +248,12 @@ fn regroup(
     kept
 }
 
+/// How near a curve a point within `tol` of both surfaces is taken for a point of that curve: a
+/// point within `tol` of both surfaces beside a contact can be √(tol·R) off it.
+fn beside(a: &Patch, tol: f64, chord_tol: f64) -> f64 {
+    2.0 * chord_tol.max(tol) + 4.0 * (tol * a.scale()).sqrt()
+}
+
 /// Whether `p` lies within `r` of one of `curves` (points, or segments of polylines).
 pub(super) fn near_any(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
     curves.iter().any(|c| {
@@ -262,8 +282,11 @@ pub(crate) fn plane_contacts(
     (seed_tol, chord_tol): (f64, f64),
     tol: f64,
 ) -> Vec<Polyline3> {
-    let gap = 8.0 * seed_tol;
-    let dist: Vec<f64> = ma.vertices().iter().map(|v| n.dot(*v - p0).abs()).collect();
+    let side: Vec<f64> = ma.vertices().iter().map(|v| n.dot(*v - p0)).collect();
+    let dist: Vec<f64> = side.iter().map(|h| h.abs()).collect();
+    let sine = |c: DVec3| unit_normal(a, a.project(c, None)).cross(n).length();
+    let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
+    let dup = beside(a, tol, chord_tol);
     let h = |uv: DVec2| {
         let mut uv = uv;
         a.normalise(&mut uv);
@@ -271,13 +294,17 @@ pub(crate) fn plane_contacts(
     };
     let gap_at = |uv: DVec2| plane_gap(a, (p0, n), uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    for (i, reach) in low_vertices(ma, &dist, gap, curves) {
+    for (i, reach) in lows.vertices(ma) {
         if near_any(ma.vertices()[i], &out, 4.0 * reach) {
             continue;
         }
         let mut uv = nelder_mead(&|uv| h(uv).abs(), a.project(ma.vertices()[i], None), 1e-3);
         a.normalise(&mut uv);
         if h(uv).abs() <= tol {
+            // A seed beside a section curve (let through by `Lows`) can lead onto that curve.
+            if near_any(a.eval(uv), curves, dup) {
+                continue;
+            }
             if let Some(c) = contact_curve(a, &gap_at, uv, reach, tol, chord_tol) {
                 out.push(c);
                 continue;
@@ -384,75 +411,145 @@ fn level(a: &Patch, uv0: DVec2, n: DVec3) -> DVec2 {
     uv0
 }
 
-/// The vertices of `m` whose `dist` is within `gap` and lowest among their neighbours (ties to
-/// the lower index), away from every point of `curves`: with the longest edge at each.
-fn low_vertices(m: &Mesh, dist: &[f64], gap: f64, curves: &[Polyline3]) -> Vec<(usize, f64)> {
-    let (va, ta) = (m.vertices(), m.triangles());
-    // One pass over the edges, with no neighbour lists: a vertex stays a candidate while every
-    // neighbour is farther (a section of a large mesh has few vertices within the gap).
-    let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
-    let mut has_edge = vec![false; va.len()];
-    let mut reach = vec![0.0f64; va.len()];
-    for t in ta {
-        for k in 0..3 {
-            let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
-            if !(dist[i] <= gap || dist[j] <= gap) {
+/// The seeds of the contact search on a mesh: its vertices (and edge midpoints) nearest the
+/// other surface, away from the curves already found.
+struct Lows<'a> {
+    /// Each vertex's distance to the other surface (its mesh, or the plane).
+    dist: &'a [f64],
+    /// The meshes are within this of their surfaces; seeds are within 8 times it.
+    seed_tol: f64,
+    /// The sine of the angle between the surfaces at a point of a curve found (about zero on
+    /// a contact).
+    sine: &'a dyn Fn(DVec3) -> f64,
+    /// Whether the triangles round each vertex meet both sides: the other surface crosses them.
+    crossed: Vec<bool>,
+    /// The points of the curves found, with `sine` there (asked once).
+    found: Vec<(DVec3, Cell<Option<f64>>)>,
+}
+
+impl<'a> Lows<'a> {
+    fn new(
+        m: &Mesh,
+        (dist, side): (&'a [f64], &[f64]),
+        seed_tol: f64,
+        curves: &[Polyline3],
+        sine: &'a dyn Fn(DVec3) -> f64,
+    ) -> Self {
+        let gap = 8.0 * seed_tol;
+        let mut sides = vec![(false, false); m.vertices().len()];
+        for t in m.triangles() {
+            let t = t.map(|i| i as usize);
+            if !t.iter().any(|&i| dist[i] <= gap) {
                 continue;
             }
-            let l = va[i].distance(va[j]);
-            for (x, y) in [(i, j), (j, i)] {
-                has_edge[x] = true;
-                reach[x] = reach[x].max(l);
-                if !(dist[x] < dist[y] || (dist[x] == dist[y] && x < y)) {
-                    low[x] = false;
+            let s = t.map(|i| side[i]);
+            let met = (s.iter().any(|x| *x > 0.0), s.iter().any(|x| *x < 0.0));
+            for i in t {
+                sides[i] = (sides[i].0 || met.0, sides[i].1 || met.1);
+            }
+        }
+        Lows {
+            dist,
+            seed_tol,
+            sine,
+            crossed: sides.into_iter().map(|(p, n)| p && n).collect(),
+            found: curves
+                .iter()
+                .flat_map(|c| c.points.iter())
+                .map(|p| (*p, Cell::new(None)))
+                .collect(),
+        }
+    }
+
+    /// Whether a seed at `p` (of a mesh cell `reach` across, `dist` from the other surface)
+    /// belongs to a curve found: one lies within four cells, and the other surface crosses the
+    /// seed's cells (`crossed`: the seed is that crossing's), or the nearest curve point is on a
+    /// contact, or the crossing there accounts for `dist` (the surfaces part at its angle). A
+    /// seed nearer the other surface than the crossing beside it accounts for, by more than
+    /// the meshes' error, is left in: a contact running a few cells from a crossing.
+    fn claimed(&self, p: DVec3, reach: f64, dist: f64, crossed: bool) -> bool {
+        let nearest = self
+            .found
+            .iter()
+            .map(|(q, t)| (q.distance(p), q, t))
+            .filter(|x| x.0 <= 4.0 * reach)
+            .min_by(|x, y| x.0.total_cmp(&y.0));
+        nearest.is_some_and(|(r, q, t)| {
+            if crossed {
+                return true;
+            }
+            let sine = t.get().unwrap_or_else(|| {
+                let s = (self.sine)(*q);
+                t.set(Some(s));
+                s
+            });
+            // Half the first-order gap, against curving back towards the other surface; the
+            // seed (a vertex, or the midpoint of an edge) and the other mesh are each within
+            // the seed tolerance of their surfaces.
+            sine.is_nan() || sine <= PARALLEL || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
+        })
+    }
+
+    /// The vertices of `m` whose `dist` is within the gap and lowest among their neighbours
+    /// (ties to the lower index), not claimed by `curves`: with the longest edge at each.
+    fn vertices(&self, m: &Mesh) -> Vec<(usize, f64)> {
+        let (va, ta) = (m.vertices(), m.triangles());
+        let (dist, gap) = (self.dist, 8.0 * self.seed_tol);
+        // One pass over the edges, with no neighbour lists: a vertex stays a candidate while
+        // every neighbour is farther (a section of a large mesh has few vertices within the gap).
+        let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
+        let mut has_edge = vec![false; va.len()];
+        let mut reach = vec![0.0f64; va.len()];
+        for t in ta {
+            for k in 0..3 {
+                let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
+                if !(dist[i] <= gap || dist[j] <= gap) {
+                    continue;
+                }
+                let l = va[i].distance(va[j]);
+                for (x, y) in [(i, j), (j, i)] {
+                    has_edge[x] = true;
+                    reach[x] = reach[x].max(l);
+                    if !(dist[x] < dist[y] || (dist[x] == dist[y] && x < y)) {
+                        low[x] = false;
+                    }
                 }
             }
         }
+        (0..va.len())
+            .filter(|&i| low[i] && has_edge[i])
+            .filter(|&i| !self.claimed(va[i], reach[i], dist[i], self.crossed[i]))
+            .map(|i| (i, reach[i]))
+            .collect()
     }
-    (0..va.len())
-        .filter(|&i| low[i] && has_edge[i])
-        .filter(|&i| !near_points(va[i], curves, 4.0 * reach[i]))
-        .map(|i| (i, reach[i]))
-        .collect()
-}
 
-/// Whether a point of `curves` lies within `r` of `p` (a seed there belongs to a curve found).
-fn near_points(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
-    curves
-        .iter()
-        .flat_map(|c| c.points.iter())
-        .any(|q| q.distance(p) <= r)
-}
-
-/// The midpoints of edges of `m` that come nearer the other surface (`to_b`, within `gap`) than
-/// both their ends, away from `curves`, with the edge's length: a long edge over a narrow
-/// surface (the rulings of a ruled cylinder over a plate narrower than they are long) has no
-/// vertex near the contact.
-fn low_edges(
-    m: &Mesh,
-    dist: &[f64],
-    gap: f64,
-    to_b: &dyn Fn(DVec3) -> f64,
-    curves: &[Polyline3],
-) -> Vec<(DVec3, f64)> {
-    let va = m.vertices();
-    let mut out: Vec<(DVec3, f64)> = Vec::new();
-    let mut seen = std::collections::HashSet::new();
-    for t in m.triangles() {
-        for k in 0..3 {
-            let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
-            if !seen.insert((i.min(j), i.max(j))) {
-                continue;
-            }
-            let l = va[i].distance(va[j]);
-            let q = 0.5 * (va[i] + va[j]);
-            let d = to_b(q);
-            if d <= gap && d < dist[i].min(dist[j]) && !near_points(q, curves, 4.0 * l) {
-                out.push((q, l));
+    /// The midpoints of edges of `m` that come nearer the other surface (`to_b`, within the
+    /// gap) than both their ends, not claimed by `curves`, with the edge's length: a long edge
+    /// over a narrow surface (the rulings of a ruled cylinder over a plate narrower than they
+    /// are long) has no vertex near the contact.
+    fn edges(&self, m: &Mesh, to_b: &dyn Fn(DVec3) -> f64) -> Vec<(DVec3, f64)> {
+        let va = m.vertices();
+        let dist = self.dist;
+        let mut out: Vec<(DVec3, f64)> = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        for t in m.triangles() {
+            for k in 0..3 {
+                let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
+                if !seen.insert((i.min(j), i.max(j))) {
+                    continue;
+                }
+                let l = va[i].distance(va[j]);
+                let q = 0.5 * (va[i] + va[j]);
+                let d = to_b(q);
+                let crossed = self.crossed[i] || self.crossed[j];
+                let near_b = d <= 8.0 * self.seed_tol && d < dist[i].min(dist[j]);
+                if near_b && !self.claimed(q, l, d, crossed) {
+                    out.push((q, l));
+                }
             }
         }
+        out
     }
-    out
 }
 
 /// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the
