@@ -5,38 +5,19 @@
 //! form (the arc starts at y = 2, at x = 2).
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::surface::Surface;
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_4, PI, TAU};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::check_loops;
+use surface_support::check_loops_reaching as check;
 
-const CT: f64 = 1e-6;
 const GT: f64 = 1e-9;
 const R: f64 = 10.0;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
-}
-
-/// Both orders: `loops` closed loops of total length `length` (to 1e-6), every point accepted
-/// by `on`, each edge in `reach` met by some point (to 1e-9); three runs give the same bits.
-fn check(
-    a: &Surface,
-    b: &Surface,
-    loops: usize,
-    length: f64,
-    on: impl Fn(DVec3) -> bool,
-    reach: &[&dyn Fn(DVec3) -> bool],
-) {
-    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, CT, GT).unwrap();
-    for r in check_loops(meet, a, b, loops, length, on) {
-        for (k, e) in reach.iter().enumerate() {
-            assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
-        }
-    }
 }
 
 /// In the xy plane: x = 1 for y in [0, 2] (two pieces, so the junction is not at a grid node of

@@ -6,15 +6,14 @@
 //! leave the flat tangentially, so the edges are also the tangential-parting case.
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::surface::Surface;
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_3, PI, TAU};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::check_loops;
+use surface_support::check_loops_reaching as check;
 
-const CT: f64 = 1e-6;
 const GT: f64 = 1e-9;
 /// The arcs' radius.
 const R: f64 = 2.0;
@@ -25,24 +24,6 @@ const M2: usize = 90;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
-}
-
-/// Both orders: `loops` closed loops of total length `length` (to 1e-6), every point accepted
-/// by `on`, each edge in `reach` met by some point (to 1e-9); three runs give the same bits.
-fn check(
-    a: &Surface,
-    b: &Surface,
-    loops: usize,
-    length: f64,
-    on: impl Fn(DVec3) -> bool,
-    reach: &[&dyn Fn(DVec3) -> bool],
-) {
-    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, CT, GT).unwrap();
-    for r in check_loops(meet, a, b, loops, length, on) {
-        for (k, e) in reach.iter().enumerate() {
-            assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
-        }
-    }
 }
 
 /// A profile in local coordinates (s along the flat, t away from it): an arc of radius R
@@ -131,20 +112,26 @@ fn on_band_circles(w: f64) -> impl Fn(DVec3) -> bool {
     }
 }
 
+/// The band's two edge circles, both orders, against a cylinder ρ = 1 about the y axis.
+fn check_band_on(w: f64, cyl: &Surface) {
+    let low = |p: DVec3| (p.y - 2.0).abs() <= GT;
+    let high = |p: DVec3| (p.y - 2.0 - w).abs() <= GT;
+    let reach: [&dyn Fn(DVec3) -> bool; 2] = [&low, &high];
+    check(
+        &narrow_band(w),
+        cyl,
+        2,
+        4.0 * PI,
+        on_band_circles(w),
+        &reach,
+    );
+}
+
 #[test]
 fn a_revolved_profile_with_a_narrow_flat_on_a_cylinder() {
     let w = 0.04;
     let cyl = Surface::cylinder(v(0.0, -1.0, 0.0), DVec3::Y, 1.0, 12.0).unwrap();
-    let low = |p: DVec3| (p.y - 2.0).abs() <= GT;
-    let high = |p: DVec3| (p.y - 2.0 - w).abs() <= GT;
-    check(
-        &narrow_band(w),
-        &cyl,
-        2,
-        4.0 * PI,
-        on_band_circles(w),
-        &[&low, &high],
-    );
+    check_band_on(w, &cyl);
 }
 
 #[test]
@@ -153,14 +140,5 @@ fn a_revolved_profile_with_a_narrow_flat_on_a_revolved_line() {
     let w = 0.04;
     let line = Arc::new(Curve::line(v(1.0, -1.0, 0.0), v(1.0, 6.0, 0.0)).unwrap());
     let cyl = Surface::revolve(line, DVec3::ZERO, DVec3::Y, TAU).unwrap();
-    let low = |p: DVec3| (p.y - 2.0).abs() <= GT;
-    let high = |p: DVec3| (p.y - 2.0 - w).abs() <= GT;
-    check(
-        &narrow_band(w),
-        &cyl,
-        2,
-        4.0 * PI,
-        on_band_circles(w),
-        &[&low, &high],
-    );
+    check_band_on(w, &cyl);
 }

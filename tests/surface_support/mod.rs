@@ -6,7 +6,7 @@
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::Surface;
+use lispcad::geom::surface::{surface_intersect_tol, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::PI;
 use std::process::Command;
@@ -84,6 +84,24 @@ pub fn check_loops(
             r
         })
         .collect()
+}
+
+/// `check_loops` of `surface_intersect_tol` at CHORDTOL 1e-6 and GEOMTOL 1e-9, and each edge in
+/// `reach` met by some point of each order's result.
+pub fn check_loops_reaching(
+    a: &Surface,
+    b: &Surface,
+    loops: usize,
+    length: f64,
+    on: impl Fn(DVec3) -> bool,
+    reach: &[&dyn Fn(DVec3) -> bool],
+) {
+    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
+    for r in check_loops(meet, a, b, loops, length, on) {
+        for (k, e) in reach.iter().enumerate() {
+            assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
+        }
+    }
 }
 
 /// What `lispcad eval EXPR` prints, trimmed; the command must succeed.
