@@ -369,11 +369,17 @@ impl Tracer<'_, '_> {
             .any(|&(x, y)| self.on(uv + DVec2::new(x, y) * d))
     }
 
+    /// Line `i` of direction `k`, the last one taken back to the first across a seam.
+    fn wrap(&self, k: usize, i: usize) -> usize {
+        if self.periodic[k] {
+            i % (self.lines[k].len() - 1)
+        } else {
+            i
+        }
+    }
+
     fn idx(&self, i: usize, j: usize) -> usize {
-        let [nu, nv] = self.cells();
-        let i = if self.periodic[0] { i % nu } else { i };
-        let j = if self.periodic[1] { j % nv } else { j };
-        j * (nu + 1) + i
+        self.wrap(1, j) * self.lines[0].len() + self.wrap(0, i)
     }
 
     fn node(&self, i: usize, j: usize) -> bool {
@@ -419,9 +425,7 @@ impl Tracer<'_, '_> {
     }
 
     fn norm_key(&self, k: Key) -> Key {
-        let [nu, nv] = self.cells();
-        let w0 = |i: usize| if self.periodic[0] { i % nu } else { i };
-        let w1 = |j: usize| if self.periodic[1] { j % nv } else { j };
+        let (w0, w1) = (|i| self.wrap(0, i), |j| self.wrap(1, j));
         match k {
             Key::Node(i, j) => Key::Node(w0(i), w1(j)),
             Key::H(i, j) => Key::H(i, w1(j)),

@@ -45,8 +45,7 @@ pub(crate) fn tangent_contacts(
     if va.is_empty() || mb.is_empty() {
         return Vec::new();
     }
-    // Two inscribed meshes of touching surfaces are apart by a few chord tolerances at most.
-    let gap = 8.0 * seed_tol;
+    let gap = seed_gap(seed_tol);
     let bvh = mb.bvh();
     // Distance to mb, only within the gap (a box query rejects the far vertices quickly),
     // and the side of mb it lies on (of its nearest triangle; 0 beyond the gap).
@@ -238,7 +237,7 @@ fn regroup(
     for (c, step) in traced.iter().zip(steps) {
         let scan = line::Scan {
             step,
-            apart: 8.0 * seed_tol,
+            apart: seed_gap(seed_tol),
             dup: near,
         };
         let found = line::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
@@ -246,6 +245,12 @@ fn regroup(
     }
     kept.extend(traced);
     kept
+}
+
+/// How far apart two meshes made within `seed_tol` of touching surfaces can be: inscribed, they
+/// are apart by a few chord tolerances at most. Seeds of a contact lie within it.
+fn seed_gap(seed_tol: f64) -> f64 {
+    8.0 * seed_tol
 }
 
 /// How near a curve a point within `tol` of both surfaces is taken for a point of that curve: a
@@ -435,7 +440,7 @@ impl<'a> Lows<'a> {
         curves: &[Polyline3],
         sine: &'a dyn Fn(DVec3) -> f64,
     ) -> Self {
-        let gap = 8.0 * seed_tol;
+        let gap = seed_gap(seed_tol);
         let mut sides = vec![(false, false); m.vertices().len()];
         for t in m.triangles() {
             let t = t.map(|i| i as usize);
@@ -494,7 +499,7 @@ impl<'a> Lows<'a> {
     /// (ties to the lower index), not claimed by `curves`: with the longest edge at each.
     fn vertices(&self, m: &Mesh) -> Vec<(usize, f64)> {
         let (va, ta) = (m.vertices(), m.triangles());
-        let (dist, gap) = (self.dist, 8.0 * self.seed_tol);
+        let (dist, gap) = (self.dist, seed_gap(self.seed_tol));
         // One pass over the edges, with no neighbour lists: a vertex stays a candidate while
         // every neighbour is farther (a section of a large mesh has few vertices within the gap).
         let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
@@ -542,7 +547,7 @@ impl<'a> Lows<'a> {
                 let q = 0.5 * (va[i] + va[j]);
                 let d = to_b(q);
                 let crossed = self.crossed[i] || self.crossed[j];
-                let near_b = d <= 8.0 * self.seed_tol && d < dist[i].min(dist[j]);
+                let near_b = d <= seed_gap(self.seed_tol) && d < dist[i].min(dist[j]);
                 if near_b && !self.claimed(q, l, d, crossed) {
                     out.push((q, l));
                 }
