@@ -44,6 +44,14 @@ mod startup {
 
     pub struct Arena<A>(pub A);
 
+    /// Before the first allocation from the inner allocator (mimalloc): see `mimalloc_start`.
+    /// Frees and reallocations outside the buffer only ever see its pointers, so it has started.
+    #[inline]
+    fn inner_ready() {
+        #[cfg(lazy_mimalloc)]
+        crate::mimalloc_start::ensure();
+    }
+
     fn base() -> usize {
         BUFFER.0.get() as usize
     }
@@ -71,12 +79,18 @@ mod startup {
     unsafe impl<A: GlobalAlloc> GlobalAlloc for Arena<A> {
         #[inline]
         unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            bump(layout).unwrap_or_else(|| self.0.alloc(layout))
+            bump(layout).unwrap_or_else(|| {
+                inner_ready();
+                self.0.alloc(layout)
+            })
         }
 
         #[inline]
         unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-            bump(layout).unwrap_or_else(|| self.0.alloc_zeroed(layout))
+            bump(layout).unwrap_or_else(|| {
+                inner_ready();
+                self.0.alloc_zeroed(layout)
+            })
         }
 
         #[inline]
@@ -128,8 +142,8 @@ mod startup {
 // With such a variable nothing changes: mimalloc reads it, and MIMALLOC_SHOW_STATS still
 // prints at exit.
 //
-// Runs at priority 100, before mimalloc's own constructor (101) reads the options; the C
-// library has set `environ` before running any constructor. Option numbers are mimalloc v3's `mimalloc.h` (libmimalloc-sys does not export them).
+// Runs before mimalloc starts (see `mimalloc_start` below); `environ` is the C library's by
+// then. Option numbers are mimalloc v3's `mimalloc.h` (libmimalloc-sys does not export them).
 #[cfg(target_os = "linux")]
 extern "C" {
     fn mi_option_set(option: i32, value: std::ffi::c_long);
@@ -148,7 +162,7 @@ const MI_OPTION_LAST: i32 = 47;
 #[cfg(target_os = "linux")]
 extern "C" fn mimalloc_options() {
     // SAFETY: `environ` is the C library's NULL-terminated array of NUL-terminated strings,
-    // not modified while constructors run; the option calls write integers into mimalloc's
+    // not modified meanwhile (one thread); the option calls write integers into mimalloc's
     // option table, before mimalloc has started.
     unsafe {
         mi_option_set_default(MI_OPTION_ARENA_RESERVE, 64 << 10);
@@ -170,10 +184,91 @@ extern "C" fn mimalloc_options() {
     }
 }
 
-#[cfg(target_os = "linux")]
+// Elsewhere (another target, or mimalloc built with its constructor) the options are set by a
+// constructor of priority 100, before mimalloc's own (101) reads them.
+#[cfg(all(target_os = "linux", not(lazy_mimalloc)))]
 #[used]
 #[link_section = ".init_array.00100"]
 static MIMALLOC_OPTIONS: extern "C" fn() = mimalloc_options;
+
+// mimalloc's own start (its constructor) cost an empty script, which never allocates past the
+// start-up buffer, 4 `cpuid`s (each a trap to the hypervisor on a VM, ~8 µs here), 10 system
+// calls (`/proc` and `/sys` reads, `sysinfo`, a 2.3 MB page map, `getrandom`) and 8 page
+// faults. For this target it is built without that constructor (MI_PRIM_HAS_PROCESS_ATTACH
+// in .cargo/config.toml; build.rs sets `lazy_mimalloc` only when that flag reaches
+// mimalloc's C build) and started here instead, the same calls in the same order, on the
+// first allocation that goes to it.
+//
+// mimalloc must start on the main thread (it takes the starting thread's heap for its main
+// one). The first allocation past the buffer may come from a thread, so every thread creation
+// (`pthread_create`, wrapped at link time by build.rs) starts it first: the first thread is
+// created by the main thread, and once threads exist mimalloc has started.
+#[cfg(lazy_mimalloc)]
+mod mimalloc_start {
+    use std::ffi::{c_int, c_void};
+    use std::sync::Once;
+
+    extern "C" {
+        fn _mi_auto_process_init();
+        fn _mi_auto_process_done();
+        static _mi_process_is_initialized: bool;
+        fn __real_pthread_create(
+            thread: *mut libc::pthread_t,
+            attr: *const libc::pthread_attr_t,
+            start: extern "C" fn(*mut c_void) -> *mut c_void,
+            arg: *mut c_void,
+        ) -> c_int;
+    }
+
+    static STARTED: Once = Once::new();
+
+    /// Starts mimalloc unless it has started; one load when it has.
+    #[inline]
+    pub fn ensure() {
+        STARTED.call_once(start);
+    }
+
+    #[cold]
+    fn start() {
+        // SAFETY: called once, before any other mimalloc call, on the main thread (see above);
+        // neither call allocates through the Rust allocator. A mimalloc that did run its
+        // constructor has started already, and reads its options itself.
+        unsafe {
+            if !_mi_process_is_initialized {
+                super::mimalloc_options();
+                _mi_auto_process_init();
+            }
+        }
+    }
+
+    /// What mimalloc's destructor did at exit: statistics and clean-up when a MIMALLOC_
+    /// variable asks for them (otherwise it returns at once); nothing when it never started.
+    extern "C" fn done() {
+        if STARTED.is_completed() {
+            // SAFETY: mimalloc has started; this runs once, at exit.
+            unsafe { _mi_auto_process_done() }
+        }
+    }
+
+    #[used]
+    #[link_section = ".fini_array"]
+    static DONE: extern "C" fn() = done;
+
+    /// `pthread_create`, with mimalloc started first (`--wrap=pthread_create`).
+    ///
+    /// # Safety
+    /// As `pthread_create`.
+    #[no_mangle]
+    pub unsafe extern "C" fn __wrap_pthread_create(
+        thread: *mut libc::pthread_t,
+        attr: *const libc::pthread_attr_t,
+        start: extern "C" fn(*mut c_void) -> *mut c_void,
+        arg: *mut c_void,
+    ) -> c_int {
+        ensure();
+        __real_pthread_create(thread, attr, start, arg)
+    }
+}
 
 #[cfg(target_os = "linux")]
 extern "C" {
