@@ -44,12 +44,30 @@ mod startup {
 
     pub struct Arena<A>(pub A);
 
-    /// Before the first allocation from the inner allocator (mimalloc): see `mimalloc_start`.
-    /// Frees and reallocations outside the buffer only ever see its pointers, so it has started.
+    /// Whether the inner allocator (mimalloc) has started (see `mimalloc_start`); one load.
+    /// Frees and reallocations outside the buffer only ever see its pointers, so it has.
     #[inline]
-    fn inner_ready() {
+    fn inner_started() -> bool {
         #[cfg(lazy_mimalloc)]
-        crate::mimalloc_start::ensure();
+        return crate::mimalloc_start::started();
+        #[cfg(not(lazy_mimalloc))]
+        true
+    }
+
+    impl<A: GlobalAlloc> Arena<A> {
+        /// The first allocation from the inner allocator, which starts it. Out of line, so
+        /// that every later one is a check and a jump to it, without a call frame.
+        #[cold]
+        #[inline(never)]
+        unsafe fn first_inner(&self, layout: Layout, zeroed: bool) -> *mut u8 {
+            #[cfg(lazy_mimalloc)]
+            crate::mimalloc_start::ensure();
+            if zeroed {
+                self.0.alloc_zeroed(layout)
+            } else {
+                self.0.alloc(layout)
+            }
+        }
     }
 
     fn base() -> usize {
@@ -63,9 +81,12 @@ mod startup {
     /// A fresh (zeroed) block of the buffer, or None when it does not fit in what is left.
     fn bump(layout: Layout) -> Option<*mut u8> {
         let base = base();
+        // The alignment is a power of two: rounding up by a mask, where `next_multiple_of`
+        // divided, in every allocation, the inner allocator's included.
+        let mask = layout.align() - 1;
         let mut used = USED.load(Relaxed);
         loop {
-            let start = (base + used).next_multiple_of(layout.align()) - base;
+            let start = ((base + used).checked_add(mask)? & !mask) - base;
             let end = start.checked_add(layout.size()).filter(|&e| e <= SIZE)?;
             match USED.compare_exchange_weak(used, end, Relaxed, Relaxed) {
                 Ok(_) => return Some((base + start) as *mut u8),
@@ -79,18 +100,20 @@ mod startup {
     unsafe impl<A: GlobalAlloc> GlobalAlloc for Arena<A> {
         #[inline]
         unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            bump(layout).unwrap_or_else(|| {
-                inner_ready();
-                self.0.alloc(layout)
-            })
+            match bump(layout) {
+                Some(p) => p,
+                None if inner_started() => self.0.alloc(layout),
+                None => self.first_inner(layout, false),
+            }
         }
 
         #[inline]
         unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-            bump(layout).unwrap_or_else(|| {
-                inner_ready();
-                self.0.alloc_zeroed(layout)
-            })
+            match bump(layout) {
+                Some(p) => p,
+                None if inner_started() => self.0.alloc_zeroed(layout),
+                None => self.first_inner(layout, true),
+            }
         }
 
         #[inline]
@@ -226,6 +249,11 @@ mod mimalloc_start {
     #[inline]
     pub fn ensure() {
         STARTED.call_once(start);
+    }
+
+    #[inline]
+    pub fn started() -> bool {
+        STARTED.is_completed()
     }
 
     #[cold]
