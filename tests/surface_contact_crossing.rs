@@ -201,3 +201,21 @@ fn a_contact_beside_a_crossing_comes_back_with_it() {
         both_curves_come_back(d, seed, chord);
     }
 }
+
+#[test]
+fn probe_cases() {
+    for (d0, d1, seed, chord) in [
+        (0.01, 0.5, 1e-2, 1e-6),
+        (0.01, 0.5, 1e-3, 1e-6),
+        (0.01, 0.2, 1e-2, 1e-6),
+        (0.003, 0.1, 1e-2, 1e-6),
+        (0.03, 0.3, 1e-3, 1e-6),
+        (0.1, 0.1, 1e-2, 1e-6),
+    ] {
+        let r = std::panic::catch_unwind(|| both_curves_come_back_between((d0, d1), seed, chord));
+        eprintln!(
+            "CASE2 d {d0}..{d1} seed {seed} chord {chord}: {}",
+            if r.is_ok() { "ok" } else { "FAIL" }
+        );
+    }
+}

@@ -197,24 +197,26 @@ fn regroup(
 ) -> Vec<Polyline3> {
     let mut kept = Vec::with_capacity(curves.len());
     let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
+    // Touching at one or two of the probes only: a crossing running into a touch, or one seed
+    // curve that ran along a contact and then off along a crossing leaving it.
+    let mut partly: Vec<(Polyline3, DVec2)> = Vec::new();
     for c in curves {
         let n = c.points.len();
         if n == 0 {
             continue;
         }
-        // Its ends and middle: a curve that only meets a contact (a crossing running into a
-        // touch) stays as it is.
         let probes = [c.points[0], c.points[n / 2], c.points[n - 1]].map(|p| a.project(p, None));
-        if probes.iter().all(|uv| tangent(*uv)) {
-            touching.push((c, probes[1]));
-        } else {
-            kept.push(c);
+        let on = probes.map(|uv| tangent(uv));
+        match on.iter().position(|t| *t) {
+            None => kept.push(c),
+            Some(_) if on.iter().all(|t| *t) => touching.push((c, probes[1])),
+            Some(k) => partly.push((c, probes[k])),
         }
     }
     let near = beside(a, tol, chord_tol);
     let mut traced: Vec<Polyline3> = Vec::new();
     let mut steps: Vec<f64> = Vec::new();
-    for (c, uv) in &touching {
+    for (c, uv) in touching.iter().chain(&partly) {
         if c.points.len() < 2 || c.points.iter().all(|p| near_any(*p, &traced, near)) {
             continue;
         }
@@ -235,17 +237,48 @@ fn regroup(
             .map(|(c, _)| c)
             .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
     );
+    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing, joined
+    // below to what the scan finds of it beside the contact.
+    let mut pieces: Vec<Polyline3> = Vec::new();
+    for (c, _) in partly {
+        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
+            pieces.extend(off_curves(&c, &traced, near));
+        } else {
+            kept.push(c);
+        }
+    }
+    let reach = 2.0 * steps.iter().copied().fold(0.0, f64::max);
     for (c, step) in traced.iter().zip(steps) {
         let scan = line::Scan {
             step,
             apart: 8.0 * seed_tol,
             dup: near,
         };
-        let found = line::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
-        kept.extend(found);
+        let known: Vec<Polyline3> = kept.iter().chain(&pieces).cloned().collect();
+        let found = line::crossings_alongside(a, gap, c, &scan, &known, tol, chord_tol);
+        pieces.extend(found);
     }
+    kept.extend(line::join_ends(a, gap, pieces, reach, tol, chord_tol));
     kept.extend(traced);
     kept
+}
+
+/// The runs of `c`'s points (two or more) farther than `r` from every one of `curves`.
+fn off_curves(c: &Polyline3, curves: &[Polyline3], r: f64) -> Vec<Polyline3> {
+    let off: Vec<bool> = c.points.iter().map(|p| !near_any(*p, curves, r)).collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < off.len() {
+        let j = (i..off.len()).find(|&k| !off[k]).unwrap_or(off.len());
+        if j - i >= 2 {
+            out.push(Polyline3 {
+                points: c.points[i..j].to_vec(),
+                closed: false,
+            });
+        }
+        i = j + 1;
+    }
+    out
 }
 
 /// How near a curve a point within `tol` of both surfaces is taken for a point of that curve: a

@@ -297,8 +297,10 @@ pub(crate) fn crossings_alongside(
     for side in [1.0, -1.0] {
         let roots: Vec<Option<(DVec2, DVec3)>> = at
             .iter()
-            .map(|&i| {
-                let (b, f) = if contact.closed {
+            .map(|&(i, t)| {
+                let (b, f) = if t > 0.0 {
+                    (i, i + 1)
+                } else if contact.closed {
                     ((i + n - 1) % n, (i + 1) % n)
                 } else {
                     (i.saturating_sub(1), (i + 1).min(n - 1))
@@ -307,17 +309,18 @@ pub(crate) fn crossings_alongside(
                 if across == DVec2::ZERO {
                     return None;
                 }
-                let uv = first_crossing(a, gap, uvs[i], across * side, scan, tol)?;
+                let from = if t > 0.0 {
+                    a.project(pts[i].lerp(pts[i + 1], t), Some(uvs[i]))
+                } else {
+                    uvs[i]
+                };
+                let uv = first_crossing(a, gap, from, across * side, scan, tol)?;
                 let p = gap(uv).point;
                 (!near_any(p, known, scan.dup) && !near_any(p, &out, scan.dup)).then_some((uv, p))
             })
             .collect();
         let whole = contact.closed && roots.iter().all(Option::is_some);
-        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| {
-            let across = delta(a, x.0, y.0).perp().normalize_or_zero();
-            let uv = root_along(a, gap, mid(a, x.0, y.0), across, tol)?;
-            Some((uv, gap(uv).point))
-        };
+        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
         for run in roots.split(Option::is_none) {
             let nodes: Vec<(DVec2, DVec3)> = run.iter().flatten().copied().collect();
             if nodes.len() >= 2 {
@@ -328,16 +331,104 @@ pub(crate) fn crossings_alongside(
     out
 }
 
-/// The indices of the contact's points scanned across: both ends (of an open curve) and points
-/// about `step` apart between.
-fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<usize> {
+/// The point of the crossing between two of its points `x` and `y`: the root of the gap across
+/// the chord from its midpoint in (u, v).
+fn between(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    x: &(DVec2, DVec3),
+    y: &(DVec2, DVec3),
+    tol: f64,
+) -> Option<(DVec2, DVec3)> {
+    let across = delta(a, x.0, y.0).perp().normalize_or_zero();
+    let uv = root_along(a, gap, mid(a, x.0, y.0), across, tol)?;
+    Some((uv, gap(uv).point))
+}
+
+/// The open crossing `pieces` joined where one ends within `reach` of where another begins
+/// (either way round) and both run on across the joint: a crossing found in parts, by the scan
+/// where it runs beside a contact and by the meshes where it leaves it. The joint is densified
+/// on the true surfaces, and made only where its midpoint is on the crossing.
+pub(crate) fn join_ends(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    mut pieces: Vec<Polyline3>,
+    reach: f64,
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<Polyline3> {
+    let node = |p: DVec3| (a.project(p, None), p);
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+    'joining: loop {
+        for i in 0..pieces.len() {
+            for j in 0..pieces.len() {
+                let (pi, pj) = (&pieces[i].points, &pieces[j].points);
+                if i == j || pieces[i].closed || pieces[j].closed || pi.len() < 2 || pj.len() < 2 {
+                    continue;
+                }
+                // The end of i (its first point when reversed) to the start of j (its last).
+                for (ri, rj) in [(false, false), (false, true), (true, false)] {
+                    let (ni, nj) = (pi.len(), pj.len());
+                    let (e, before) = if ri {
+                        (pi[0], pi[1])
+                    } else {
+                        (pi[ni - 1], pi[ni - 2])
+                    };
+                    let (s, after) = if rj {
+                        (pj[nj - 1], pj[nj - 2])
+                    } else {
+                        (pj[0], pj[1])
+                    };
+                    let joint = s - e;
+                    let runs_on = joint.dot(e - before) > 0.0 && joint.dot(after - s) > 0.0;
+                    if joint.length() > reach || !runs_on {
+                        continue;
+                    }
+                    let (x, y) = (node(e), node(s));
+                    if mid_of(&x, &y).is_none() {
+                        continue;
+                    }
+                    let seam = assemble(&[x, y], false, |n| n.1, &mid_of, tol, chord_tol);
+                    let (mut head, mut tail) = (pi.clone(), pj.clone());
+                    if ri {
+                        head.reverse();
+                    }
+                    if rj {
+                        tail.reverse();
+                    }
+                    let inner = seam.points.len().saturating_sub(1);
+                    head.extend_from_slice(&seam.points[1.min(inner)..inner]);
+                    head.extend(tail);
+                    let (lo, hi) = (i.min(j), i.max(j));
+                    pieces.remove(hi);
+                    pieces[lo] = Polyline3 {
+                        points: head,
+                        closed: false,
+                    };
+                    continue 'joining;
+                }
+            }
+        }
+        return pieces;
+    }
+}
+
+/// Where the contact is scanned across: both ends (of an open curve) and points about `step`
+/// apart between, as (i, t): the point a fraction t of the way from point i to the next. A
+/// segment longer than the step (a straight contact keeps only its ends) is split evenly.
+fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<(usize, f64)> {
     let n = pts.len();
-    let mut at = vec![0];
+    let mut at = vec![(0, 0.0)];
     let mut run = 0.0;
     for i in 1..n {
-        run += pts[i].distance(pts[i - 1]);
+        let len = pts[i].distance(pts[i - 1]);
+        let k = (len / step).ceil();
+        if k > 1.0 && k.is_finite() {
+            at.extend((1..k as usize).map(|j| (i - 1, j as f64 / k)));
+        }
+        run += len;
         if run >= step || (i == n - 1 && !closed) {
-            at.push(i);
+            at.push((i, 0.0));
             run = 0.0;
         }
     }
