@@ -236,81 +236,95 @@ fn regroup(
             .map(|(c, _)| c)
             .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
     );
-    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing, carried
-    // on along it past where the seed curve ran onto the contact.
-    let mut pieces: Vec<Polyline3> = Vec::new();
-    let reach = 2.0 * steps.iter().copied().fold(0.0, f64::max);
-    let carry = Carry {
-        a,
-        gap,
-        contacts: &traced,
-        near,
-        len: 0.5 * reach,
-        tols: (tol, chord_tol),
-    };
+    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
+    let mut cut: Vec<(Polyline3, [bool; 2])> = Vec::new();
     for (c, _) in partly {
         if c.points.iter().any(|p| near_any(*p, &traced, near)) {
-            let cut = off_curves(&c, &traced, near);
-            pieces.extend(cut.iter().map(|x| x.0.clone()));
-            carry.extend(&mut pieces, &cut);
+            cut.extend(off_curves(&c, &traced, near));
         } else {
             kept.push(c);
         }
     }
-    // And what the scan across the contacts finds of crossings beside them, carried on likewise
-    // (the scan looks across only every step along a contact).
-    for (c, step) in traced.iter().zip(steps) {
-        let scan = line::Scan {
-            step,
-            apart: seed_gap(seed_tol),
-            dup: near,
-        };
-        let known: Vec<Polyline3> = kept.iter().chain(&pieces).cloned().collect();
-        let found = line::crossings_alongside(a, gap, c, &scan, &known, tol, chord_tol);
-        let found: Vec<(Polyline3, [bool; 2])> =
-            found.into_iter().map(|f| (f, [false; 2])).collect();
-        pieces.extend(found.iter().map(|x| x.0.clone()));
-        carry.extend(&mut pieces, &found);
-    }
-    kept.extend(line::join_ends(a, gap, pieces, reach, tol, chord_tol));
+    let crossings = Crossings {
+        a,
+        gap,
+        contacts: &traced,
+        near,
+        len: steps.iter().copied().fold(0.0, f64::max),
+        tols: (seed_tol, tol, chord_tol),
+    };
+    let found = crossings.beside(cut, &steps, &kept);
+    kept.extend(found);
     kept.extend(traced);
     kept
 }
 
-/// Crossing pieces carried on along their crossing (see [`line::extend_crossing`]).
-struct Carry<'c> {
+/// The crossings beside traced contacts, found in pieces and carried on along them.
+struct Crossings<'c> {
     a: &'c Patch<'c>,
     gap: &'c dyn Fn(DVec2) -> GapAt,
     /// The traced contacts: a crossing is followed until it comes beside one of them...
     contacts: &'c [Polyline3],
     /// ... within this.
     near: f64,
-    /// The step along the crossing.
+    /// The step along a crossing (the longest of the seed curves' segments).
     len: f64,
-    tols: (f64, f64),
+    /// The seed, refinement and chord tolerances.
+    tols: (f64, f64, f64),
 }
 
-impl Carry<'_> {
+impl Crossings<'_> {
+    /// The crossings from the `cut` pieces (stretches of seed curves off the contacts, with the
+    /// ends where they were cut) and from the scan across each contact (every `steps` along it)
+    /// for crossings beside it not among `known`: each carried on, then joined end to end.
+    fn beside(
+        &self,
+        cut: Vec<(Polyline3, [bool; 2])>,
+        steps: &[f64],
+        known: &[Polyline3],
+    ) -> Vec<Polyline3> {
+        let (seed_tol, tol, chord_tol) = self.tols;
+        let mut pieces: Vec<Polyline3> = cut.iter().map(|x| x.0.clone()).collect();
+        self.extend(&mut pieces, &cut);
+        // The scan looks across only every step along a contact: what it finds is carried on
+        // likewise.
+        for (c, &step) in self.contacts.iter().zip(steps) {
+            let scan = line::Scan {
+                step,
+                apart: seed_gap(seed_tol),
+                dup: self.near,
+            };
+            let known: Vec<Polyline3> = known.iter().chain(&pieces).cloned().collect();
+            let found =
+                line::crossings_alongside(self.a, self.gap, c, &scan, &known, tol, chord_tol);
+            let found: Vec<(Polyline3, [bool; 2])> =
+                found.into_iter().map(|f| (f, [false; 2])).collect();
+            pieces.extend(found.iter().map(|x| x.0.clone()));
+            self.extend(&mut pieces, &found);
+        }
+        let reach = 2.0 * self.len;
+        line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol)
+    }
+
     /// Carries on the last `new.len()` of `pieces` (each with the ends where it was cut off a
     /// seed curve), each until it comes beside a contact or another piece: the joints between
     /// pieces are made afterwards by [`line::join_ends`].
     fn extend(&self, pieces: &mut [Polyline3], new: &[(Polyline3, [bool; 2])]) {
+        let (_, tol, chord_tol) = self.tols;
         let first = pieces.len() - new.len();
         for (i, (_, cut)) in (first..pieces.len()).zip(new) {
-            let others: Vec<&Polyline3> = (0..pieces.len())
-                .filter(|&j| j != i)
-                .map(|j| &pieces[j])
-                .collect();
             let stop = |p: DVec3| {
                 near_any(p, self.contacts, self.near)
-                    || others
-                        .iter()
-                        .any(|o| near_any(p, std::slice::from_ref(*o), self.near))
+                    || (0..pieces.len())
+                        .any(|j| j != i && near_any(p, std::slice::from_ref(&pieces[j]), self.near))
             };
-            let (tol, chord_tol) = self.tols;
-            let piece = &pieces[i];
             let longer = line::extend_crossing(
-                self.a, self.gap, piece, *cut, &stop, self.len, tol, chord_tol,
+                self.a,
+                self.gap,
+                (&pieces[i], *cut),
+                &stop,
+                self.len,
+                (tol, chord_tol),
             );
             pieces[i] = longer;
         }

@@ -640,16 +640,13 @@ fn march(
 /// `len`, densified within `chord_tol`. The ends marked in `cut` are where the seed curve it
 /// came from ran onto a contact: the seed's points there can fold back, and are dropped up to
 /// the last fold.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn extend_crossing(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
-    piece: &Polyline3,
-    cut: [bool; 2],
+    (piece, cut): (&Polyline3, [bool; 2]),
     stop: &dyn Fn(DVec3) -> bool,
     len: f64,
-    tol: f64,
-    chord_tol: f64,
+    (tol, chord_tol): (f64, f64),
 ) -> Polyline3 {
     let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
     let mut points = piece.points.clone();
