@@ -205,7 +205,7 @@ fn regroup(
             continue;
         }
         let probes = [c.points[0], c.points[n / 2], c.points[n - 1]].map(|p| a.project(p, None));
-        let on = probes.map(|uv| tangent(uv));
+        let on = probes.map(tangent);
         match on.iter().position(|t| *t) {
             None => kept.push(c),
             Some(_) if on.iter().all(|t| *t) => touching.push((c, probes[1])),
