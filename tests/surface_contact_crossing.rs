@@ -189,7 +189,11 @@ fn a_crossing_beyond_the_other_surfaces_edge_is_not_reported() {
 
 /// The reverse: the meshes see the crossing, and the contact a few cells from it was lost
 /// (the search for contacts passed over every seed within four cells of a curve found). On
-/// `b48c411` only the crossing came back in all four cases.
+/// `b48c411` only the crossing came back in the first four cases. In the last two (d = 0.1 at
+/// seed 1e-2) the meshes see a contact only and the scan across it finds the crossing; on
+/// `ca784eb` the section lost it: the scan at the far end (x = 4) left the domain by the
+/// roundoff in its direction, and the one in the middle was skipped, its segment a roundoff
+/// shorter than the step, leaving a single root.
 #[test]
 fn a_contact_beside_a_crossing_comes_back_with_it() {
     for (d, seed, chord) in [
@@ -197,7 +201,27 @@ fn a_contact_beside_a_crossing_comes_back_with_it() {
         (0.2, 1e-3, 1e-6),
         (0.3, 1e-3, 1e-3),
         (0.5, 1e-2, 1e-2),
+        (0.1, 1e-2, 1e-2),
+        (0.1, 1e-2, 1e-6),
     ] {
         both_curves_come_back(d, seed, chord);
+    }
+}
+
+/// The root varying along x: the crossing y = d(x) runs closer to the contact than the meshes
+/// resolve at one end and plainly apart at the other, so one seed curve ran along the contact
+/// and then off along the crossing. On `ca784eb` this failed: one curve that ran along the
+/// contact and jumped onto the crossing, or the crossing without its start.
+#[test]
+fn a_crossing_beside_part_of_a_contact_comes_back_apart() {
+    for (d0, d1, seed) in [
+        (0.01, 0.5, 1e-2),
+        (0.01, 0.5, 1e-3),
+        (0.5, 0.01, 1e-3),
+        (0.01, 0.2, 1e-2),
+        (0.003, 0.1, 1e-2),
+        (0.03, 0.3, 1e-3),
+    ] {
+        both_curves_come_back_between((d0, d1), seed, 1e-6);
     }
 }

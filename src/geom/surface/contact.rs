@@ -196,24 +196,26 @@ fn regroup(
 ) -> Vec<Polyline3> {
     let mut kept = Vec::with_capacity(curves.len());
     let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
+    // Touching at one or two of the probes only: a crossing running into a touch, or one seed
+    // curve that ran along a contact and then off along a crossing leaving it.
+    let mut partly: Vec<(Polyline3, DVec2)> = Vec::new();
     for c in curves {
         let n = c.points.len();
         if n == 0 {
             continue;
         }
-        // Its ends and middle: a curve that only meets a contact (a crossing running into a
-        // touch) stays as it is.
         let probes = [c.points[0], c.points[n / 2], c.points[n - 1]].map(|p| a.project(p, None));
-        if probes.iter().all(|uv| tangent(*uv)) {
-            touching.push((c, probes[1]));
-        } else {
-            kept.push(c);
+        let on = probes.map(tangent);
+        match on.iter().position(|t| *t) {
+            None => kept.push(c),
+            Some(_) if on.iter().all(|t| *t) => touching.push((c, probes[1])),
+            Some(k) => partly.push((c, probes[k])),
         }
     }
     let near = beside(a, tol, chord_tol);
     let mut traced: Vec<Polyline3> = Vec::new();
     let mut steps: Vec<f64> = Vec::new();
-    for (c, uv) in &touching {
+    for (c, uv) in touching.iter().chain(&partly) {
         if c.points.len() < 2 || c.points.iter().all(|p| near_any(*p, &traced, near)) {
             continue;
         }
@@ -234,23 +236,125 @@ fn regroup(
             .map(|(c, _)| c)
             .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
     );
-    for (c, step) in traced.iter().zip(steps) {
-        let scan = line::Scan {
-            step,
-            apart: seed_gap(seed_tol),
-            dup: near,
-        };
-        let found = line::crossings_alongside(a, gap, c, &scan, &kept, tol, chord_tol);
-        kept.extend(found);
+    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
+    let mut cut: Vec<(Polyline3, [bool; 2])> = Vec::new();
+    for (c, _) in partly {
+        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
+            cut.extend(off_curves(&c, &traced, near));
+        } else {
+            kept.push(c);
+        }
     }
+    let crossings = Crossings {
+        a,
+        gap,
+        contacts: &traced,
+        near,
+        len: steps.iter().copied().fold(0.0, f64::max),
+        tols: (seed_tol, tol, chord_tol),
+    };
+    let found = crossings.beside(cut, &steps, &kept);
+    kept.extend(found);
     kept.extend(traced);
     kept
+}
+
+/// The crossings beside traced contacts, found in pieces and carried on along them.
+struct Crossings<'c> {
+    a: &'c Patch<'c>,
+    gap: &'c dyn Fn(DVec2) -> GapAt,
+    /// The traced contacts: a crossing is followed until it comes beside one of them...
+    contacts: &'c [Polyline3],
+    /// ... within this.
+    near: f64,
+    /// The step along a crossing (the longest of the seed curves' segments).
+    len: f64,
+    /// The seed, refinement and chord tolerances.
+    tols: (f64, f64, f64),
+}
+
+impl Crossings<'_> {
+    /// The crossings from the `cut` pieces (stretches of seed curves off the contacts, with the
+    /// ends where they were cut) and from the scan across each contact (every `steps` along it)
+    /// for crossings beside it not among `known`: each carried on, then joined end to end.
+    fn beside(
+        &self,
+        cut: Vec<(Polyline3, [bool; 2])>,
+        steps: &[f64],
+        known: &[Polyline3],
+    ) -> Vec<Polyline3> {
+        let (seed_tol, tol, chord_tol) = self.tols;
+        let mut pieces: Vec<Polyline3> = cut.iter().map(|x| x.0.clone()).collect();
+        self.extend(&mut pieces, &cut);
+        // The scan looks across only every step along a contact: what it finds is carried on
+        // likewise.
+        for (c, &step) in self.contacts.iter().zip(steps) {
+            let scan = line::Scan {
+                step,
+                apart: seed_gap(seed_tol),
+                dup: self.near,
+            };
+            let known: Vec<Polyline3> = known.iter().chain(&pieces).cloned().collect();
+            let found =
+                line::crossings_alongside(self.a, self.gap, c, &scan, &known, tol, chord_tol);
+            let found: Vec<(Polyline3, [bool; 2])> =
+                found.into_iter().map(|f| (f, [false; 2])).collect();
+            pieces.extend(found.iter().map(|x| x.0.clone()));
+            self.extend(&mut pieces, &found);
+        }
+        let reach = 2.0 * self.len;
+        line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol)
+    }
+
+    /// Carries on the last `new.len()` of `pieces` (each with the ends where it was cut off a
+    /// seed curve), each until it comes beside a contact or another piece: the joints between
+    /// pieces are made afterwards by [`line::join_ends`].
+    fn extend(&self, pieces: &mut [Polyline3], new: &[(Polyline3, [bool; 2])]) {
+        let (_, tol, chord_tol) = self.tols;
+        let first = pieces.len() - new.len();
+        for (i, (_, cut)) in (first..pieces.len()).zip(new) {
+            let stop = |p: DVec3| {
+                near_any(p, self.contacts, self.near)
+                    || (0..pieces.len())
+                        .any(|j| j != i && near_any(p, std::slice::from_ref(&pieces[j]), self.near))
+            };
+            let longer = line::extend_crossing(
+                self.a,
+                self.gap,
+                (&pieces[i], *cut),
+                &stop,
+                self.len,
+                (tol, chord_tol),
+            );
+            pieces[i] = longer;
+        }
+    }
 }
 
 /// How far apart two meshes made within `seed_tol` of touching surfaces can be: inscribed, they
 /// are apart by a few chord tolerances at most. Seeds of a contact lie within it.
 fn seed_gap(seed_tol: f64) -> f64 {
     8.0 * seed_tol
+}
+
+/// The runs of `c`'s points (two or more) farther than `r` from every one of `curves`, each
+/// with whether it was cut there at its start and at its end (ran on near a curve).
+fn off_curves(c: &Polyline3, curves: &[Polyline3], r: f64) -> Vec<(Polyline3, [bool; 2])> {
+    let off: Vec<bool> = c.points.iter().map(|p| !near_any(*p, curves, r)).collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < off.len() {
+        let j = (i..off.len()).find(|&k| !off[k]).unwrap_or(off.len());
+        if j - i >= 2 {
+            let piece = Polyline3 {
+                points: c.points[i..j].to_vec(),
+                closed: false,
+            };
+            out.push((piece, [i > 0, j < off.len()]));
+        }
+        i = j + 1;
+    }
+    out
 }
 
 /// How near a curve a point within `tol` of both surfaces is taken for a point of that curve: a

@@ -297,8 +297,10 @@ pub(crate) fn crossings_alongside(
     for side in [1.0, -1.0] {
         let roots: Vec<Option<(DVec2, DVec3)>> = at
             .iter()
-            .map(|&i| {
-                let (b, f) = if contact.closed {
+            .map(|&(i, t)| {
+                let (b, f) = if t > 0.0 {
+                    (i, i + 1)
+                } else if contact.closed {
                     ((i + n - 1) % n, (i + 1) % n)
                 } else {
                     (i.saturating_sub(1), (i + 1).min(n - 1))
@@ -307,17 +309,18 @@ pub(crate) fn crossings_alongside(
                 if across == DVec2::ZERO {
                     return None;
                 }
-                let uv = first_crossing(a, gap, uvs[i], across * side, scan, tol)?;
+                let from = if t > 0.0 {
+                    a.project(pts[i].lerp(pts[i + 1], t), Some(uvs[i]))
+                } else {
+                    uvs[i]
+                };
+                let uv = first_crossing(a, gap, from, across * side, scan, tol)?;
                 let p = gap(uv).point;
                 (!near_any(p, known, scan.dup) && !near_any(p, &out, scan.dup)).then_some((uv, p))
             })
             .collect();
         let whole = contact.closed && roots.iter().all(Option::is_some);
-        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| {
-            let across = delta(a, x.0, y.0).perp().normalize_or_zero();
-            let uv = root_along(a, gap, mid(a, x.0, y.0), across, tol)?;
-            Some((uv, gap(uv).point))
-        };
+        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
         for run in roots.split(Option::is_none) {
             let nodes: Vec<(DVec2, DVec3)> = run.iter().flatten().copied().collect();
             if nodes.len() >= 2 {
@@ -328,16 +331,105 @@ pub(crate) fn crossings_alongside(
     out
 }
 
-/// The indices of the contact's points scanned across: both ends (of an open curve) and points
-/// about `step` apart between.
-fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<usize> {
+/// The point of the crossing between two of its points `x` and `y`: the root of the gap across
+/// the chord from its midpoint in (u, v).
+fn between(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    x: &(DVec2, DVec3),
+    y: &(DVec2, DVec3),
+    tol: f64,
+) -> Option<(DVec2, DVec3)> {
+    let across = delta(a, x.0, y.0).perp().normalize_or_zero();
+    let uv = root_along(a, gap, mid(a, x.0, y.0), across, tol)?;
+    Some((uv, gap(uv).point))
+}
+
+/// The open crossing `pieces` joined where one ends within `reach` of where another begins
+/// (either way round) and both run on across the joint: a crossing found in parts, by the scan
+/// where it runs beside a contact and by the meshes where it leaves it. The joint is densified
+/// on the true surfaces, and made only where its midpoint is on the crossing.
+pub(crate) fn join_ends(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    mut pieces: Vec<Polyline3>,
+    reach: f64,
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<Polyline3> {
+    let node = |p: DVec3| (a.project(p, None), p);
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+    'joining: loop {
+        for i in 0..pieces.len() {
+            for j in 0..pieces.len() {
+                let (pi, pj) = (&pieces[i].points, &pieces[j].points);
+                if i == j || pieces[i].closed || pieces[j].closed || pi.len() < 2 || pj.len() < 2 {
+                    continue;
+                }
+                // The end of i (its first point when reversed) to the start of j (its last).
+                for (ri, rj) in [(false, false), (false, true), (true, false)] {
+                    let (ni, nj) = (pi.len(), pj.len());
+                    let (e, before) = if ri {
+                        (pi[0], pi[1])
+                    } else {
+                        (pi[ni - 1], pi[ni - 2])
+                    };
+                    let (s, after) = if rj {
+                        (pj[nj - 1], pj[nj - 2])
+                    } else {
+                        (pj[0], pj[1])
+                    };
+                    let joint = s - e;
+                    let runs_on = joint.dot(e - before) > 0.0 && joint.dot(after - s) > 0.0;
+                    if joint.length() > reach || !runs_on {
+                        continue;
+                    }
+                    let (x, y) = (node(e), node(s));
+                    if mid_of(&x, &y).is_none() {
+                        continue;
+                    }
+                    let seam = assemble(&[x, y], false, |n| n.1, &mid_of, tol, chord_tol);
+                    let (mut head, mut tail) = (pi.clone(), pj.clone());
+                    if ri {
+                        head.reverse();
+                    }
+                    if rj {
+                        tail.reverse();
+                    }
+                    let inner = seam.points.len().saturating_sub(1);
+                    head.extend_from_slice(&seam.points[1.min(inner)..inner]);
+                    head.extend(tail);
+                    let (lo, hi) = (i.min(j), i.max(j));
+                    pieces.remove(hi);
+                    pieces[lo] = Polyline3 {
+                        points: head,
+                        closed: false,
+                    };
+                    continue 'joining;
+                }
+            }
+        }
+        return pieces;
+    }
+}
+
+/// Where the contact is scanned across: both ends (of an open curve) and points about `step`
+/// apart between, as (i, t): the point a fraction t of the way from point i to the next. A
+/// segment longer than the step (a straight contact keeps only its ends) is split evenly.
+fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<(usize, f64)> {
     let n = pts.len();
-    let mut at = vec![0];
+    let mut at = vec![(0, 0.0)];
     let mut run = 0.0;
     for i in 1..n {
-        run += pts[i].distance(pts[i - 1]);
-        if run >= step || (i == n - 1 && !closed) {
-            at.push(i);
+        let len = pts[i].distance(pts[i - 1]);
+        let k = (len / step).ceil();
+        if k > 1.0 && k.is_finite() {
+            at.extend((1..k as usize).map(|j| (i - 1, j as f64 / k)));
+        }
+        run += len;
+        // A segment a roundoff shorter than the step still counts as a step.
+        if run >= step * (1.0 - 1e-12) || (i == n - 1 && !closed) {
+            at.push((i, 0.0));
             run = 0.0;
         }
     }
@@ -350,6 +442,9 @@ fn scanned(pts: &[DVec3], closed: bool, step: f64) -> Vec<usize> {
 /// distance (for a quadratic contact, when the gap there rises to about twice the tolerance):
 /// one closer is within the tolerance of the contact all the way.
 const FIRST: f64 = 1e-7;
+
+/// How far past a bounded parameter's edge roundoff carries a point (parameters are in [0, 1]).
+const EDGE_ROUNDOFF: f64 = 1e-12;
 
 /// The first point from `uv0` along `dir` (in (u, v)) where the gap changes sign between two
 /// samples beyond `tol`, bisected to within a hundredth of it.
@@ -379,8 +474,17 @@ fn first_crossing(
     if !(speed > 0.0 && speed.is_finite()) {
         return None;
     }
-    // Space distance s along the scan, to first order.
-    let uv_at = |s: f64| uv0 + dir * (s / speed);
+    // Space distance s along the scan, to first order. From a point a roundoff short of a
+    // bounded edge, the roundoff in `dir` along it would carry the scan out: held at the edge.
+    let uv_at = |s: f64| {
+        let mut uv = uv0 + dir * (s / speed);
+        for k in 0..2 {
+            if !a.periodic()[k] && (uv[k] - uv[k].clamp(0.0, 1.0)).abs() <= EDGE_ROUNDOFF {
+                uv[k] = uv[k].clamp(0.0, 1.0);
+            }
+        }
+        uv
+    };
     let inside = |uv: DVec2| (0..2).all(|k| a.periodic()[k] || (0.0..=1.0).contains(&uv[k]));
     let mut last: Option<(f64, f64)> = None;
     let mut s = FIRST * scan.step;
@@ -451,4 +555,137 @@ fn root_along(
     let mut m = uv + w * t;
     a.normalise(&mut m);
     (gap(m).dist <= tol).then_some(m)
+}
+
+/// Follows a crossing from its point `uv` (parameters of `a`) along `dir` in steps of about
+/// `len` in space: each node the zero of the gap across the step's end (along a bounded edge
+/// where the step reaches one, so the crossing ends exactly on it). A node where `stop` holds
+/// (beside a contact, whose double zero the search can fall on) or that is not ahead is refused
+/// and the step halved, so the walk ends within a hundredth of the tolerance of an edge or of
+/// where the crossing runs into the contact.
+fn march(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    (uv, dir): (DVec2, DVec2),
+    len: f64,
+    tol: f64,
+    stop: &dyn Fn(DVec3) -> bool,
+) -> Vec<(DVec2, DVec3)> {
+    let (mut uv, mut t) = (uv, dir.normalize_or_zero());
+    let mut nodes = Vec::new();
+    let mut frac = 1.0;
+    while nodes.len() < MAX_NODES && t != DVec2::ZERO {
+        let mut w = uv;
+        a.normalise(&mut w);
+        let (su, sv) = a.derivs(w);
+        let speed = (su * t.x + sv * t.y).length();
+        if !(speed > 0.0 && speed.is_finite()) {
+            break;
+        }
+        let mut step = frac * len / speed;
+        let mut edge = None;
+        for k in 0..2 {
+            if a.periodic()[k] || t[k] == 0.0 {
+                continue;
+            }
+            let room = ((if t[k] > 0.0 { 1.0 } else { 0.0 }) - uv[k]) / t[k];
+            if room <= 1e-12 {
+                return nodes;
+            }
+            if room <= step {
+                step = room;
+                edge = Some(k);
+            }
+        }
+        let mut ahead = uv + t * step;
+        let across = match edge {
+            Some(k) => {
+                ahead[k] = if t[k] > 0.0 { 1.0 } else { 0.0 };
+                if k == 0 {
+                    DVec2::Y
+                } else {
+                    DVec2::X
+                }
+            }
+            None => t.perp(),
+        };
+        let found = root_along(a, gap, ahead, across, tol).map(|c| (c, gap(c).point));
+        let good = found.filter(|(c, p)| {
+            let moved = delta(a, uv, *c);
+            moved.dot(t) > 0.0 && moved.length() <= 2.0 * step && !stop(*p)
+        });
+        match good {
+            Some((c, p)) => {
+                t = delta(a, uv, c).normalize();
+                uv = c;
+                nodes.push((c, p));
+                if edge.is_some() {
+                    break;
+                }
+                frac = (4.0 * frac).min(1.0);
+            }
+            None => {
+                frac *= 0.5;
+                if frac * len < 0.01 * tol {
+                    break;
+                }
+            }
+        }
+    }
+    nodes
+}
+
+/// The crossing `piece` carried on past its ends along the crossing on the true surfaces, to a
+/// bounded edge or to where `stop` holds (beside a contact or another piece); in steps of about
+/// `len`, densified within `chord_tol`. The ends marked in `cut` are where the seed curve it
+/// came from ran onto a contact: the seed's points there can fold back, and are dropped up to
+/// the last fold.
+pub(crate) fn extend_crossing(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    (piece, cut): (&Polyline3, [bool; 2]),
+    stop: &dyn Fn(DVec3) -> bool,
+    len: f64,
+    (tol, chord_tol): (f64, f64),
+) -> Polyline3 {
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+    let mut points = piece.points.clone();
+    for (k, cut) in cut.into_iter().enumerate() {
+        if k == 0 {
+            points.reverse();
+        }
+        if cut {
+            unfold_end(&mut points);
+        }
+        if points.len() < 2 {
+            break;
+        }
+        let n = points.len();
+        let end = a.project(points[n - 1], None);
+        let before = a.project(points[n - 2], Some(end));
+        let mut nodes = vec![(end, points[n - 1])];
+        nodes.extend(march(a, gap, (end, delta(a, before, end)), len, tol, stop));
+        if nodes.len() >= 2 {
+            let more = assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol);
+            points.extend_from_slice(&more.points[1..]);
+        }
+        if k == 0 {
+            points.reverse();
+        }
+    }
+    Polyline3 {
+        points,
+        closed: false,
+    }
+}
+
+/// Drops the points of the last half of `points` from its first fold (a point where the polyline
+/// turns back on itself), leaving the end running on from the rest.
+fn unfold_end(points: &mut Vec<DVec3>) {
+    let n = points.len();
+    let fold = (n / 2..n.saturating_sub(1))
+        .find(|&k| k >= 1 && (points[k + 1] - points[k]).dot(points[k] - points[k - 1]) < 0.0);
+    if let Some(k) = fold {
+        points.truncate(k);
+    }
 }
