@@ -73,7 +73,7 @@ fn tree() -> Tree {
 #[test]
 fn rows_into_one_directory_open_it_once() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     let mut r1 = row(&t.root, &dirs);
     save(&mut r1, "out/a.dxf").unwrap();
     save(&mut r1, "out/b.dxf").unwrap();
@@ -94,7 +94,7 @@ fn rows_into_one_directory_open_it_once() {
 #[test]
 fn rows_into_different_directories_each_get_their_own() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     for sub in ["p", "q", "p/deep"] {
         std::fs::create_dir_all(t.root.join("out").join(sub)).unwrap();
     }
@@ -123,7 +123,7 @@ fn rows_into_different_directories_each_get_their_own() {
 #[test]
 fn a_symlink_swapped_in_after_the_first_row_does_not_lead_out() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     save(&mut row(&t.root, &dirs), "out/a.dxf").unwrap();
     // out moves aside (still below the root) and a symlink to the outside takes its name.
     let moved = t.root.join("out.moved");
@@ -143,7 +143,7 @@ fn a_symlink_swapped_in_after_the_first_row_does_not_lead_out() {
 #[test]
 fn a_directory_removed_during_the_run_is_an_error_then_found_again() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     save(&mut row(&t.root, &dirs), "out/a.dxf").unwrap();
     std::fs::remove_dir_all(t.root.join("out")).unwrap();
     let e = save(&mut row(&t.root, &dirs), "out/b.dxf").unwrap_err();
@@ -170,7 +170,7 @@ fn a_directory_removed_during_the_run_is_an_error_then_found_again() {
 #[test]
 fn a_root_removed_during_the_run_is_an_error() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     let root = t.root.join("out");
     save(&mut row(&root, &dirs), "a.dxf").unwrap();
     std::fs::remove_dir_all(&root).unwrap();
@@ -186,7 +186,7 @@ fn a_root_removed_during_the_run_is_an_error() {
 #[test]
 fn a_directory_the_script_renames_is_opened_again_by_its_name() {
     let t = tree();
-    let dirs = DirCache::default();
+    let dirs = DirCache::new();
     let mut it = row(&t.root, &dirs);
     save(&mut it, "out/a.dxf").unwrap();
     let r = it
@@ -199,4 +199,19 @@ fn a_directory_the_script_renames_is_opened_again_by_its_name() {
     save(&mut it, "out/b.dxf").unwrap();
     assert_eq!(names(&t.root.join("out")), ["b.dxf"]);
     assert_eq!(names(&t.root.join("out2")), ["a.dxf"]);
+}
+
+#[test]
+fn without_a_batch_each_save_opens_its_directory_by_name() {
+    let t = tree();
+    // The default policy keeps no handle (a REPL or `watch` session).
+    let off = DirCache::default();
+    let mut it = row(&t.root, &off);
+    save(&mut it, "out/a.dxf").unwrap();
+    assert_eq!(off.len(), 0);
+    std::fs::rename(t.root.join("out"), t.root.join("out.old")).unwrap();
+    std::fs::create_dir(t.root.join("out")).unwrap();
+    save(&mut it, "out/b.dxf").unwrap();
+    assert_eq!(names(&t.root.join("out")), ["b.dxf"]);
+    assert_eq!(names(&t.root.join("out.old")), ["a.dxf"]);
 }

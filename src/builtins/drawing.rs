@@ -413,12 +413,21 @@ pub fn write_outputs(
         crate::output::Format::from_path(o).map_err(|e| e.to_string())?;
     }
     // The policy is taken out for the loop (the drawing is borrowed meanwhile) and put back.
-    let policy = std::mem::take(it.ext::<FsPolicy>());
+    let mut policy = std::mem::take(it.ext::<FsPolicy>());
+    // The files of one call share their directories' handles even where the policy keeps
+    // none across calls (`run -o a.dxf -o a.svg` opens their directory once).
+    let own = !policy.dirs.is_on();
+    if own {
+        policy.dirs = crate::builtins::fs_policy::DirCache::new();
+    }
     let prepared = crate::output::Prepared::new(drawing(it));
     let r = outputs
         .iter()
         .try_for_each(|o| save_prepared(&policy, &prepared, o, &opts))
         .map_err(|e| e.message);
+    if own {
+        policy.dirs = Default::default();
+    }
     *it.ext::<FsPolicy>() = policy;
     r
 }

@@ -13,16 +13,17 @@
 //! with cap-std: a symlink is followed only while it stays below the root, atomically with
 //! the open, so no swap between a check and the read can lead out.
 //!
-//! Output directories are opened once per run, not once per file: [`DirCache`] keeps the
-//! handles of the roots and of the directories below them that outputs were written to, and a
-//! batch worker carries it from row to row. Those handles are capabilities. A directory moved
+//! A batch opens its output directories once per worker, not once per file: [`DirCache`] keeps
+//! the handles of the roots and of the directories below them that outputs were written to,
+//! and the worker carries it from row to row. Those handles are capabilities. A directory moved
 //! (or replaced by a symlink) while the handle is held keeps receiving the outputs at its new
 //! place, and a symlink put in its place is never followed; the same as for one file without
 //! the cache, held for longer. A directory removed while held cannot take new files (the
 //! kernel refuses to create in it); the handle is then dropped and the directory opened
 //! afresh by its path, so a directory re-created there receives the output and a missing one
 //! is an error naming it, never a silently lost file. A script's own `vl-file-rename` empties
-//! the cache, so a script never writes through a handle to a directory it moved.
+//! the cache, so a script never writes through a handle to a directory it moved. Outside a
+//! batch (`run`, the REPL, `watch`) no handle outlives the call that wrote the outputs.
 
 use std::cell::RefCell;
 use std::ffi::{OsStr, OsString};
@@ -52,12 +53,14 @@ pub struct FsPolicy {
 /// Directory handles opened for outputs, keyed by (root, directory below it): the root's own
 /// handle has the empty path below it. A few handles at most (the oldest is closed past
 /// [`DirCache::MAX`]), so a batch writing each row into a directory of its own does not run
-/// out of descriptors. Shared by the clones of a policy, and passed on from row to row by a
-/// batch worker gives each row's policy its own: a key names a root, and a lookup is made only
-/// after the path was placed below one of the current policy's roots, so a handle never
-/// serves a policy that does not allow its root.
+/// out of descriptors. Off by default (each write opens its directory by path, as a REPL or
+/// `watch` session that lives for hours should); a batch worker makes one with
+/// [`DirCache::new`] and gives it to each row's policy, and one run's `-o` files share one
+/// for their call. A key names a root, and a lookup is made only after the path was placed
+/// below one of the current policy's roots, so a handle never serves a policy that does not
+/// allow its root.
 #[derive(Default, Clone)]
-pub struct DirCache(Rc<RefCell<Vec<CachedDir>>>);
+pub struct DirCache(Option<Rc<RefCell<Vec<CachedDir>>>>);
 
 struct CachedDir {
     root: PathBuf,
@@ -67,7 +70,7 @@ struct CachedDir {
 
 impl std::fmt::Debug for DirCache {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "DirCache({} open)", self.0.borrow().len())
+        write!(f, "DirCache({} open)", self.len())
     }
 }
 
@@ -75,8 +78,19 @@ impl DirCache {
     /// Handles kept at most (roots and directories below them).
     pub const MAX: usize = 16;
 
+    /// A cache that keeps handles (the default keeps none).
+    pub fn new() -> DirCache {
+        DirCache(Some(Rc::default()))
+    }
+
+    /// Whether handles are kept.
+    pub fn is_on(&self) -> bool {
+        self.0.is_some()
+    }
+
     fn get(&self, root: &Path, below: &Path) -> Option<Rc<cap_std::fs::Dir>> {
         self.0
+            .as_ref()?
             .borrow()
             .iter()
             .find(|c| c.root == root && c.below == below)
@@ -84,7 +98,8 @@ impl DirCache {
     }
 
     fn put(&self, root: &Path, below: &Path, dir: Rc<cap_std::fs::Dir>) {
-        let mut v = self.0.borrow_mut();
+        let Some(v) = &self.0 else { return };
+        let mut v = v.borrow_mut();
         if v.len() >= Self::MAX {
             v.remove(0);
         }
@@ -97,12 +112,14 @@ impl DirCache {
 
     /// Closes every handle (a directory may have moved: the next write opens it by path).
     pub fn clear(&self) {
-        self.0.borrow_mut().clear();
+        if let Some(v) = &self.0 {
+            v.borrow_mut().clear();
+        }
     }
 
     /// The number of handles held.
     pub fn len(&self) -> usize {
-        self.0.borrow().len()
+        self.0.as_ref().map_or(0, |v| v.borrow().len())
     }
 
     pub fn is_empty(&self) -> bool {

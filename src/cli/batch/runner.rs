@@ -127,7 +127,7 @@ impl Runner<'_> {
             it,
             program,
             answers,
-            dirs: Default::default(),
+            dirs: crate::builtins::fs_policy::DirCache::new(),
         })
     }
 
