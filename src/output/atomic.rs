@@ -46,17 +46,46 @@ pub fn write_atomic_at(
     name: &std::ffi::OsStr,
     bytes: &[u8],
 ) -> std::io::Result<()> {
+    // Once a name was found taken, this run is most likely rewriting earlier outputs (a batch
+    // run again): the named way then takes the four calls, where the unnamed one would take
+    // six (a failed link, a link under the temporary name, the rename).
     #[cfg(target_os = "linux")]
-    if let Some(mut file) = unnamed::create(dir) {
-        file.write_all(bytes)?;
-        return match unnamed::link(&file, dir, name) {
-            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                replace_through_temporary(dir, name, |tmp| unnamed::link(&file, dir, tmp))
+    {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        static REPLACING: AtomicBool = AtomicBool::new(false);
+        if !REPLACING.load(Ordering::Relaxed) {
+            let mut taken = false;
+            if let Some(r) = write_unnamed_at(dir, name, bytes, &mut taken) {
+                if taken {
+                    REPLACING.store(true, Ordering::Relaxed);
+                }
+                return r;
             }
-            r => r,
-        };
+        }
     }
     write_named_at(dir, name, bytes)
+}
+
+/// `write_atomic_at` through an unnamed file; None where one cannot be made. `taken` is set
+/// when `name` existed (the file is then linked under a temporary name and renamed over it).
+#[cfg(target_os = "linux")]
+fn write_unnamed_at(
+    dir: &cap_std::fs::Dir,
+    name: &std::ffi::OsStr,
+    bytes: &[u8],
+    taken: &mut bool,
+) -> Option<std::io::Result<()>> {
+    let mut file = unnamed::create(dir)?;
+    if let Err(e) = file.write_all(bytes) {
+        return Some(Err(e));
+    }
+    Some(match unnamed::link(&file, dir, name) {
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            *taken = true;
+            replace_through_temporary(dir, name, |tmp| unnamed::link(&file, dir, tmp))
+        }
+        r => r,
+    })
 }
 
 /// `write_atomic_at` through a named temporary file (where there are no unnamed files).
@@ -197,9 +226,15 @@ mod tests {
     #[cfg(unix)]
     #[test]
     fn at_a_directory_handle_replaces_content_and_leaves_no_temporary() {
-        // The unnamed way (where the file system has it), then the named one.
-        at_a_directory_handle(write_atomic_at);
+        // The unnamed way (where the file system has it), the named one, and the choice.
+        #[cfg(target_os = "linux")]
+        at_a_directory_handle(|dir, name, bytes| {
+            // Where the file system has no unnamed files, the named way stands in.
+            write_unnamed_at(dir, name, bytes, &mut false)
+                .unwrap_or_else(|| write_named_at(dir, name, bytes))
+        });
         at_a_directory_handle(write_named_at);
+        at_a_directory_handle(write_atomic_at);
     }
 
     #[cfg(unix)]
