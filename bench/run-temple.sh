@@ -10,7 +10,10 @@
 # Outputs go under $TMPDIR (default /tmp). On this machine's ext4, creating a file costs a scan
 # of the files deleted from its block group in the last minutes (the previous run's 6,000
 # outputs), so kernel time there depends on what ran before: TMPDIR=/dev/shm (tmpfs, for both
-# tools) measures the programs rather than that history.
+# tools) measures the programs rather than that history. (The file system has no journal, and
+# ext4 then skips each inode freed less than 60 s ago, reading its inode block, at every file
+# creation: perf shows `recently_deleted` under `__ext4_new_inode`. On ext4, start a run at
+# least 65 s after the last mass deletion there, this script's own included.)
 # Usage: [TMPDIR=dir] [JOBS=N] [BEFORE=path] [PDF=0] bench/run-temple.sh [ROWS.csv]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -231,35 +231,55 @@ fn save_to(it: &mut Interp, path: &Path, opts: &OutputOptions) -> Result<(), Exn
         &crate::output::Prepared::new(drawing(it)),
         path,
         opts,
-        None,
     );
     *it.ext::<FsPolicy>() = policy;
-    r.map(drop)
+    r
 }
 
-/// Saves `path` (confined by `policy`, reusing `prev`'s directory handle when it is the same
-/// directory); returns the confinement, for the next file.
+/// Saves `path` (confined by `policy`, through the output directory handles it holds).
 fn save_prepared(
     policy: &FsPolicy,
     p: &crate::output::Prepared,
     path: &Path,
     opts: &OutputOptions,
-    prev: Option<&Confined>,
-) -> Result<Confined, Exn> {
-    let c = policy
-        .confine_after(path, crate::builtins::io::Access::Write, prev)
-        .map_err(err)?;
-    let r = match c.dir_and_name() {
+) -> Result<(), Exn> {
+    let c = policy.confine_output(path).map_err(err)?;
+    match write_confined(p, &c, path, opts) {
+        // The directory held was removed since it was opened: open it again by its path (it
+        // may have been re-created), or say that it is gone.
+        Err(crate::output::OutputError::Io { source, .. })
+            if c.was_cached() && source.kind() == std::io::ErrorKind::NotFound =>
+        {
+            policy.dirs.clear();
+            let c = policy.confine_output(path).map_err(|m| {
+                err(format!(
+                    "save {}: its directory was removed during the run ({m})",
+                    path.display()
+                ))
+            })?;
+            write_confined(p, &c, path, opts).map_err(|e| save_error(&c, path, e))
+        }
+        r => r.map_err(|e| save_error(&c, path, e)),
+    }
+}
+
+fn write_confined(
+    p: &crate::output::Prepared,
+    c: &Confined,
+    path: &Path,
+    opts: &OutputOptions,
+) -> Result<(), crate::output::OutputError> {
+    match c.dir_and_name() {
         Some((dir, name)) => crate::output::save_prepared_at(p, dir, name, path, opts),
         None => crate::output::save_prepared(p, &c.path, opts),
-    };
-    r.map_err(|e| {
-        let msg = e
-            .to_string()
-            .replace(&c.path.display().to_string(), &path.display().to_string());
-        err(format!("save {}: {msg}", path.display()))
-    })?;
-    Ok(c)
+    }
+}
+
+fn save_error(c: &Confined, path: &Path, e: crate::output::OutputError) -> Exn {
+    let msg = e
+        .to_string()
+        .replace(&c.path.display().to_string(), &path.display().to_string());
+    err(format!("save {}: {msg}", path.display()))
 }
 
 fn save(it: &mut Interp, a: &[Value]) -> LResult {
@@ -393,18 +413,20 @@ pub fn write_outputs(
         crate::output::Format::from_path(o).map_err(|e| e.to_string())?;
     }
     // The policy is taken out for the loop (the drawing is borrowed meanwhile) and put back.
-    let policy = std::mem::take(it.ext::<FsPolicy>());
+    let mut policy = std::mem::take(it.ext::<FsPolicy>());
+    // The files of one call share their directories' handles even where the policy keeps
+    // none across calls (`run -o a.dxf -o a.svg` opens their directory once).
+    let own = !policy.dirs.is_on();
+    if own {
+        policy.dirs = crate::builtins::fs_policy::DirCache::new();
+    }
     let prepared = crate::output::Prepared::new(drawing(it));
-    let mut prev = None;
-    let mut r = Ok(());
-    for o in outputs {
-        match save_prepared(&policy, &prepared, o, &opts, prev.as_ref()) {
-            Ok(c) => prev = Some(c),
-            Err(e) => {
-                r = Err(e.message);
-                break;
-            }
-        }
+    let r = outputs
+        .iter()
+        .try_for_each(|o| save_prepared(&policy, &prepared, o, &opts))
+        .map_err(|e| e.message);
+    if own {
+        policy.dirs = Default::default();
     }
     *it.ext::<FsPolicy>() = policy;
     r

@@ -12,7 +12,20 @@
 //! reads (open, stat, directory listing) resolve the whole path through the root's handle
 //! with cap-std: a symlink is followed only while it stays below the root, atomically with
 //! the open, so no swap between a check and the read can lead out.
+//!
+//! A batch opens its output directories once per worker, not once per file: [`DirCache`] keeps
+//! the handles of the roots and of the directories below them that outputs were written to,
+//! and the worker carries it from row to row. Those handles are capabilities. A directory moved
+//! (or replaced by a symlink) while the handle is held keeps receiving the outputs at its new
+//! place, and a symlink put in its place is never followed; the same as for one file without
+//! the cache, held for longer. A directory removed while held cannot take new files (the
+//! kernel refuses to create in it); the handle is then dropped and the directory opened
+//! afresh by its path, so a directory re-created there receives the output and a missing one
+//! is an error naming it, never a silently lost file. A script's own `vl-file-rename` empties
+//! the cache, so a script never writes through a handle to a directory it moved. Outside a
+//! batch (`run`, the REPL, `watch`) no handle outlives the call that wrote the outputs.
 
+use std::cell::RefCell;
 use std::ffi::{OsStr, OsString};
 use std::fs::File;
 use std::io::Read;
@@ -33,6 +46,85 @@ pub struct FsPolicy {
     pub read_roots: Vec<PathBuf>,
     /// Sandboxed reads may also open exactly these (files named on the command line).
     pub read_files: Vec<PathBuf>,
+    /// The output directories opened so far (shared by clones; see [`DirCache`]).
+    pub dirs: DirCache,
+}
+
+/// Directory handles opened for outputs, keyed by (root, directory below it): the root's own
+/// handle has the empty path below it. A few handles at most (the oldest is closed past
+/// [`DirCache::MAX`]), so a batch writing each row into a directory of its own does not run
+/// out of descriptors. Off by default (each write opens its directory by path, as a REPL or
+/// `watch` session that lives for hours should); a batch worker makes one with
+/// [`DirCache::new`] and gives it to each row's policy, and one run's `-o` files share one
+/// for their call. A key names a root, and a lookup is made only after the path was placed
+/// below one of the current policy's roots, so a handle never serves a policy that does not
+/// allow its root.
+#[derive(Default, Clone)]
+pub struct DirCache(Option<Rc<RefCell<Vec<CachedDir>>>>);
+
+struct CachedDir {
+    root: PathBuf,
+    below: PathBuf,
+    dir: Rc<cap_std::fs::Dir>,
+}
+
+impl std::fmt::Debug for DirCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "DirCache({} open)", self.len())
+    }
+}
+
+impl DirCache {
+    /// Handles kept at most (roots and directories below them).
+    pub const MAX: usize = 16;
+
+    /// A cache that keeps handles (the default keeps none).
+    pub fn new() -> DirCache {
+        DirCache(Some(Rc::default()))
+    }
+
+    /// Whether handles are kept.
+    pub fn is_on(&self) -> bool {
+        self.0.is_some()
+    }
+
+    fn get(&self, root: &Path, below: &Path) -> Option<Rc<cap_std::fs::Dir>> {
+        self.0
+            .as_ref()?
+            .borrow()
+            .iter()
+            .find(|c| c.root == root && c.below == below)
+            .map(|c| c.dir.clone())
+    }
+
+    fn put(&self, root: &Path, below: &Path, dir: Rc<cap_std::fs::Dir>) {
+        let Some(v) = &self.0 else { return };
+        let mut v = v.borrow_mut();
+        if v.len() >= Self::MAX {
+            v.remove(0);
+        }
+        v.push(CachedDir {
+            root: root.to_path_buf(),
+            below: below.to_path_buf(),
+            dir,
+        });
+    }
+
+    /// Closes every handle (a directory may have moved: the next write opens it by path).
+    pub fn clear(&self) {
+        if let Some(v) = &self.0 {
+            v.borrow_mut().clear();
+        }
+    }
+
+    /// The number of handles held.
+    pub fn len(&self) -> usize {
+        self.0.as_ref().map_or(0, |v| v.borrow().len())
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
 }
 
 /// A path the policy allows, as the caller must use it: through the directory handle kept
@@ -41,8 +133,8 @@ pub struct Confined {
     dir: Option<Rc<cap_std::fs::Dir>>,
     /// The file's name in `dir` (None: the path is `dir` itself, or not confined).
     name: Option<OsString>,
-    /// Which directory `dir` is (the root, and the parent below it), for `confine_after`.
-    key: Option<(PathBuf, PathBuf)>,
+    /// Whether `dir` came from the policy's [`DirCache`] (it may since have been removed).
+    cached: bool,
     pub path: PathBuf,
 }
 
@@ -55,6 +147,11 @@ impl Confined {
             (Some(d), Some(n)) => Some((d, n.as_os_str())),
             _ => None,
         }
+    }
+
+    /// Whether the directory handle was one already held (see [`FsPolicy::confine_output`]).
+    pub fn was_cached(&self) -> bool {
+        self.cached
     }
 }
 
@@ -186,43 +283,67 @@ impl FsPolicy {
 
     /// The path to use for `access` to `path`, or the refusal message.
     pub fn confine(&self, path: &Path, access: Access) -> Result<Confined, String> {
-        self.confine_after(path, access, None)
-    }
-
-    /// `confine`, reusing the directory handle of `prev` (confined just before by this
-    /// policy) when `path` lies in the same directory below the same root: a run writing
-    /// `a.dxf` and `a.svg` side by side opens their directory once.
-    pub fn confine_after(
-        &self,
-        path: &Path,
-        access: Access,
-        prev: Option<&Confined>,
-    ) -> Result<Confined, String> {
         match self.locate(path, access)? {
-            Place::Free => Ok(Confined {
-                dir: None,
-                name: None,
-                key: None,
-                path: path.to_path_buf(),
-            }),
+            Place::Free => Ok(free(path)),
             Place::Beneath { root, shown, rel } => {
-                if let (Some(prev), Some(name)) = (prev, rel.file_name()) {
-                    let parent = rel.parent().unwrap_or(Path::new("")).to_path_buf();
-                    if let (Some(dir), Some(key)) = (&prev.dir, &prev.key) {
-                        if key.0 == root && key.1 == parent && prev.name.is_some() {
-                            return Ok(through(dir.clone(), Some(name), (root, parent)));
-                        }
-                    }
-                }
-                open_beneath(&root, &rel).map_err(|e| {
-                    refused(
-                        path,
-                        access,
-                        &format!("cannot be reached below {}: {e}", shown.display()),
-                    )
-                })
+                open_beneath(&root, &rel).map_err(|e| unreachable_below(path, access, &shown, &e))
             }
         }
+    }
+
+    /// `confine` for writing an output file, through the directory handles of [`DirCache`]:
+    /// the outputs of a run (and of a batch worker's rows) open their directory once. A handle
+    /// held may belong to a directory removed since; a write through it fails with
+    /// `NotFound` (see [`Confined::was_cached`]), and the caller then clears the cache and
+    /// confines again.
+    pub fn confine_output(&self, path: &Path) -> Result<Confined, String> {
+        let (root, shown, rel) = match self.locate(path, Access::Write)? {
+            Place::Free => return Ok(free(path)),
+            Place::Beneath { root, shown, rel } => (root, shown, rel),
+        };
+        let Some(name) = rel.file_name() else {
+            return self.confine(path, Access::Write);
+        };
+        let below = rel.parent().unwrap_or(Path::new(""));
+        if let Some(dir) = self.dirs.get(&root, below) {
+            return Ok(through(dir, Some(name), true));
+        }
+        let opened = self.open_dir_below(&root, below).or_else(|e| {
+            // The root's handle held may be of a removed directory: once more by its path.
+            if e.kind() == std::io::ErrorKind::NotFound && !self.dirs.is_empty() {
+                self.dirs.clear();
+                self.open_dir_below(&root, below)
+            } else {
+                Err(e)
+            }
+        });
+        match opened {
+            Ok(dir) => Ok(through(dir, Some(name), false)),
+            Err(e) => Err(unreachable_below(path, Access::Write, &shown, &e)),
+        }
+    }
+
+    /// The directory `below` the root (both kept in the cache), opened through the root's
+    /// handle so that no symlink leads out.
+    fn open_dir_below(&self, root: &Path, below: &Path) -> std::io::Result<Rc<cap_std::fs::Dir>> {
+        let top = Path::new("");
+        let root_dir = match self.dirs.get(root, top) {
+            Some(d) => d,
+            None => {
+                let d = Rc::new(cap_std::fs::Dir::open_ambient_dir(
+                    root,
+                    cap_std::ambient_authority(),
+                )?);
+                self.dirs.put(root, top, d.clone());
+                d
+            }
+        };
+        if below.as_os_str().is_empty() {
+            return Ok(root_dir);
+        }
+        let d = Rc::new(root_dir.open_dir(below)?);
+        self.dirs.put(root, below, d.clone());
+        Ok(d)
     }
 
     /// For a confined read: the root's directory handle and the path below it, which every
@@ -413,18 +534,31 @@ enum Place {
     },
 }
 
+fn free(path: &Path) -> Confined {
+    Confined {
+        dir: None,
+        name: None,
+        cached: false,
+        path: path.to_path_buf(),
+    }
+}
+
+fn unreachable_below(path: &Path, access: Access, shown: &Path, e: &std::io::Error) -> String {
+    refused(
+        path,
+        access,
+        &format!("cannot be reached below {}: {e}", shown.display()),
+    )
+}
+
 /// Opens the parent of `rel` below `root` and names the file through that handle.
 fn open_beneath(root: &Path, rel: &Path) -> std::io::Result<Confined> {
-    let key = (
-        root.to_path_buf(),
-        rel.parent().unwrap_or(Path::new("")).to_path_buf(),
-    );
     let name = match rel.file_name() {
         Some(n) => n.to_owned(),
         // The root itself (e.g. `vl-directory-files` of the script directory).
         None => {
             let dir = cap_std::fs::Dir::open_ambient_dir(root, cap_std::ambient_authority())?;
-            return Ok(through(Rc::new(dir), None, key));
+            return Ok(through(Rc::new(dir), None, false));
         }
     };
     let root_dir = cap_std::fs::Dir::open_ambient_dir(root, cap_std::ambient_authority())?;
@@ -433,10 +567,10 @@ fn open_beneath(root: &Path, rel: &Path) -> std::io::Result<Confined> {
         Some(p) => root_dir.open_dir(p)?,
         None => root_dir,
     };
-    Ok(through(Rc::new(dir), Some(&name), key))
+    Ok(through(Rc::new(dir), Some(&name), false))
 }
 
-fn through(dir: Rc<cap_std::fs::Dir>, name: Option<&OsStr>, key: (PathBuf, PathBuf)) -> Confined {
+fn through(dir: Rc<cap_std::fs::Dir>, name: Option<&OsStr>, cached: bool) -> Confined {
     use std::os::fd::AsRawFd;
     let base = PathBuf::from(format!("/proc/self/fd/{}", dir.as_raw_fd()));
     let path = match name {
@@ -446,7 +580,7 @@ fn through(dir: Rc<cap_std::fs::Dir>, name: Option<&OsStr>, key: (PathBuf, PathB
     Confined {
         dir: Some(dir),
         name: name.map(OsStr::to_os_string),
-        key: Some(key),
+        cached,
         path,
     }
 }

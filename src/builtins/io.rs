@@ -485,9 +485,13 @@ fn file_rename(it: &mut Interp, a: &[Value]) -> LResult {
     let (_, from) = confined(it, &a[0], Access::Write)?;
     let (_, to) = confined(it, &a[1], Access::Write)?;
     let exists = |p: &Path| std::fs::symlink_metadata(p).is_ok();
-    Ok(Value::bool(
-        exists(&from.path) && !exists(&to.path) && std::fs::rename(&from.path, &to.path).is_ok(),
-    ))
+    let done =
+        exists(&from.path) && !exists(&to.path) && std::fs::rename(&from.path, &to.path).is_ok();
+    if done {
+        // A directory moved must not keep receiving the outputs through a handle held.
+        it.ext::<FsPolicy>().dirs.clear();
+    }
+    Ok(Value::bool(done))
 }
 
 fn file_copy(it: &mut Interp, a: &[Value]) -> LResult {

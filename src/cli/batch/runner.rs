@@ -30,6 +30,9 @@ struct Worker {
     sources: usize,
     /// The `--answers` file's text, read once per worker (each row consumes it afresh).
     answers: Result<Option<String>, String>,
+    /// The output directories' handles, kept open from row to row (see
+    /// `fs_policy::DirCache`: each row's policy shares them).
+    dirs: crate::builtins::fs_policy::DirCache,
 }
 
 thread_local! {
@@ -124,6 +127,7 @@ impl Runner<'_> {
             it,
             program,
             answers,
+            dirs: crate::builtins::fs_policy::DirCache::new(),
         })
     }
 
@@ -142,8 +146,10 @@ impl Runner<'_> {
         // A drawings source names each row's drawing; otherwise `--open` is every row's.
         let open = row.open.as_ref().or(self.common.open.as_ref());
         let named: Vec<PathBuf> = open.into_iter().cloned().collect();
-        *it.ext::<crate::builtins::io::FsPolicy>() =
+        let mut policy =
             crate::cli::run::fs_policy(self.common, Some(self.script_path), paths, &named);
+        policy.dirs = w.dirs.clone();
+        *it.ext::<crate::builtins::io::FsPolicy>() = policy;
         if let Some(text) = w.answers.clone()? {
             it.ext::<InputState>().load_answers(&text);
         }
