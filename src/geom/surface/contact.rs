@@ -15,12 +15,14 @@
 //! Where the contact is a curve rather than a point (the gap flat along one direction), it is
 //! followed on the true surfaces and comes back as one polyline ([`line`]).
 
+mod branch;
 mod line;
 
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
+use branch::contact_curve_near;
 use glam::{DVec2, DVec3};
-use line::{contact_curve, contact_curve_near, GapAt};
+use line::{contact_curve, GapAt};
 use std::cell::Cell;
 
 /// The contacts of `a` and `b` (meshed as `ma`, `mb` within `seed_tol`) not on `curves`: a
@@ -307,7 +309,7 @@ impl Crossings<'_> {
         }
         let reach = 2.0 * self.len;
         let mut joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
-        line::run_into(&mut joined, self.contacts, (self.near, self.len), tol);
+        branch::run_into(&mut joined, self.contacts, (self.near, self.len), tol);
         joined
     }
 
