@@ -15,10 +15,12 @@
 //! Where the contact is a curve rather than a point (the gap flat along one direction), it is
 //! followed on the true surfaces and comes back as one polyline ([`line`]).
 
+mod branch;
 mod line;
 
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
+use branch::contact_curve_near;
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
 use std::cell::Cell;
@@ -224,7 +226,10 @@ fn regroup(
             .windows(2)
             .map(|w| w[0].distance(w[1]))
             .fold(0.0, f64::max);
-        if let Some(t) = contact_curve(a, gap, *uv, len, tol, chord_tol) {
+        // A seed curve partly off the traced contacts (where a crossing runs into one, points
+        // within the tolerance of both surfaces stray farther from it) can trace one again.
+        let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, &traced, near));
+        if let Some(t) = contact_curve_near(a, gap, *uv, len, tol, chord_tol).filter(fresh) {
             traced.push(t);
             steps.push(len);
         }
@@ -303,7 +308,9 @@ impl Crossings<'_> {
             self.extend(&mut pieces, &found);
         }
         let reach = 2.0 * self.len;
-        line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol)
+        let mut joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
+        branch::run_into(&mut joined, self.contacts, (self.near, self.len), tol);
+        joined
     }
 
     /// Carries on the last `new.len()` of `pieces` (each with the ends where it was cut off a

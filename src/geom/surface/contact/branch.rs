@@ -1,0 +1,127 @@
+//! Where a crossing runs into a tangent contact (a branch point: the gap across the contact
+//! flattens there to a triple root, its Hessian vanishes and gives no direction along), the
+//! contact is traced from a step off the point, and the crossing, whose march stops beside the
+//! contact, is carried on along its tangent to where it meets it.
+
+use super::line::{clamp_bounded, contact_curve, GapAt};
+use crate::geom::mesh::Polyline3;
+use crate::geom::surface::refine::Patch;
+use glam::{DVec2, DVec3};
+
+/// [`contact_curve`] through `uv0`, or, where none is traced from there, through a point a
+/// step `len` off it in one of eight directions (the first that gives one): `uv0` may be a
+/// branch point, where a crossing runs into the contact and the gap across flattens to a triple
+/// root, so its Hessian vanishes and gives no direction along.
+pub(crate) fn contact_curve_near(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    uv0: DVec2,
+    len: f64,
+    tol: f64,
+    chord_tol: f64,
+) -> Option<Polyline3> {
+    contact_curve(a, gap, uv0, len, tol, chord_tol).or_else(|| {
+        let mut w = uv0;
+        a.normalise(&mut w);
+        let (su, sv) = a.derivs(w);
+        let (lu, lv) = (su.length(), sv.length());
+        if !(lu > 0.0 && lv > 0.0) {
+            return None;
+        }
+        (0..8).find_map(|k| {
+            let (s, c) = (f64::from(k) * std::f64::consts::FRAC_PI_4).sin_cos();
+            let q = uv0 + DVec2::new(c * len / lu, s * len / lv);
+            if clamp_bounded(a, q) != q {
+                return None;
+            }
+            contact_curve(a, gap, q, len, tol, chord_tol)
+        })
+    })
+}
+
+/// The open `pieces` whose ends stop within 2·`near` of one of the `contacts` carried on to it
+/// where they run into it: the march stops beside a contact (whose double zero it could fall on),
+/// so a crossing meeting a contact at a branch point ended near/sin(angle) short of it. The
+/// end's tangent is carried on, up to `reach` (a step of the march), to where it passes within
+/// `tol` of a contact's segment (a crossing running alongside one never comes that near), and
+/// that point of the contact ends the piece.
+pub(crate) fn run_into(
+    pieces: &mut [Polyline3],
+    contacts: &[Polyline3],
+    (near, reach): (f64, f64),
+    tol: f64,
+) {
+    for c in pieces
+        .iter_mut()
+        .filter(|c| !c.closed && c.points.len() >= 2)
+    {
+        for end in 0..2 {
+            let mut pts: Vec<DVec3> = c.points.clone();
+            if end == 1 {
+                pts.reverse();
+            }
+            let p = pts[0];
+            // The march stopped at the last node beyond `near`.
+            if !super::near_any(p, contacts, 2.0 * near) {
+                continue;
+            }
+            // The tangent over a chord of about `near`: the last nodes can be a bisection's
+            // length apart, their direction off by the tolerance over that.
+            let far = pts.iter().find(|x| x.distance(p) >= near);
+            let q = *far.unwrap_or(&pts[pts.len() - 1]);
+            let t = (p - q).normalize_or_zero();
+            let hit = contacts
+                .iter()
+                .flat_map(|k| {
+                    let m = k.points.len();
+                    let segs = if k.closed { m } else { m.saturating_sub(1) };
+                    (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
+                })
+                .filter_map(|(x, y)| ray_meets(p, t, reach, (x, y), tol))
+                .min_by(|x, y| x.0.total_cmp(&y.0));
+            // Along the contact the hit is known only to `tol` over the sine of the angle: a
+            // contact's end that near (on a bounded edge, where the crossing ends too) is it.
+            let snap = |(s, at, sine): (f64, DVec3, f64)| {
+                let ends = contacts
+                    .iter()
+                    .filter(|k| !k.closed && !k.points.is_empty());
+                let end = ends
+                    .flat_map(|k| [k.points[0], k.points[k.points.len() - 1]])
+                    .find(|e| e.distance(at) <= 4.0 * tol / sine);
+                (s, end.unwrap_or(at))
+            };
+            if let Some((_, at)) = hit.map(snap) {
+                if end == 0 {
+                    c.points.insert(0, at);
+                } else {
+                    c.points.push(at);
+                }
+            }
+        }
+    }
+}
+
+/// Where the ray `p + s·t` (s in (0, reach]) passes within `tol` of the segment `xy`: s, the
+/// segment's point there, and the sine of their angle.
+fn ray_meets(
+    p: DVec3,
+    t: DVec3,
+    reach: f64,
+    (x, y): (DVec3, DVec3),
+    tol: f64,
+) -> Option<(f64, DVec3, f64)> {
+    let e = y - x;
+    let (a, b, c) = (t.dot(t), t.dot(e), e.dot(e));
+    let w = p - x;
+    let (d, f) = (t.dot(w), e.dot(w));
+    let den = a * c - b * b;
+    if den.is_nan() || den <= 0.0 {
+        return None;
+    }
+    let s = (b * f - c * d) / den;
+    let r = ((a * f - b * d) / den).clamp(0.0, 1.0);
+    let at = x + e * r;
+    let on = p + t * s;
+    let sine = (den / (a * c)).sqrt();
+    (s > 0.0 && s <= reach && on.distance(at) <= tol).then_some((s, at, sine))
+}
