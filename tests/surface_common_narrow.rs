@@ -8,44 +8,16 @@
 use lispcad::geom::curve::Curve;
 use lispcad::geom::surface::Surface;
 use lispcad::geom::DVec3;
-use std::f64::consts::{FRAC_PI_3, PI, TAU};
+use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::check_loops_reaching as check;
+use surface_support::{check_loops_reaching as check, u_profile, M1, M2, R};
 
 const GT: f64 = 1e-9;
-/// The arcs' radius.
-const R: f64 = 2.0;
-/// Arc segments before and after the flat (161 segments in all: the flat is 1/161 of the
-/// parameter range).
-const M1: usize = 70;
-const M2: usize = 90;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
-}
-
-/// A profile in local coordinates (s along the flat, t away from it): an arc of radius R
-/// through π/3 in `M1` segments down to (0, 0), the flat to (w, 0), an arc through π/3 in `M2`
-/// segments up again; both arcs are tangent to the flat and bend towards +t. `place` maps
-/// (s, t) to space; `ccw` says whether that map keeps the arcs counter-clockwise.
-fn u_profile(w: f64, place: impl Fn(f64, f64) -> DVec3, ccw: bool) -> Arc<Curve> {
-    let (d1, d2) = (FRAC_PI_3 / M1 as f64, FRAC_PI_3 / M2 as f64);
-    let mut pts = Vec::new();
-    for k in (0..=M1).rev() {
-        let f = k as f64 * d1;
-        pts.push(place(-R * f.sin(), R - R * f.cos()));
-    }
-    for k in 0..=M2 {
-        let f = k as f64 * d2;
-        pts.push(place(w + R * f.sin(), R - R * f.cos()));
-    }
-    let sign = if ccw { 1.0 } else { -1.0 };
-    let mut bulges = vec![sign * (d1 / 4.0).tan(); M1];
-    bulges.push(0.0);
-    bulges.extend(vec![sign * (d2 / 4.0).tan(); M2]);
-    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
 }
 
 #[test]

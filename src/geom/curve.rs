@@ -230,10 +230,11 @@ impl Curve {
             Curve::Arc(a) => one(Piece::Arc(*a)),
             Curve::Polyline(p) => {
                 let n = p.segment_count();
-                p.segments()
+                p.built_segments()
+                    .iter()
                     .enumerate()
                     .map(|(i, s)| Span {
-                        piece: match s {
+                        piece: match *s {
                             Segment::Line(l) => Piece::Line(l),
                             Segment::Arc(a) => Piece::Arc(a),
                         },
@@ -267,36 +268,12 @@ impl Curve {
         (i, ((t - s.t0) / (s.t1 - s.t0)).clamp(0.0, 1.0))
     }
 
-    /// The span holding public parameter t and the piece parameter there, as [`Self::locate`]
-    /// finds them in [`Self::spans`] (the same arithmetic, so the same bits); a polyline's one
-    /// segment is built alone, since surfaces of its profile evaluate it millions of times.
+    /// The span holding public parameter t and the piece parameter there (a polyline's are
+    /// found without the spans: [`Polyline::segment_at`]).
     fn span_at(&self, t: f64) -> (Span, f64) {
-        let Curve::Polyline(p) = self else {
-            let mut spans = self.spans();
-            let (i, s) = Curve::locate(&spans, t);
-            return (spans.swap_remove(i), s);
-        };
-        let t = t.clamp(0.0, 1.0);
-        let n = p.segment_count();
-        let t1 = |i: usize| (i + 1) as f64 / n as f64;
-        // partition_point over the segment indices, without the spans.
-        let (mut lo, mut hi) = (0, n);
-        while lo < hi {
-            let mid = (lo + hi) / 2;
-            if t1(mid) <= t {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        let i = lo.min(n - 1);
-        let piece = match p.segment(i) {
-            Segment::Line(l) => Piece::Line(l),
-            Segment::Arc(a) => Piece::Arc(a),
-        };
-        let (t0, t1) = (i as f64 / n as f64, t1(i));
-        let s = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0);
-        (Span { piece, t0, t1 }, s)
+        let mut spans = self.spans();
+        let (i, s) = Curve::locate(&spans, t);
+        (spans.swap_remove(i), s)
     }
 
     /// `(point-at c t)`: the point at public parameter t in [0, 1] (clamped; NaN reads as 0).
@@ -309,10 +286,10 @@ impl Curve {
             Curve::Spline(q) => q.eval(t),
             Curve::BSpline(b) => b.eval(t.clamp(0.0, 1.0)),
             Curve::Ellipse(e) => e.point_at_angle(e.angle_at(t)),
-            Curve::Polyline(_) => {
-                let (span, s) = self.span_at(t);
-                span.piece.eval(s)
-            }
+            Curve::Polyline(p) => match p.segment_at(t) {
+                (Segment::Line(l), s, ..) => l.eval(s),
+                (Segment::Arc(a), s, ..) => a.eval(s),
+            },
         }
     }
 
@@ -323,6 +300,10 @@ impl Curve {
             Curve::Line(l) => l.dir(),
             Curve::Circle(c) => c.deriv(t.clamp(0.0, 1.0)),
             Curve::Arc(a) => a.deriv(t.clamp(0.0, 1.0)),
+            Curve::Polyline(p) => match p.segment_at(t) {
+                (Segment::Line(l), _, t0, t1) => l.dir() / (t1 - t0),
+                (Segment::Arc(a), s, t0, t1) => a.deriv(s) / (t1 - t0),
+            },
             _ => {
                 let (span, s) = self.span_at(t);
                 span.piece.deriv(s) / (span.t1 - span.t0)

@@ -1,14 +1,15 @@
 //! What the surface-intersection tests share: the cylinders built through the mesh-path kinds,
 //! a one-line summary of a result for assertion messages, `lispcad eval` of one expression, and
 //! the check that two surfaces'
-//! common region comes back as the expected closed loops, the same bits on every run.
+//! common region comes back as the expected closed loops, the same bits on every run, and the
+//! narrow-flat profile of the common-region tests.
 #![allow(dead_code)] // each test file uses its own part of this module
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_tol, Surface};
 use lispcad::geom::DVec3;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_3, PI};
 use std::process::Command;
 use std::sync::Arc;
 
@@ -64,26 +65,48 @@ pub fn check_loops(
 ) -> Vec<Vec<Polyline3>> {
     [(a, b), (b, a)]
         .into_iter()
-        .map(|(x, y)| {
-            let r = meet(x, y);
-            assert_eq!(r.len(), loops, "{}", summary(&r));
-            assert!(r.iter().all(|c| c.closed), "{}", summary(&r));
-            let total: f64 = r.iter().map(Polyline3::length).sum();
-            assert!(
-                (total - length).abs() <= 1e-6 * length,
-                "length {total} vs {length}"
-            );
-            for p in r.iter().flat_map(|c| &c.points) {
-                assert!(on(*p), "{p}");
-            }
-            for _ in 0..2 {
-                let again = meet(x, y);
-                assert!(again.len() == r.len());
-                assert!(again.iter().zip(&r).all(|(c, d)| c.points == d.points));
-            }
-            r
-        })
+        .map(|(x, y)| check_order(&meet, x, y, loops, length, &on))
         .collect()
+}
+
+/// [`check_loops`] of `meet(x, y)` in that order only.
+pub fn check_order(
+    meet: impl Fn(&Surface, &Surface) -> Vec<Polyline3>,
+    x: &Surface,
+    y: &Surface,
+    loops: usize,
+    length: f64,
+    on: impl Fn(DVec3) -> bool,
+) -> Vec<Polyline3> {
+    let r = meet(x, y);
+    assert_eq!(r.len(), loops, "{}", summary(&r));
+    assert!(r.iter().all(|c| c.closed), "{}", summary(&r));
+    let total: f64 = r.iter().map(Polyline3::length).sum();
+    assert!(
+        (total - length).abs() <= 1e-6 * length,
+        "length {total} vs {length}"
+    );
+    for p in r.iter().flat_map(|c| &c.points) {
+        assert!(on(*p), "{p}");
+    }
+    for _ in 0..2 {
+        let again = meet(x, y);
+        assert!(again.len() == r.len());
+        assert!(again.iter().zip(&r).all(|(c, d)| c.points == d.points));
+    }
+    r
+}
+
+/// The intersection at CHORDTOL 1e-6 and GEOMTOL 1e-9.
+fn meet_fine(x: &Surface, y: &Surface) -> Vec<Polyline3> {
+    surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap()
+}
+
+/// Whether each edge in `reach` is met by some point of `r`.
+fn reaches(r: &[Polyline3], reach: &[&dyn Fn(DVec3) -> bool]) {
+    for (k, e) in reach.iter().enumerate() {
+        assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
+    }
 }
 
 /// `check_loops` of `surface_intersect_tol` at CHORDTOL 1e-6 and GEOMTOL 1e-9, and each edge in
@@ -96,12 +119,21 @@ pub fn check_loops_reaching(
     on: impl Fn(DVec3) -> bool,
     reach: &[&dyn Fn(DVec3) -> bool],
 ) {
-    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
-    for r in check_loops(meet, a, b, loops, length, on) {
-        for (k, e) in reach.iter().enumerate() {
-            assert!(r.iter().flat_map(|c| &c.points).any(|p| e(*p)), "edge {k}");
-        }
+    for r in check_loops(meet_fine, a, b, loops, length, on) {
+        reaches(&r, reach);
     }
+}
+
+/// [`check_loops_reaching`] in the order (a, b) only.
+pub fn check_order_reaching(
+    a: &Surface,
+    b: &Surface,
+    loops: usize,
+    length: f64,
+    on: impl Fn(DVec3) -> bool,
+    reach: &[&dyn Fn(DVec3) -> bool],
+) {
+    reaches(&check_order(meet_fine, a, b, loops, length, on), reach);
 }
 
 /// What `lispcad eval EXPR` prints, trimmed; the command must succeed.
@@ -116,4 +148,33 @@ pub fn eval(expr: &str) -> String {
         String::from_utf8_lossy(&out.stderr)
     );
     String::from_utf8(out.stdout).unwrap().trim().to_string()
+}
+
+/// The arcs' radius.
+pub const R: f64 = 2.0;
+/// Arc segments before and after the flat (161 segments in all: the flat is 1/161 of the
+/// parameter range).
+pub const M1: usize = 70;
+pub const M2: usize = 90;
+
+/// A profile in local coordinates (s along the flat, t away from it): an arc of radius R
+/// through π/3 in `M1` segments down to (0, 0), the flat to (w, 0), an arc through π/3 in `M2`
+/// segments up again; both arcs are tangent to the flat and bend towards +t. `place` maps
+/// (s, t) to space; `ccw` says whether that map keeps the arcs counter-clockwise.
+pub fn u_profile(w: f64, place: impl Fn(f64, f64) -> DVec3, ccw: bool) -> Arc<Curve> {
+    let (d1, d2) = (FRAC_PI_3 / M1 as f64, FRAC_PI_3 / M2 as f64);
+    let mut pts = Vec::new();
+    for k in (0..=M1).rev() {
+        let f = k as f64 * d1;
+        pts.push(place(-R * f.sin(), R - R * f.cos()));
+    }
+    for k in 0..=M2 {
+        let f = k as f64 * d2;
+        pts.push(place(w + R * f.sin(), R - R * f.cos()));
+    }
+    let sign = if ccw { 1.0 } else { -1.0 };
+    let mut bulges = vec![sign * (d1 / 4.0).tan(); M1];
+    bulges.push(0.0);
+    bulges.extend(vec![sign * (d2 / 4.0).tan(); M2]);
+    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
 }

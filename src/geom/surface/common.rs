@@ -19,6 +19,7 @@
 
 mod edge;
 mod seed;
+mod walk;
 
 use super::hits::point_in_polygon;
 use super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};

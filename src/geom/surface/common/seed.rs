@@ -12,15 +12,17 @@
 //! gets grid lines at an eighth of its width across it in each direction where it is narrower
 //! than two cells; the tracer then classifies and traces it as any other region.
 //!
-//! The fine lines are placed from the width measured at the seed: a thin region lying oblique
-//! to the parameter lines, or one whose width changes along its length by more than the fine
-//! lines allow, can still be missed.
+//! A region oblique to the parameter lines, or whose width changes along its length, is
+//! followed from the seed and gets lines wherever it passes ([`super::walk`]).
 
+use super::walk::Station;
 use super::{Tracer, N};
 use glam::DVec2;
 
 /// Cells per direction of the grid whose gap minima are followed.
 const S: usize = 16;
+/// A seed cell's width, in parameters.
+pub(super) const SEED_CELL: f64 = 1.0 / S as f64;
 /// Most minima followed, smallest gap first.
 const CANDIDATES: usize = 12;
 /// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
@@ -38,29 +40,35 @@ type Band = [Option<(f64, f64)>; 2];
 
 impl Tracer<'_, '_> {
     /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
-    /// one found; false when none is found.
+    /// one found, followed along its length ([`super::walk`]); false when none is found.
     pub(super) fn refine_narrow(&mut self) -> bool {
-        let mut bands: Vec<Band> = Vec::new();
+        let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
+        let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
+            bands
+                .iter()
+                .any(|(b, w)| t.covers(b, uv) || (0..2).any(|k| t.walked(k, &w[k], uv)))
+        };
         for uv in self.candidates() {
-            if bands.iter().any(|b| self.covers(b, uv)) {
+            if seen(self, &bands, uv) {
                 continue;
             }
             let Some(q) = self.descend(uv) else { continue };
-            if bands.iter().any(|b| self.covers(b, q)) {
+            if seen(self, &bands, q) {
                 continue;
             }
             if let Some(b) = self.band(q) {
                 let wide = b.iter().all(Option::is_none);
-                bands.push(b);
+                bands.push((b, [self.walk(q, 0), self.walk(q, 1)]));
                 if wide {
                     break;
                 }
             }
         }
-        for b in &bands {
+        for (b, walks) in &bands {
             for (k, e) in b.iter().enumerate() {
-                if let Some((lo, hi)) = *e {
-                    self.add_lines(k, lo, hi);
+                match *e {
+                    Some((lo, hi)) if self.steady(&walks[k], lo, hi) => self.add_lines(k, lo, hi),
+                    _ => self.spread_lines(k, &walks[k]),
                 }
             }
         }
@@ -134,7 +142,7 @@ impl Tracer<'_, '_> {
     }
 
     /// The least gap found along direction `k` within a seed cell of `uv` (whose gap is `g`).
-    fn golden(&self, uv: DVec2, k: usize, g: f64) -> (DVec2, f64) {
+    pub(super) fn golden(&self, uv: DVec2, k: usize, g: f64) -> (DVec2, f64) {
         let h = 1.0 / S as f64;
         let (mut a, mut b) = (uv[k] - h, uv[k] + h);
         if !self.periodic[k] {
@@ -210,7 +218,7 @@ impl Tracer<'_, '_> {
     /// the tolerance over a band too, but it grows as a power of the distance from the contact
     /// line: a square law gives a quarter of the tolerance there, a sixth power 1/64; a region
     /// is flat to rounding.
-    fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> bool {
+    pub(super) fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> bool {
         let (mid, quarter) = (0.5 * (lo + hi), 0.25 * (hi - lo));
         [mid - quarter, mid + quarter].into_iter().all(|x| {
             let mut p = q;

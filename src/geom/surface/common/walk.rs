@@ -1,0 +1,169 @@
+//! Following a narrow region along its length, for regions the seed's one measure of width
+//! does not describe: a band lying oblique to the parameter lines (narrow along u and along v,
+//! its place moving across the domain) or one whose width changes along its length.
+//!
+//! From the seed the band is walked in half-cell stations along one parameter direction; at
+//! each it is found again across the other (from where the last two stations put it) and its
+//! extent measured there. A band whose extent stays the seed's gets the seed's fine lines, as
+//! before; otherwise lines at a quarter of its least width are spread over all the places it
+//! passes through, so every station's cross-section holds some and the band is connected on
+//! the grid. The lines are global, so an oblique band costs (its range / its width)² nodes:
+//! [`MOST_LINES`] bounds them per direction.
+
+use super::seed::W_MIN;
+use super::{Tracer, N};
+use glam::DVec2;
+
+/// Station spacing along a band, in parameters.
+const STEP: f64 = 0.5 / N as f64;
+/// Most lines spread across one band in one direction (a 0.002-wide band across the whole
+/// domain).
+const MOST_LINES: usize = 500;
+/// Bisection steps when measuring a station's extent (to 1/4096 of the bracket).
+const STEPS: usize = 12;
+
+/// A station: its place along the walked direction and the band's extent across it.
+pub(super) type Station = (f64, f64, f64);
+
+impl Tracer<'_, '_> {
+    /// The band through `q` (on the target) measured across direction `k` at stations along
+    /// the other direction, both ways until the region ends there (or at a domain edge, or
+    /// half a turn each way round a seam). Stations where the band is two cells wide or more
+    /// either side are passed over but not kept.
+    pub(super) fn walk(&self, q: DVec2, k: usize) -> Vec<Station> {
+        let m = 1 - k;
+        let w_min = W_MIN * self.patch.scale();
+        let mut out = Vec::new();
+        for dir in [1.0, -1.0] {
+            let (mut centre, mut slope) = (q[k], 0.0);
+            for j in 0.. {
+                if dir < 0.0 && j == 0 {
+                    continue; // station 0 is walked once
+                }
+                let along = j as f64 * STEP;
+                let mut p = q;
+                p[m] = q[m] + dir * along;
+                if self.periodic[m] && along > 0.5
+                    || !self.periodic[m] && !(0.0..=1.0).contains(&p[m])
+                {
+                    break;
+                }
+                p[k] = centre + slope;
+                if !self.on(p) {
+                    let Some(g) = self.gap_at(p) else { break };
+                    p = self.golden(p, k, g).0;
+                    if !self.on(p) {
+                        break;
+                    }
+                }
+                let (lo, hi) = (self.extent(p, k, -1.0), self.extent(p, k, 1.0));
+                let mid = match (lo, hi) {
+                    (Some(lo), Some(hi)) => {
+                        let (du, dv) = self.patch.derivs(p);
+                        let speed = if k == 0 { du.length() } else { dv.length() };
+                        if (hi - lo) * speed < w_min || !self.flat_between(p, k, lo, hi) {
+                            break;
+                        }
+                        out.push((p[m], lo, hi));
+                        0.5 * (lo + hi)
+                    }
+                    _ => p[k],
+                };
+                if j > 0 {
+                    slope = mid - centre;
+                }
+                centre = mid;
+            }
+        }
+        out
+    }
+
+    /// Where the region ends from `p` along direction `k` (sign `s`), to a 4096th of the last
+    /// doubling step; None when it goes on for two grid cells.
+    fn extent(&self, p: DVec2, k: usize, s: f64) -> Option<f64> {
+        let at = |d: f64| {
+            let mut x = p;
+            x[k] += s * d;
+            x
+        };
+        let (mut inside, mut d) = (0.0, 1e-6 / N as f64);
+        while d <= 2.0 / N as f64 {
+            if !self.on(at(d)) {
+                let mut outside = d;
+                for _ in 0..STEPS {
+                    let mid = 0.5 * (inside + outside);
+                    if self.on(at(mid)) {
+                        inside = mid;
+                    } else {
+                        outside = mid;
+                    }
+                }
+                return Some(p[k] + s * 0.5 * (inside + outside));
+            }
+            inside = d;
+            d *= 2.0;
+        }
+        None
+    }
+
+    /// Whether every station holds the extent `lo..hi` (to a sixteenth of its width): a band
+    /// running along the walk at a steady width, which the seed's own lines resolve.
+    pub(super) fn steady(&self, stations: &[Station], lo: f64, hi: f64) -> bool {
+        let e = (hi - lo) / 16.0;
+        stations
+            .iter()
+            .all(|&(_, l, h)| (l - lo).abs() <= e && (h - hi).abs() <= e)
+    }
+
+    /// Lines across direction `k` at a quarter of the narrowest station's width, over every
+    /// station's extent and as far again beyond, as the band moves between stations.
+    pub(super) fn spread_lines(&mut self, k: usize, stations: &[Station]) {
+        let narrow: Vec<&Station> = stations
+            .iter()
+            .filter(|s| s.2 - s.1 < 2.0 / N as f64)
+            .collect();
+        let Some(e) = narrow.iter().map(|s| s.2 - s.1).min_by(f64::total_cmp) else {
+            return;
+        };
+        let moved = narrow
+            .windows(2)
+            .map(|w| (0.5 * (w[1].1 + w[1].2 - w[0].1 - w[0].2)).abs())
+            .fold(0.0, f64::max);
+        let margin = e + moved;
+        let lo = narrow.iter().map(|s| s.1).fold(f64::MAX, f64::min) - margin;
+        let hi = narrow.iter().map(|s| s.2).fold(f64::MIN, f64::max) + margin;
+        let count = (((hi - lo) / (0.25 * e)).ceil() as usize).clamp(1, MOST_LINES);
+        let step = (hi - lo) / count as f64;
+        let lines = &mut self.lines[k];
+        for i in 0..count {
+            let mut x = lo + step * (i as f64 + 0.5);
+            if self.periodic[k] {
+                x = x.rem_euclid(1.0);
+            } else if !(x > 0.0 && x < 1.0) {
+                continue;
+            }
+            if lines.iter().all(|l| (l - x).abs() > 1e-12) {
+                lines.push(x);
+            }
+        }
+        lines.sort_by(f64::total_cmp);
+    }
+
+    /// Whether `uv` lies within a seed cell of a station's extent, half a station along.
+    pub(super) fn walked(&self, k: usize, stations: &[Station], uv: DVec2) -> bool {
+        let m = 1 - k;
+        let off = |a: f64, b: f64, periodic: bool| {
+            let d = a - b;
+            if periodic {
+                d - d.round()
+            } else {
+                d
+            }
+        };
+        stations.iter().any(|&(at, lo, hi)| {
+            off(uv[m], at, self.periodic[m]).abs() <= 0.5 * STEP
+                && off(uv[k], 0.5 * (lo + hi), self.periodic[k]).abs()
+                    <= 0.5 * (hi - lo) + super::seed::SEED_CELL
+        })
+    }
+}
