@@ -11,7 +11,8 @@ use glam::{DVec2, DVec3};
 /// [`contact_curve`] through `uv0`, or, where none is traced from there, through a point a
 /// step `len` off it in one of eight directions (the first that gives one): `uv0` may be a
 /// branch point, where a crossing runs into the contact and the gap across flattens to a triple
-/// root, so its Hessian vanishes and gives no direction along.
+/// root, so its Hessian vanishes and gives no direction along. Not from within a step of a
+/// common region.
 pub(crate) fn contact_curve_near(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
@@ -28,9 +29,20 @@ pub(crate) fn contact_curve_near(
         if !(lu > 0.0 && lv > 0.0) {
             return None;
         }
-        (0..8).find_map(|k| {
-            let (s, c) = (f64::from(k) * std::f64::consts::FRAC_PI_4).sin_cos();
-            let q = uv0 + DVec2::new(c * len / lu, s * len / lv);
+        let steps: Vec<DVec2> = (0..8)
+            .map(|k| {
+                let (s, c) = (f64::from(k) * std::f64::consts::FRAC_PI_4).sin_cos();
+                uv0 + DVec2::new(c * len / lu, s * len / lv)
+            })
+            .collect();
+        // From a branch point only the two steps along the contact stay on both surfaces;
+        // more lie in or at the edge of a common region (flat all across it), whose edge a
+        // surface folding away tangentially would give as a contact.
+        let on_both = steps.iter().filter(|q| gap(**q).dist <= tol).count();
+        if on_both > 2 {
+            return None;
+        }
+        steps.into_iter().find_map(|q| {
             if clamp_bounded(a, q) != q {
                 return None;
             }
