@@ -263,16 +263,21 @@ impl Tracer<'_, '_> {
         let (c, e) = (0.5 * (lo + hi), hi - lo);
         let lines = &mut self.lines[k];
         for i in -8..8 {
-            let mut x = c + e * (i as f64 + 0.5) / 8.0;
-            if self.periodic[k] {
-                x = x.rem_euclid(1.0);
-            } else if !(x > 0.0 && x < 1.0) {
-                continue;
-            }
-            if lines.iter().all(|l| (l - x).abs() > 1e-12) {
-                lines.push(x);
-            }
+            add_line(lines, self.periodic[k], c + e * (i as f64 + 0.5) / 8.0);
         }
         lines.sort_by(f64::total_cmp);
+    }
+}
+
+/// Adds the grid line `x` (wrapped into the domain where periodic, dropped outside it where
+/// not) unless one lies within rounding of it; the caller sorts the lines after.
+pub(super) fn add_line(lines: &mut Vec<f64>, periodic: bool, mut x: f64) {
+    if periodic {
+        x = x.rem_euclid(1.0);
+    } else if !(x > 0.0 && x < 1.0) {
+        return;
+    }
+    if lines.iter().all(|l| (l - x).abs() > 1e-12) {
+        lines.push(x);
     }
 }

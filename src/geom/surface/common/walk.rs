@@ -10,7 +10,7 @@
 //! the grid. The lines are global, so an oblique band costs (its range / its width)² nodes:
 //! [`MOST_LINES`] bounds them per direction.
 
-use super::seed::W_MIN;
+use super::seed::{add_line, W_MIN};
 use super::{Tracer, N};
 use glam::DVec2;
 
@@ -136,15 +136,7 @@ impl Tracer<'_, '_> {
         let step = (hi - lo) / count as f64;
         let lines = &mut self.lines[k];
         for i in 0..count {
-            let mut x = lo + step * (i as f64 + 0.5);
-            if self.periodic[k] {
-                x = x.rem_euclid(1.0);
-            } else if !(x > 0.0 && x < 1.0) {
-                continue;
-            }
-            if lines.iter().all(|l| (l - x).abs() > 1e-12) {
-                lines.push(x);
-            }
+            add_line(lines, self.periodic[k], lo + step * (i as f64 + 0.5));
         }
         lines.sort_by(f64::total_cmp);
     }
