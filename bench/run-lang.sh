@@ -7,7 +7,8 @@
 #   - paired ratios lispcad/peer: each rep's lispcad run is divided by the same rep's peer run
 #     (adjacent in time, so they saw the same load), and the median of those ratios is shown;
 #   - the peak resident memory (max RSS) of each, in MB, and its ratio.
-# The load average before and after is printed: say it when quoting the figures.
+# The load average before and after is printed: say it when quoting the figures. A peer not
+# installed is left out (bench/install-peers.sh installs Lua 5.4 and Guile 3.0).
 #
 #   bench/run-lang.sh [REPS]        (LISPCAD=path overrides the binary; PROGS="fib list" picks;
 #                                    BEFORE=path adds an older lispcad as one more peer)
