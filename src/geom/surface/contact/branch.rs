@@ -68,19 +68,18 @@ pub(crate) fn run_into(
         .filter(|c| !c.closed && c.points.len() >= 2)
     {
         for end in 0..2 {
-            let mut pts: Vec<DVec3> = c.points.clone();
-            if end == 1 {
-                pts.reverse();
-            }
-            let p = pts[0];
+            let n = c.points.len();
+            // The points from this end inwards.
+            let inwards = |k: usize| c.points[if end == 0 { k } else { n - 1 - k }];
+            let p = inwards(0);
             // The march stopped at the last node beyond `near`.
             if !super::near_any(p, contacts, 2.0 * near) {
                 continue;
             }
             // The tangent over a chord of about `near`: the last nodes can be a bisection's
             // length apart, their direction off by the tolerance over that.
-            let far = pts.iter().find(|x| x.distance(p) >= near);
-            let q = *far.unwrap_or(&pts[pts.len() - 1]);
+            let far = (0..n).map(inwards).find(|x| x.distance(p) >= near);
+            let q = far.unwrap_or(inwards(n - 1));
             let t = (p - q).normalize_or_zero();
             let hit = contacts
                 .iter()
