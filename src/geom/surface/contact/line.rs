@@ -66,27 +66,70 @@ fn eigen([a, b, c]: [f64; 3]) -> [(f64, DVec2); 2] {
     }
 }
 
+/// The three-point derivative's bias over the second derivative (the shift it gives the
+/// extremum, in parameters) up to which Newton runs on three-point differences less the bias
+/// found at the start; a step of it this short has converged (the next is at the noise).
+const QUICK: f64 = 1e-9;
+
 /// The extremum of `h` on the line `uv + s·w` nearest `uv` (Newton on the derivative along `w`),
-/// with bounded parameters held in their domain. The derivative is the five-point difference:
-/// the three-point one is off by D²·h‴/6, which moves the extremum by that over h″; across a
-/// contact that flattens to an inflection (a crossing running into it) the shift grows without
-/// bound, and at the inflection Newton leapt off on it. A step that does not lessen the
-/// derivative is halved, and the search stops where none does (the derivative at its noise).
+/// with bounded parameters held in their domain. The three-point derivative is off by D²·h‴/6,
+/// which moves the extremum by that over h″ (1e-9 in parameters on a contact 1e-9 long, enough
+/// for a scan across from its end on a bounded edge to leave the domain), unbounded where the
+/// contact flattens to an inflection across (a crossing running into it): there Newton leapt
+/// off, or onto the gap's other extremum, a maximum beside the contact. The five-point
+/// derivative at the start measures the bias: below [`QUICK`], plain Newton on three-point
+/// differences less that bias (h‴ barely changes over the search; two or three steps);
+/// elsewhere [`settle_flat`].
 fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
     let f = |x: f64| h(uv + w * x);
-    let slope =
-        |x: f64| (8.0 * (f(x + D) - f(x - D)) - (f(x + 2.0 * D) - f(x - 2.0 * D))) / (12.0 * D);
+    let g5 = slope5(&f, 0.0);
+    let (p, z, m) = (f(D), f(0.0), f(-D));
+    let (g, c) = ((p - m) / (2.0 * D), (p - 2.0 * z + m) / (D * D));
+    if !(c.abs() > 0.0 && c.is_finite() && g.is_finite() && g5.is_finite()) {
+        return clamp_bounded(a, uv);
+    }
+    let bias = g - g5;
+    if bias.abs() > QUICK * c.abs() {
+        return clamp_bounded(a, uv + w * settle_flat(&f, g5, c));
+    }
+    let (mut s, mut step) = (0.0, (g5 / c).clamp(-0.05, 0.05));
+    for _ in 0..10 {
+        s -= step;
+        if step.abs() <= QUICK {
+            break;
+        }
+        let (m, z, p) = (f(s - D), f(s), f(s + D));
+        let (g, c) = ((p - m) / (2.0 * D) - bias, (p - 2.0 * z + m) / (D * D));
+        if !(c.abs() > 0.0 && c.is_finite() && g.is_finite()) {
+            break;
+        }
+        step = (g / c).clamp(-0.05, 0.05);
+    }
+    clamp_bounded(a, uv + w * s)
+}
+
+/// The five-point derivative of `f` at `x`.
+fn slope5(f: &dyn Fn(f64) -> f64, x: f64) -> f64 {
+    (8.0 * (f(x + D) - f(x - D)) - (f(x + 2.0 * D) - f(x - 2.0 * D))) / (12.0 * D)
+}
+
+/// The extremum of `f` nearest 0 (where its five-point derivative is `g` and its second
+/// derivative `c`) by Newton on the five-point derivative, where the three-point one is off: a
+/// step that does not lessen the derivative is halved, and the search stops where none does
+/// (the derivative at its noise).
+fn settle_flat(f: &dyn Fn(f64) -> f64, mut g: f64, mut c: f64) -> f64 {
     let mut s = 0.0;
-    let mut g = slope(s);
-    for _ in 0..20 {
-        let c = (f(s + D) - 2.0 * f(s) + f(s - D)) / (D * D);
+    for it in 0..20 {
+        if it > 0 {
+            c = (f(s + D) - 2.0 * f(s) + f(s - D)) / (D * D);
+        }
         if !(c.abs() > 0.0 && c.is_finite() && g.is_finite()) {
             break;
         }
         let mut step = (g / c).clamp(-0.05, 0.05);
         let mut next = None;
         for _ in 0..8 {
-            let gn = slope(s - step);
+            let gn = slope5(f, s - step);
             if gn.abs() < g.abs() {
                 next = Some(gn);
                 break;
@@ -100,7 +143,7 @@ fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
             break;
         }
     }
-    clamp_bounded(a, uv + w * s)
+    s
 }
 
 pub(super) fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
