@@ -309,7 +309,14 @@ impl Crossings<'_> {
         }
         let reach = 2.0 * self.len;
         let mut joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
-        branch::run_into(&mut joined, self.contacts, (self.near, self.len), tol);
+        branch::run_into(
+            self.a,
+            self.gap,
+            &mut joined,
+            self.contacts,
+            (self.near, self.len),
+            (tol, chord_tol),
+        );
         joined
     }
 

@@ -3,8 +3,9 @@
 //! contact is traced from a step off the point, and the crossing, whose march stops beside the
 //! contact, is carried on along its tangent to where it meets it.
 
-use super::line::{clamp_bounded, contact_curve, GapAt};
+use super::line::{between, clamp_bounded, contact_curve, delta, settle, GapAt};
 use crate::geom::mesh::Polyline3;
+use crate::geom::surface::refine::assemble;
 use crate::geom::surface::refine::Patch;
 use glam::{DVec2, DVec3};
 
@@ -55,14 +56,22 @@ pub(crate) fn contact_curve_near(
 /// where they run into it: the march stops beside a contact (whose double zero it could fall on),
 /// so a crossing meeting a contact at a branch point ended near/sin(angle) short of it. The
 /// end's tangent is carried on, up to `reach` (a step of the march), to where it passes within
-/// `tol` of a contact's segment (a crossing running alongside one never comes that near), and
-/// that point of the contact ends the piece.
+/// `near` of a contact's segment: the crossing's last points are within the tolerance of both
+/// surfaces but, the gap flattening there to a triple root, up to about `near` across, so the
+/// tangent is off by that over the chord it is taken on (a crossing running alongside a contact
+/// never comes within `near` of it). The meeting point is solved on the true surfaces (the
+/// extremum of the gap across the contact there) or, within near/sin(angle) of an open
+/// contact's end (a bounded edge the crossing runs into it at), is that end; the end's chord to
+/// it is densified on the crossing within `chord_tol`.
 pub(crate) fn run_into(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
     pieces: &mut [Polyline3],
     contacts: &[Polyline3],
     (near, reach): (f64, f64),
-    tol: f64,
+    (tol, chord_tol): (f64, f64),
 ) {
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
     for c in pieces
         .iter_mut()
         .filter(|c| !c.closed && c.points.len() >= 2)
@@ -88,38 +97,73 @@ pub(crate) fn run_into(
                     let segs = if k.closed { m } else { m.saturating_sub(1) };
                     (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
                 })
-                .filter_map(|(x, y)| ray_meets(p, t, reach, (x, y), tol))
-                .min_by(|x, y| x.0.total_cmp(&y.0));
-            // Along the contact the hit is known only to `tol` over the sine of the angle: a
-            // contact's end that near (on a bounded edge, where the crossing ends too) is it.
-            let snap = |(s, at, sine): (f64, DVec3, f64)| {
-                let ends = contacts
-                    .iter()
-                    .filter(|k| !k.closed && !k.points.is_empty());
-                let end = ends
-                    .flat_map(|k| [k.points[0], k.points[k.points.len() - 1]])
-                    .find(|e| e.distance(at) <= 4.0 * tol / sine);
-                (s, end.unwrap_or(at))
+                .filter_map(|seg| ray_meets(p, t, reach, seg, near).map(|h| (h, seg)))
+                .min_by(|x, y| x.0 .0.total_cmp(&y.0 .0));
+            let Some(((_, at, sine), seg)) = hit else {
+                continue;
             };
-            if let Some((_, at)) = hit.map(snap) {
-                if end == 0 {
-                    c.points.insert(0, at);
-                } else {
-                    c.points.push(at);
-                }
+            let from = (a.project(p, None), p);
+            let Some(to) = contact_end(a, contacts, at, near / sine, from.0)
+                .or_else(|| onto_contact(a, gap, at, seg, from.0, tol))
+            else {
+                continue;
+            };
+            let chord = assemble(&[from, to], false, |x| x.1, &mid_of, tol, chord_tol);
+            let more = chord.points.into_iter().skip(1);
+            if end == 0 {
+                c.points.splice(0..0, more.rev());
+            } else {
+                c.points.extend(more);
             }
         }
     }
 }
 
-/// Where the ray `p + s·t` (s in (0, reach]) passes within `tol` of the segment `xy`: s, the
+/// The end of an open one of `contacts` within `r` of `at`, with its parameters (from `near`).
+fn contact_end(
+    a: &Patch,
+    contacts: &[Polyline3],
+    at: DVec3,
+    r: f64,
+    near: DVec2,
+) -> Option<(DVec2, DVec3)> {
+    let ends = contacts
+        .iter()
+        .filter(|k| !k.closed && !k.points.is_empty());
+    let end = ends
+        .flat_map(|k| [k.points[0], k.points[k.points.len() - 1]])
+        .filter(|e| e.distance(at) <= r)
+        .min_by(|x, y| x.distance(at).total_cmp(&y.distance(at)))?;
+    Some((a.project(end, Some(near)), end))
+}
+
+/// The point of the contact beside `at` on the true surfaces: the extremum of the gap across the
+/// contact's segment `seg` (through `at`), when the surfaces meet there within `tol`.
+fn onto_contact(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    at: DVec3,
+    (x, y): (DVec3, DVec3),
+    near: DVec2,
+    tol: f64,
+) -> Option<(DVec2, DVec3)> {
+    let (ux, uy) = (a.project(x, Some(near)), a.project(y, Some(near)));
+    let across = delta(a, ux, uy).perp().try_normalize()?;
+    let h = |uv: DVec2| gap(uv).signed;
+    let mut uv = settle(a, &h, a.project(at, Some(near)), across);
+    a.normalise(&mut uv);
+    let g = gap(uv);
+    (g.dist <= tol).then_some((uv, g.point))
+}
+
+/// Where the ray `p + s·t` (s in (0, reach]) passes within `within` of the segment `xy`: s, the
 /// segment's point there, and the sine of their angle.
 fn ray_meets(
     p: DVec3,
     t: DVec3,
     reach: f64,
     (x, y): (DVec3, DVec3),
-    tol: f64,
+    within: f64,
 ) -> Option<(f64, DVec3, f64)> {
     let e = y - x;
     let (a, b, c) = (t.dot(t), t.dot(e), e.dot(e));
@@ -134,5 +178,5 @@ fn ray_meets(
     let at = x + e * r;
     let on = p + t * s;
     let sine = (den / (a * c)).sqrt();
-    (s > 0.0 && s <= reach && on.distance(at) <= tol).then_some((s, at, sine))
+    (s > 0.0 && s <= reach && on.distance(at) <= within).then_some((s, at, sine))
 }

@@ -80,7 +80,7 @@ const QUICK: f64 = 1e-9;
 /// derivative at the start measures the bias: below [`QUICK`], plain Newton on three-point
 /// differences less that bias (h‴ barely changes over the search; two or three steps);
 /// elsewhere [`settle_flat`].
-fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
+pub(super) fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
     let f = |x: f64| h(uv + w * x);
     let g5 = slope5(&f, 0.0);
     let (p, z, m) = (f(D), f(0.0), f(-D));
@@ -156,7 +156,7 @@ pub(super) fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
 }
 
 /// `y − x` the short way round in periodic directions.
-fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
+pub(super) fn delta(a: &Patch, x: DVec2, y: DVec2) -> DVec2 {
     let mut d = y - x;
     for k in 0..2 {
         if a.periodic()[k] {
@@ -393,7 +393,7 @@ pub(crate) fn crossings_alongside(
 
 /// The point of the crossing between two of its points `x` and `y`: the root of the gap across
 /// the chord from its midpoint in (u, v).
-fn between(
+pub(super) fn between(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     x: &(DVec2, DVec3),
