@@ -1,0 +1,249 @@
+//! Branch points on a curved tangent contact (issue 13): a crossing running into and through a
+//! contact that is a circle's arc, where the surface_contact_crossing sheet's contact is a line.
+//!
+//! The surface is a Coons patch over the quarter annulus 1 ≤ r ≤ 3, 0 ≤ θ ≤ π/2, bounded by
+//! two radial profiles and two arcs: z = w²(d(θ)(1 − w²) − w) with w = r − 2 and d linear in θ.
+//! Each radial profile is that quartic in w for its d, one Bézier span of degree 4 with control
+//! points evenly spaced in r (so r is linear in the parameter and z is exactly the quartic); the
+//! arcs lie at z = 1 (r = 1) and z = −1 (r = 3) whatever d, and the patch's blend of the four is
+//! then exactly r = 1 + 2u, θ = (π/2)·v, z as above (the z of the radial profiles is linear in d).
+//! Against the plane z = 0: a contact along the arc r = 2 (w = 0 a double root, the patch
+//! parallel to the plane there) of length π, and a crossing along w = W(d) = 2d/(1 + √(1 + 4d²)),
+//! the root of d(1 − w²) = w, passing through the contact where d = 0: a branch point, the gap
+//! across a triple root (−w³).
+
+use lispcad::geom::curve::Curve;
+use lispcad::geom::mesh::Polyline3;
+use lispcad::geom::surface::{surface_intersect_seeded, surface_section_seeded, Surface};
+use lispcad::geom::DVec3;
+use std::f64::consts::{FRAC_PI_2, PI};
+use std::sync::Arc;
+
+mod surface_support;
+use surface_support::summary;
+
+/// The product of two polynomials (coefficients from the constant term up).
+fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
+    let mut r = vec![0.0; p.len() + q.len() - 1];
+    for (i, a) in p.iter().enumerate() {
+        for (j, b) in q.iter().enumerate() {
+            r[i + j] += a * b;
+        }
+    }
+    r
+}
+
+/// The radial profile at angle `th` for `d`: z(w) = d·w² − d·w⁴ − w³ with w = 2u − 1, from its
+/// power coefficients in u to Bernstein ones, b_i = Σ_{j ≤ i} C(i, j)/C(4, j)·a_j.
+fn profile(d: f64, th: f64) -> Curve {
+    let w = [-1.0, 2.0];
+    let w2 = times(&w, &w);
+    let w3 = times(&w2, &w);
+    let w4 = times(&w3, &w);
+    let a: Vec<f64> = (0..5)
+        .map(|j| d * w2.get(j).unwrap_or(&0.0) - d * w4[j] - w3.get(j).unwrap_or(&0.0))
+        .collect();
+    let choose = |n: usize, k: usize| (0..k).fold(1.0, |c, m| c * (n - m) as f64 / (m + 1) as f64);
+    let ctrl: Vec<DVec3> = (0..5)
+        .map(|i| {
+            let b: f64 = (0..=i).map(|j| choose(i, j) / choose(4, j) * a[j]).sum();
+            let r = 1.0 + 2.0 * i as f64 / 4.0;
+            DVec3::new(r * th.cos(), r * th.sin(), b)
+        })
+        .collect();
+    Curve::bspline(ctrl, 4, None, None).unwrap()
+}
+
+/// The patch for d running from `d0` at θ = 0 to `d1` at θ = π/2.
+fn patch(d0: f64, d1: f64) -> Surface {
+    let arc = |r: f64, z: f64| {
+        Arc::new(Curve::arc(DVec3::new(0.0, 0.0, z), r, 0.0, FRAC_PI_2, Some(DVec3::Z)).unwrap())
+    };
+    Surface::boundary([
+        Arc::new(profile(d0, 0.0)),
+        arc(3.0, -1.0),
+        Arc::new(profile(d1, FRAC_PI_2)),
+        arc(1.0, 1.0),
+    ])
+    .unwrap()
+}
+
+/// The crossing's w for `d`.
+fn root(d: f64) -> f64 {
+    2.0 * d / (1.0 + (1.0 + 4.0 * d * d).sqrt())
+}
+
+/// The length of the crossing r = 2 + W(d(θ)) over [0, π/2]: ∫ √(r² + r′²) dθ by
+/// composite Simpson on 4096 panels (the integrand is smooth; error far under 1e-9).
+fn crossing_length(d0: f64, d1: f64) -> f64 {
+    let dd = (d1 - d0) / FRAC_PI_2;
+    let f = |th: f64| {
+        let d = d0 + dd * th;
+        let w = root(d);
+        // From d(1 − w²) = w: w′(d) = (1 − w²)/(1 + 2dw).
+        let dr = (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd;
+        let r = 2.0 + w;
+        (r * r + dr * dr).sqrt()
+    };
+    let n = 4096;
+    let h = FRAC_PI_2 / n as f64;
+    let mut s = f(0.0) + f(FRAC_PI_2);
+    for k in 1..n {
+        s += f(k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 };
+    }
+    s * h / 3.0
+}
+
+/// The contact and the crossing of [`patch`]`(d0, d1)` with z = 0: two open curves from θ = 0 to
+/// θ = π/2 (to 1e-9), the contact within max(|W|/4, 1e-3) of r = 2 and the crossing of
+/// r = 2 + W(d(θ)) (a point within 1e-9 of both surfaces near the branch point can be ∛1e-9
+/// off either), lengths π and the quadrature's to 1e-6, every point within 1e-9 of the plane
+/// and of the patch (its height difference times the cosine of the patch's slope).
+fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
+    assert_eq!(r.len(), 2, "{name}: {}", summary(r));
+    let d = |th: f64| d0 + (d1 - d0) * th / FRAC_PI_2;
+    let polar = |p: &DVec3| (p.x.hypot(p.y), p.y.atan2(p.x));
+    let on_line = |c: &Polyline3, k: f64| {
+        c.points.iter().all(|p| {
+            let (r, th) = polar(p);
+            let w = root(d(th));
+            (r - 2.0 - k * w).abs() <= (0.25 * w.abs()).max(1e-3)
+        })
+    };
+    let contact = r.iter().find(|c| on_line(c, 0.0));
+    let crossing = r.iter().find(|c| on_line(c, 1.0));
+    let (Some(contact), Some(crossing)) = (contact, crossing) else {
+        panic!("{name}: {}", summary(r));
+    };
+    assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
+    for (c, len) in [(contact, PI), (crossing, crossing_length(d0, d1))] {
+        assert!(!c.closed, "{name}: {}", summary(r));
+        for p in &c.points {
+            let (r, th) = polar(p);
+            let (w, dt) = (r - 2.0, d(th));
+            let z = w * w * (dt * (1.0 - w * w) - w);
+            let dz_dr = 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
+            let dz_dth = w * w * (1.0 - w * w) * (d1 - d0) / FRAC_PI_2 / r;
+            let cos = 1.0 / (1.0 + dz_dr * dz_dr + dz_dth * dz_dth).sqrt();
+            assert!(p.z.abs() <= 1e-9, "{name}: {p} off the plane");
+            assert!((p.z - z).abs() * cos <= 1e-9, "{name}: {p} off the patch");
+            assert!((1.0..=3.0).contains(&r), "{name}: {p}");
+            assert!((-1e-9..=FRAC_PI_2 + 1e-9).contains(&th), "{name}: {p}");
+        }
+        let ends = [c.points[0], c.points[c.points.len() - 1]].map(|p| polar(&p).1);
+        let (a, b) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
+        assert!(
+            a.abs() <= 1e-9 && (b - FRAC_PI_2).abs() <= 1e-9,
+            "{name}: {}",
+            summary(r)
+        );
+        assert!(
+            (c.length() - len).abs() <= 1e-6,
+            "{name}: {} vs {len}",
+            summary(r)
+        );
+    }
+}
+
+/// One way of asking for the intersection.
+type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
+
+/// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the
+/// plate z = 0 (a square wider than the patch), the seeding meshes made within `seed` and the
+/// curves densified within 1e-6; each run three times for the same bits.
+fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
+    let s = patch(d0, d1);
+    let plate = Surface::plane(vec![
+        DVec3::new(-4.0, -4.0, 0.0),
+        DVec3::new(4.0, -4.0, 0.0),
+        DVec3::new(4.0, 4.0, 0.0),
+        DVec3::new(-4.0, 4.0, 0.0),
+    ])
+    .unwrap();
+    let chord = 1e-6;
+    let runs: [(&str, Run); 3] = [
+        (
+            "section",
+            Box::new(|| {
+                surface_section_seeded(&s, DVec3::ZERO, DVec3::Z, seed, chord, 1e-9).unwrap()
+            }),
+        ),
+        (
+            "patch ∩ plate",
+            Box::new(|| surface_intersect_seeded(&s, &plate, seed, chord, 1e-9).unwrap()),
+        ),
+        (
+            "plate ∩ patch",
+            Box::new(|| surface_intersect_seeded(&plate, &s, seed, chord, 1e-9).unwrap()),
+        ),
+    ];
+    for (name, run) in runs
+        .iter()
+        .filter(|r| (r.0 == "plate ∩ patch") == plate_first)
+    {
+        let r = run();
+        let name = format!("{name} d = {d0}..{d1} seed {seed}");
+        check(&name, &r, (d0, d1));
+        for _ in 0..2 {
+            let again = run();
+            assert_eq!(again.len(), r.len());
+            assert!(again
+                .iter()
+                .zip(&r)
+                .all(|(c, e)| c.points == e.points && c.closed == e.closed));
+        }
+    }
+}
+
+/// The reference itself: the patch's points are where the closed form puts them (so the checks
+/// above test the intersection, not the construction).
+#[test]
+fn the_patch_is_the_closed_form() {
+    use lispcad::geom::surface::ParamSurface;
+    let (d0, d1) = (-0.1, 0.3);
+    let s = patch(d0, d1);
+    for i in 0..=8 {
+        for j in 0..=8 {
+            let (u, v) = (i as f64 / 8.0, j as f64 / 8.0);
+            let p = s.eval(u, v);
+            let (r, th) = (1.0 + 2.0 * u, FRAC_PI_2 * v);
+            let (w, d) = (r - 2.0, d0 + (d1 - d0) * v);
+            let q = DVec3::new(r * th.cos(), r * th.sin(), w * w * (d * (1.0 - w * w) - w));
+            assert!(p.distance(q) <= 1e-12, "{u} {v}: {p} vs {q}");
+        }
+    }
+}
+
+/// A crossing through a curved contact at an inner branch point (d = 0 at θ = π/8).
+#[test]
+fn a_crossing_through_a_curved_contact_comes_back_whole_with_it() {
+    for seed in [1e-2, 1e-3] {
+        both_curves_come_back((-0.1, 0.3), seed, false);
+    }
+}
+
+/// A crossing running into a curved contact at a branch point on the patch's edge θ = 0.
+#[test]
+fn a_crossing_running_into_a_curved_contact_at_an_edge_comes_back_with_it() {
+    for (d0, d1, seed) in [(0.0, 0.3, 1e-2), (0.3, 0.0, 1e-3)] {
+        both_curves_come_back((d0, d1), seed, false);
+    }
+}
+
+/// The same seen from the plate (the gap measured from the plate's parameters to the patch): open.
+/// At seed 1e-2 the crossing through the inner branch point comes back in two pieces ending
+/// about 0.0034 either side of it (neither joined nor run into the contact), and with the
+/// branch point on the edge a third curve, 29297 points and 18.03 long, wanders from the
+/// contact's end at θ = π/2 to beside the branch point.
+#[test]
+#[ignore = "open: plate ∩ patch loses the branch point (issue 13)"]
+fn a_crossing_into_a_curved_contact_seen_from_the_plane() {
+    for (d0, d1, seed) in [
+        (-0.1, 0.3, 1e-2),
+        (-0.1, 0.3, 1e-3),
+        (0.0, 0.3, 1e-2),
+        (0.3, 0.0, 1e-3),
+    ] {
+        both_curves_come_back((d0, d1), seed, true);
+    }
+}
