@@ -6,13 +6,13 @@
 //! leave the flat tangentially, so the edges are also the tangential-parting case.
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::surface::Surface;
+use lispcad::geom::surface::{surface_section_tol, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{check_loops_reaching as check, u_profile, M1, M2, R};
+use surface_support::{check_loops_reaching as check, check_order, u_profile, M1, M2, R};
 
 const GT: f64 = 1e-9;
 
@@ -68,6 +68,11 @@ fn a_ruled_strip_with_a_narrow_flat_on_a_plane() {
     let left = |p: DVec3| p.x.abs() <= GT && (p.z - 1.5).abs() <= 1.0;
     let right = |p: DVec3| (p.x - w).abs() <= GT && (p.z - 1.5).abs() <= 1.0;
     check(&strip, &wall, 1, 2.0 * (w + 3.0), on_rect, &[&left, &right]);
+    // The section by the plane y = 0: the same region.
+    let section =
+        |x: &Surface, _: &Surface| surface_section_tol(x, DVec3::ZERO, DVec3::Y, 1e-6, GT).unwrap();
+    let r = check_order(section, &strip, &wall, 1, 2.0 * (w + 3.0), on_rect);
+    assert!(r[0].points.iter().any(|p| left(*p)) && r[0].points.iter().any(|p| right(*p)));
 }
 
 /// The band y ∈ [2, 2 + w] on the cylinder ρ = 1 about the y axis, revolved from a profile

@@ -1,21 +1,19 @@
 //! Narrow common regions that do not run along a parameter line of the traced surface, or
-//! whose width changes along their length (issue 13). The traced surface is the unit square
-//! y = 0, 0 ≤ x, z ≤ 1, built as a ruled surface between two lines (u = x, v = z); the other
-//! is a ruled surface between two copies of the narrow-flat profile drawn in planes z = const
-//! (the arcs rise towards +y), whose flat lies on the square over a band written here in
-//! closed form: diagonal in (u, v), or narrowing from 0.08 to 0.02 across the square. The bands
-//! avoid the quick look's samples and the tracer's grid nodes, so only the seed search finds
-//! them.
+//! whose width changes along their length (issue 13). One surface is the unit square y = 0,
+//! 0 ≤ x, z ≤ 1, built as a ruled surface between two lines (u = x, v = z); the other is a
+//! ruled surface between two copies of the narrow-flat profile drawn in planes z = const (the
+//! arcs rise towards +y), whose flat lies on the square over a band written here in closed
+//! form: diagonal in (u, v), or narrowing from 0.08 to 0.02 across the square. The bands avoid
+//! the quick look's samples and the tracer's grid nodes, so only the seed search finds them.
 //!
-//! Only the order (square, other) is checked: it traces in the square's domain, where the band
-//! is oblique or narrowing. The other order traces in the profile surface's own domain, where
-//! the band runs along a parameter line at a steady width; it comes back as one loop of the
-//! right shape, but with boundary points up to √(2·(tol/2)·R) = 4.5e-5 off the true edge near
-//! the corners where the square's edge cuts the band. The diagonal band, traced in the square's
-//! domain, has such points too, spread along its long edges from those corners (densifying
-//! from a point beyond the edge keeps finding points beyond it), so it is checked to that
-//! threshold rather than to 1e-9: a defect of the edge extrapolation near corners, not of the
-//! seed search, left open.
+//! Both orders are checked to the same closed forms. In the order (square, other) the tracer
+//! works in the square's domain, where the band is oblique or narrowing; in the other, in the
+//! profile surface's own domain, where the band runs along a parameter line at a steady width.
+//! Where the square's edge cuts the band, boundary points near the corners stay up to
+//! √(2·(tol/2)·R) = 4.5e-5 off the true edge (the edge extrapolation steps off the square
+//! there; densifying from such a point keeps finding points beyond it), so the cases showing
+//! it are checked to [`CORNER`] rather than GEOMTOL: a defect of the edge location near
+//! corners, not of the seed search, left open. Tightening them is setting [`CORNER`] to `GT`.
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::surface::{surface_intersect_tol, Surface};
@@ -23,9 +21,14 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{check_order_reaching as check, summary, u_profile};
+use surface_support::{summary, u_profile, R};
 
 const GT: f64 = 1e-9;
+
+/// How far off the band's outline a boundary point may lie where the corner defect shows (see
+/// the module's note): the tracer's threshold where the surfaces part tangentially,
+/// √(2·(tol/2)·R) = 4.5e-5 for tol = 1e-9 and R = 2.
+const CORNER: f64 = 5e-5;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
@@ -39,16 +42,18 @@ fn square() -> Surface {
     )
 }
 
-/// Whether `p` lies on the segment from `a` to `b` (within GT).
-fn on_segment(p: DVec3, a: DVec3, b: DVec3) -> bool {
+/// The distance from `p` to the segment from `a` to `b`.
+fn to_segment(p: DVec3, a: DVec3, b: DVec3) -> f64 {
     let d = b - a;
     let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
-    p.distance(a + d * t) <= GT
+    p.distance(a + d * t)
 }
 
-/// Whether `p` lies on the closed polygon `q`.
-fn on_polygon(q: &[DVec3]) -> impl Fn(DVec3) -> bool + '_ {
-    move |p| (0..q.len()).any(|i| on_segment(p, q[i], q[(i + 1) % q.len()]))
+/// The distance from `p` to the closed polygon `q`.
+fn to_polygon(p: DVec3, q: &[DVec3]) -> f64 {
+    (0..q.len())
+        .map(|i| to_segment(p, q[i], q[(i + 1) % q.len()]))
+        .fold(f64::INFINITY, f64::min)
 }
 
 fn perimeter(q: &[DVec3]) -> f64 {
@@ -57,56 +62,97 @@ fn perimeter(q: &[DVec3]) -> f64 {
         .sum()
 }
 
-/// How far off the band's true edge the diagonal band's boundary points may lie: the tracer's
-/// threshold, where the gap of surfaces parting tangentially reaches its tolerance,
-/// √(2·(tol/2)·R) = 4.5e-5 for tol = 1e-9 and R = 2 (see the module's note).
-const THRESHOLD: f64 = 5e-5;
+/// A band of the square where the profile surface's flat lies on it: its outline
+/// (counter-clockwise from (x0(0), 0)) and where the flat runs at each z (from `x0(z)` to
+/// `x1(z)`; the arcs rise beyond, R − √(R² − s²) at s past the flat's edge).
+struct Band {
+    outline: [DVec3; 4],
+    flat: fn(f64) -> (f64, f64),
+}
+
+impl Band {
+    /// The height of the profile surface over the point (x, 0, z) near the band: the gap
+    /// along y, at least the distance between the surfaces there.
+    fn lift(&self, p: DVec3) -> f64 {
+        let (x0, x1) = (self.flat)(p.z);
+        let s = (x0 - p.x).max(p.x - x1).max(0.0);
+        R - (R * R - s * s).sqrt()
+    }
+}
+
+/// Both orders of the intersection of the square and `other`: one closed loop, every point on
+/// the square and on `other` within GEOMTOL, within `slack[order]` of the band's outline,
+/// every side reached at both ends and in the middle, the length the outline's (to 1e-6, or
+/// 1e-3 where the slack is looser), and two more runs giving the same bits.
+fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
+    let sq = square();
+    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
+    let q = &band.outline;
+    for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
+        let slack = slack[order];
+        let r = meet(x, y);
+        let name = if order == 0 {
+            "square, other"
+        } else {
+            "other, square"
+        };
+        assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
+        assert!(r[0].closed, "{name}: {}", summary(&r));
+        for p in &r[0].points {
+            assert!(p.y.abs() <= GT, "{name}: {p} off the square");
+            assert!(
+                (p.y - band.lift(*p)).abs() <= GT,
+                "{name}: {p} off the other"
+            );
+            assert!(
+                to_polygon(*p, q) <= slack,
+                "{name}: {p} off the band's outline"
+            );
+        }
+        for i in 0..4 {
+            let (a, b) = (q[i], q[(i + 1) % 4]);
+            for f in [0.02, 0.5, 0.98] {
+                let x = a.lerp(b, f);
+                let near = |p: &&DVec3| p.distance(x) <= 0.05 && to_segment(**p, a, b) <= slack;
+                assert!(
+                    r[0].points.iter().any(|p| near(&p)),
+                    "{name}: side {i} at {f}"
+                );
+            }
+        }
+        // Where the corner defect shows, the points off the outline zigzag along the long
+        // sides, lengthening the loop by up to a thousandth.
+        let (length, want) = (r[0].length(), perimeter(q));
+        let within = if slack > GT { 1e-3 } else { 1e-6 } * want;
+        assert!(
+            (length - want).abs() <= within,
+            "{name}: length {length} vs {want}"
+        );
+        for _ in 0..2 {
+            assert_eq!(meet(x, y)[0].points, r[0].points, "{name}: another run");
+        }
+    }
+}
 
 #[test]
 fn a_narrow_flat_running_diagonally_across_the_square() {
     // The flat, 0.02 wide along x, runs along (1, 0, 1) over the band c0 ≤ x − z ≤ c1: no grid
     // node (x − z a multiple of 1/32 or 1/16) and no sample (a multiple of 1/12) lies on it.
-    let (c0, c1) = (0.035, 0.055);
-    let prof = |z: f64| u_profile(c1 - c0, move |s, t| v(c0 + z + s, t, z), true);
+    // (On main before the walk: 7 short loops, one around each seed.)
+    const C0: f64 = 0.035;
+    const C1: f64 = 0.055;
+    let prof = |z: f64| u_profile(C1 - C0, move |s, t| v(C0 + z + s, t, z), true);
     let strip = Surface::ruled(prof(-1.5), prof(2.5));
-    let band = [
-        v(c0, 0.0, 0.0),
-        v(c1, 0.0, 0.0),
-        v(1.0, 0.0, 1.0 - c1),
-        v(1.0, 0.0, 1.0 - c0),
-    ];
-    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
-    let r = meet(&square(), &strip);
-    // One loop round the whole band (on main: 7 short loops, one around each seed).
-    assert_eq!(r.len(), 1, "{}", summary(&r));
-    assert!(r[0].closed);
-    let near = |p: DVec3, a: DVec3, b: DVec3| {
-        let d = b - a;
-        let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
-        p.distance(a + d * t) <= THRESHOLD
+    let band = Band {
+        outline: [
+            v(C0, 0.0, 0.0),
+            v(C1, 0.0, 0.0),
+            v(1.0, 0.0, 1.0 - C1),
+            v(1.0, 0.0, 1.0 - C0),
+        ],
+        flat: |z| (C0 + z, C1 + z),
     };
-    for p in &r[0].points {
-        assert!(p.y.abs() <= GT, "{p}");
-        assert!((0..4).any(|i| near(*p, band[i], band[(i + 1) % 4])), "{p}");
-    }
-    // Every side of the band is reached, each long side at both ends and in the middle.
-    for (a, b) in [(0, 1), (1, 2), (2, 3), (3, 0)] {
-        for f in [0.02, 0.5, 0.98] {
-            let x = band[a].lerp(band[b], f);
-            assert!(
-                r[0].points.iter().any(|p| p.distance(x) <= 0.05),
-                "side {a}{b} at {f}"
-            );
-        }
-    }
-    let length = r[0].length();
-    assert!(
-        (length - perimeter(&band)).abs() <= 1e-3 * length,
-        "{length}"
-    );
-    for _ in 0..2 {
-        assert_eq!(meet(&square(), &strip)[0].points, r[0].points);
-    }
+    check_both(&strip, &band, [CORNER, CORNER]);
 }
 
 #[test]
@@ -114,27 +160,20 @@ fn a_narrow_flat_narrowing_across_the_square() {
     // The flat runs along z over c0 ≤ x ≤ c0 + w(z), w falling linearly from 0.08 at z = 0 to
     // 0.02 at z = 1 (the ruled surface runs from z = −0.2 to 1.2). Its narrow end lies between
     // grid lines, its wide end between samples.
-    let c0 = 0.128;
-    let w = |z: f64| 0.08 - 0.06 * z;
-    let prof = |z: f64| u_profile(w(z), move |s, t| v(c0 + s, t, z), true);
+    const C0: f64 = 0.128;
+    fn w(z: f64) -> f64 {
+        0.08 - 0.06 * z
+    }
+    let prof = |z: f64| u_profile(w(z), move |s, t| v(C0 + s, t, z), true);
     let wedge = Surface::ruled(prof(-0.2), prof(1.2));
-    let band = [
-        v(c0, 0.0, 0.0),
-        v(c0 + w(0.0), 0.0, 0.0),
-        v(c0 + w(1.0), 0.0, 1.0),
-        v(c0, 0.0, 1.0),
-    ];
-    let near = |a: DVec3, b: DVec3| move |p: DVec3| on_segment(p, a, b) && p.z > 0.4 && p.z < 0.9;
-    let (left, right) = (near(band[3], band[0]), near(band[1], band[2]));
-    let top = |p: DVec3| (p.z - 1.0).abs() <= GT;
-    let bottom = |p: DVec3| p.z.abs() <= GT;
-    let reach: [&dyn Fn(DVec3) -> bool; 4] = [&left, &right, &top, &bottom];
-    check(
-        &square(),
-        &wedge,
-        1,
-        perimeter(&band),
-        on_polygon(&band),
-        &reach,
-    );
+    let band = Band {
+        outline: [
+            v(C0, 0.0, 0.0),
+            v(C0 + w(0.0), 0.0, 0.0),
+            v(C0 + w(1.0), 0.0, 1.0),
+            v(C0, 0.0, 1.0),
+        ],
+        flat: |z| (C0, C0 + w(z)),
+    };
+    check_both(&wedge, &band, [GT, CORNER]);
 }

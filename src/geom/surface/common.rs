@@ -46,6 +46,9 @@ const K: usize = 12;
 /// looked for when a crossing may run along it: off the crossing by far more than the
 /// tolerance allows, near enough that a curved region edge is straight across the two lines.
 const OFF_LINE: f64 = 1e-4;
+/// The rounding of a gap, relative to the surface's size and distance from the origin, kept
+/// off the tolerance where the tracer tests it (a thousand times a double's).
+const ROUNDING: f64 = 1e-13;
 /// How far from a curve's middle point (as a fraction of the surface's size) the surfaces must
 /// still coincide for the curve to lie in their common region: as [`super::beside`]'s probes.
 const PROBE: f64 = 1e-4;
@@ -154,21 +157,21 @@ pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) 
         return None;
     }
     let (ta, tb) = (Target::of(a), Target::of(b));
-    let on_b = on_count(a, &tb, tol);
-    let on_a = on_count(b, &ta, tol);
+    let (on_b, level_b) = on_samples(a, &tb, tol);
+    let (on_a, level_a) = on_samples(b, &ta, tol);
     if on_a == 0 && on_b == 0 {
         // No sample lies on the other surface: a region, if any, is narrower than the samples'
         // spacing; it is looked for from where the gap vanishes, in each free-form domain.
         return [(a, &tb), (b, &ta)]
             .into_iter()
             .filter(|(s, _)| free_form(s))
-            .find_map(|(s, t)| trace(s, t, tol, chord_tol, true));
+            .find_map(|(s, t)| trace(s, t, tol, chord_tol, None));
     }
     // Trace in the domain of the one lying more on the other (a plane region has none).
     let a_first = !matches!(a, Surface::Plane(_))
         && (matches!(b, Surface::Plane(_)) || on_b * sample_count(b) >= on_a * sample_count(a));
     let (s, t) = if a_first { (a, &tb) } else { (b, &ta) };
-    trace(s, t, tol, chord_tol, false)
+    trace(s, t, tol, chord_tol, Some(level_a.min(level_b)))
 }
 
 /// The part of `s` lying in the plane through `p` with unit normal `n`, as its boundary loops;
@@ -194,10 +197,9 @@ pub(crate) fn in_plane(
         Surface::Sphere(_) | Surface::Cylinder(_) => None,
         _ => {
             let t = Target::Plane(p, n);
-            if on_count(s, &t, tol) == 0 {
-                return None;
-            }
-            match trace(s, &t, tol, chord_tol, false)? {
+            // No sample in the plane: a region, if any, is narrower than their spacing.
+            let (on, level) = on_samples(s, &t, tol);
+            match trace(s, &t, tol, chord_tol, (on > 0).then_some(level))? {
                 Overlap::Loops(l) => Some(l),
                 Overlap::Everywhere => None,
             }
@@ -228,9 +230,20 @@ fn sample_count(s: &Surface) -> usize {
     samples(s).len().max(1)
 }
 
-/// How many of `s`'s samples lie on `t`, per sample of `s` scaled by its count (see the caller).
-fn on_count(s: &Surface, t: &Target, tol: f64) -> usize {
-    samples(s).into_iter().filter(|p| t.on(*p, tol)).count()
+/// How many of `s`'s samples lie on `t`, and the least gap among them (the common region's
+/// level: 0 where the surfaces coincide, 0.3 of the tolerance where held that far apart;
+/// infinite when none lies on `t`).
+fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64) {
+    let mut least = f64::INFINITY;
+    let mut count = 0;
+    for p in samples(s) {
+        if t.on(p, tol) {
+            count += 1;
+            // From where `on` left the projection; at most the tolerance, as `on` found.
+            least = least.min(t.gap(p, tol).unwrap_or(tol).min(tol));
+        }
+    }
+    (count, least)
 }
 
 /// A key of the marching grid: a node, or the crossing on a horizontal (u) or vertical (v)
@@ -265,13 +278,25 @@ struct Tracer<'a, 'b> {
     cross: HashMap<Key, DVec2>,
 }
 
-/// Traces the region of `s` lying on `t`.
-fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64, narrow: bool) -> Option<Overlap> {
-    // Half the tolerance, so the boundary points found by bisection lie within it.
-    let mut tr = Tracer::new(s, t, 0.5 * tol, chord_tol);
-    if narrow && !tr.refine_narrow() {
-        return None;
-    }
+/// Traces the region of `s` lying on `t`, whose gap over the region is `level` (None: not
+/// known, the region narrower than the quick look's samples, looked for by [`seed`]).
+///
+/// The region's edge is taken where the gap rises half the tolerance above its level: as
+/// far inside the tolerance as the level allows, so that where the surfaces part across a
+/// crease the edge found lies within half the tolerance over the slope of the true edge, while
+/// surfaces held 0.9 of the tolerance apart still coincide (SPEC §4: farther apart than it
+/// they do not meet). At most the whole tolerance less a margin for rounding, so the boundary
+/// points found by bisection lie within it.
+fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64, level: Option<f64>) -> Option<Overlap> {
+    let mut tr = Tracer::new(s, t, tol, chord_tol);
+    let size = tr.patch.scale() + tr.eval(DVec2::splat(0.5)).length();
+    let within = (tol - ROUNDING * size).max(0.5 * tol);
+    tr.tol = within;
+    let level = match level {
+        Some(l) => l,
+        None => tr.refine_narrow()?,
+    };
+    tr.tol = (level + 0.5 * tol).min(within);
     tr.classify();
     let segs = tr.segments();
     if segs.is_empty() {

@@ -28,7 +28,7 @@ const CANDIDATES: usize = 12;
 /// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
 /// diagonal).
 pub(super) const W_MIN: f64 = 1e-5;
-/// The largest gap, as a fraction of the tolerance, inside a region's band
+/// The largest rise of the gap across a region's band, as a fraction of the tolerance
 /// ([`Tracer::flat_between`]).
 const FLAT: f64 = 1e-2;
 /// Golden-section steps per search (0.618^48 ≈ 1e-10 of the cell searched).
@@ -40,9 +40,11 @@ type Band = [Option<(f64, f64)>; 2];
 
 impl Tracer<'_, '_> {
     /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
-    /// one found, followed along its length ([`super::walk`]); false when none is found.
-    pub(super) fn refine_narrow(&mut self) -> bool {
+    /// one found, followed along its length ([`super::walk`]); the least gap over the regions
+    /// found (their level), None when none is found.
+    pub(super) fn refine_narrow(&mut self) -> Option<f64> {
         let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
+        let mut level = f64::INFINITY;
         let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
             bands
                 .iter()
@@ -56,7 +58,8 @@ impl Tracer<'_, '_> {
             if seen(self, &bands, q) {
                 continue;
             }
-            if let Some(b) = self.band(q) {
+            if let Some((b, l)) = self.band(q) {
+                level = level.min(l);
                 let wide = b.iter().all(Option::is_none);
                 bands.push((b, [self.walk(q, 0), self.walk(q, 1)]));
                 if wide {
@@ -72,7 +75,7 @@ impl Tracer<'_, '_> {
                 }
             }
         }
-        !bands.is_empty()
+        (!bands.is_empty()).then_some(level)
     }
 
     /// The nodes of an S × S grid where the gap is no larger than at any neighbour, smallest
@@ -180,13 +183,15 @@ impl Tracer<'_, '_> {
         best
     }
 
-    /// The region around `q` (on the target), measured along u and v; None when it is narrower
-    /// than [`W_MIN`] either way (a crossing or a tangent contact, not a region).
-    fn band(&self, q: DVec2) -> Option<Band> {
+    /// The region around `q` (on the target), measured along u and v, and its level (the gap
+    /// across it); None when it is narrower than [`W_MIN`] either way or its gap not flat (a
+    /// crossing or a tangent contact, not a region).
+    fn band(&self, q: DVec2) -> Option<(Band, f64)> {
         let (du, dv) = self.patch.derivs(q);
         let speed = [du.length(), dv.length()];
         let w_min = W_MIN * self.patch.scale();
         let mut out: Band = [None, None];
+        let mut level = self.gap_at(q)?;
         for k in 0..2 {
             if speed[k].is_nan() || speed[k] <= 0.0 {
                 return None;
@@ -203,28 +208,36 @@ impl Tracer<'_, '_> {
             let (Some(hi), Some(lo)) = (hi, lo) else {
                 continue;
             };
-            if (hi - lo) * speed[k] < w_min || !self.flat_between(q, k, lo, hi) {
+            if (hi - lo) * speed[k] < w_min {
                 return None;
             }
+            level = level.min(self.flat_between(q, k, lo, hi)?);
             if hi - lo < 2.0 / N as f64 {
                 out[k] = Some((lo, hi));
             }
         }
-        Some(out)
+        Some((out, level))
     }
 
-    /// Whether the gap is far below the tolerance halfway from the middle of `lo..hi` (along
-    /// direction `k` through `q`) to either end. Along a tangent contact the gap stays under
-    /// the tolerance over a band too, but it grows as a power of the distance from the contact
-    /// line: a square law gives a quarter of the tolerance there, a sixth power 1/64; a region
-    /// is flat to rounding.
-    pub(super) fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> bool {
-        let (mid, quarter) = (0.5 * (lo + hi), 0.25 * (hi - lo));
-        [mid - quarter, mid + quarter].into_iter().all(|x| {
+    /// Whether the gap is flat across the middle of `lo..hi` (along direction `k` through `q`):
+    /// it rises by at most [`FLAT`] of the tolerance between the points an eighth, a quarter
+    /// and half of the way across. Two surfaces coinciding over a region keep one gap there,
+    /// to rounding, at whatever level within the tolerance (0 when they coincide exactly, 0.3
+    /// of the tolerance when held that far apart). Along a tangent contact the gap stays under
+    /// the tolerance over a band too, but rises from its least as a power of the distance from
+    /// the contact line: across the band of a square law it spans 0.56 of the tolerance
+    /// between those points, of a sixth power 0.18, of a sixteenth 0.01.
+    /// The least of those gaps (the region's level) when flat, None otherwise.
+    pub(super) fn flat_between(&self, q: DVec2, k: usize, lo: f64, hi: f64) -> Option<f64> {
+        let mut least = f64::INFINITY;
+        let mut most = f64::NEG_INFINITY;
+        for f in [0.125, 0.25, 0.5, 0.75, 0.875] {
             let mut p = q;
-            p[k] = x;
-            self.gap_at(p).is_some_and(|g| g <= FLAT * self.tol)
-        })
+            p[k] = lo + f * (hi - lo);
+            let g = self.gap_at(p)?;
+            (least, most) = (least.min(g), most.max(g));
+        }
+        (most - least <= FLAT * self.tol).then_some(least)
     }
 
     /// Where the region ends from `q` in the unit direction `e` (its coordinate along `e`),

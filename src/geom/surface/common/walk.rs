@@ -61,7 +61,7 @@ impl Tracer<'_, '_> {
                     (Some(lo), Some(hi)) => {
                         let (du, dv) = self.patch.derivs(p);
                         let speed = if k == 0 { du.length() } else { dv.length() };
-                        if (hi - lo) * speed < w_min || !self.flat_between(p, k, lo, hi) {
+                        if (hi - lo) * speed < w_min || self.flat_between(p, k, lo, hi).is_none() {
                             break;
                         }
                         out.push((p[m], lo, hi));

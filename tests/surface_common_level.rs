@@ -1,0 +1,227 @@
+//! Common regions whose surfaces are held a constant fraction of GEOMTOL apart (issue 13,
+//! SPEC §4: surfaces farther apart than the tolerance do not meet, so nearer ones do): a strip
+//! whose flat lies 0.3 and 0.9 × GEOMTOL off a plane comes back as the flat's region, whether
+//! the flat is wide or narrower than the region tracer's grid; and a tangent contact, whose
+//! gap rises from its least quadratically, still does not come back as a region at any such
+//! level. The strips are ruled between two copies of a trough profile: 45° slopes down to a
+//! flat from (0, 0) to (w, 0), in planes z = 0 and z = 3; the region is x ∈ [0, w],
+//! z ∈ [0, 3] (its edges, where the slopes leave the plane y = off, lie within
+//! (off + GEOMTOL)·√2 of x = 0 and x = w), written here in closed form.
+
+use lispcad::geom::curve::Curve;
+use lispcad::geom::mesh::Polyline3;
+use lispcad::geom::surface::{surface_intersect_tol, surface_section_tol, Surface};
+use lispcad::geom::DVec3;
+use std::f64::consts::FRAC_PI_3;
+use std::sync::Arc;
+
+mod surface_support;
+use surface_support::{cylinders, summary, R};
+
+const GT: f64 = 1e-9;
+const CT: f64 = 1e-6;
+
+fn v(x: f64, y: f64, z: f64) -> DVec3 {
+    DVec3::new(x, y, z)
+}
+
+/// The trough profile in the plane z: `m` collinear segments down each 45° slope, one flat.
+fn trough(w: f64, m: usize, z: f64) -> Arc<Curve> {
+    let mut pts: Vec<DVec3> = (1..=m)
+        .rev()
+        .map(|k| k as f64 / m as f64)
+        .map(|s| v(-s, s, z))
+        .collect();
+    pts.extend([v(0.0, 0.0, z), v(w, 0.0, z)]);
+    pts.extend((1..=m).map(|k| k as f64 / m as f64).map(|s| v(w + s, s, z)));
+    Arc::new(Curve::pline(pts, false, None).unwrap())
+}
+
+fn strip(w: f64, m: usize) -> Surface {
+    Surface::ruled(trough(w, m, 0.0), trough(w, m, 3.0))
+}
+
+/// The distance from `p` to the strip, in closed form (within its z range).
+fn off_strip(p: DVec3, w: f64) -> f64 {
+    let seg = |a: (f64, f64), b: (f64, f64)| {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let t = (((p.x - a.0) * dx + (p.y - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+        (p.x - a.0 - t * dx).hypot(p.y - a.1 - t * dy)
+    };
+    let d = seg((-1.0, 1.0), (0.0, 0.0))
+        .min(seg((0.0, 0.0), (w, 0.0)))
+        .min(seg((w, 0.0), (w + 1.0, 1.0)));
+    if (-GT..=3.0 + GT).contains(&p.z) {
+        d
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The plane y = `y` as a region well beyond the strip.
+fn wall(y: f64) -> Surface {
+    Surface::plane(vec![
+        v(-2.0, y, -1.0),
+        v(3.0, y, -1.0),
+        v(3.0, y, 4.0),
+        v(-2.0, y, 4.0),
+    ])
+    .unwrap()
+}
+
+/// The area of a loop lying in a plane y = const, from its x and z.
+fn area_xz(p: &[DVec3]) -> f64 {
+    let n = p.len();
+    let twice: f64 = (0..n)
+        .map(|i| p[i].x * p[(i + 1) % n].z - p[(i + 1) % n].x * p[i].z)
+        .sum();
+    0.5 * twice.abs()
+}
+
+/// One closed loop round the flat's region: every point on the strip and on the plane y = y0
+/// within GEOMTOL, within `slack` of the region's outline, every side reached, its length
+/// and area those of the region to within the edges' slack.
+fn assert_flat_region(name: &str, r: &[Polyline3], w: f64, y0: f64, slack: f64) {
+    assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+    let c = &r[0];
+    assert!(c.closed, "{name}: {}", summary(r));
+    for p in &c.points {
+        assert!((p.y - y0).abs() <= GT, "{name}: {p} off the plane");
+        assert!(off_strip(*p, w) <= GT, "{name}: {p} off the strip");
+        let side = p.x.abs() <= slack || (p.x - w).abs() <= slack;
+        let end = p.z.abs() <= GT || (p.z - 3.0).abs() <= GT;
+        let inside = (-slack..=w + slack).contains(&p.x) && (-GT..=3.0 + GT).contains(&p.z);
+        assert!((side || end) && inside, "{name}: {p} off the outline");
+    }
+    for (x, z) in [(0.0, 1.5), (w, 1.5), (0.5 * w, 0.0), (0.5 * w, 3.0)] {
+        let reached = c
+            .points
+            .iter()
+            .any(|p| (p.x - x).abs() <= slack + 0.5 * w && (p.z - z).abs() <= 1.5);
+        assert!(reached, "{name}: side through ({x}, {z}) not reached");
+    }
+    let (length, area) = (c.length(), area_xz(&c.points));
+    assert!(
+        (length - 2.0 * (w + 3.0)).abs() <= 8.0 * slack,
+        "{name}: length {length}"
+    );
+    assert!((area - 3.0 * w).abs() <= 8.0 * slack, "{name}: area {area}");
+}
+
+/// Both orders of the intersection and the section by the plane y = y0, each run twice for
+/// the same bits.
+fn results(s: &Surface, y0: f64) -> Vec<(String, Vec<Polyline3>)> {
+    let p = wall(y0);
+    let runs = |f: &dyn Fn() -> Vec<Polyline3>| {
+        let r = f();
+        assert!(f().iter().zip(&r).all(|(a, b)| a.points == b.points));
+        r
+    };
+    vec![
+        (
+            "strip, plane".into(),
+            runs(&|| surface_intersect_tol(s, &p, CT, GT).unwrap()),
+        ),
+        (
+            "plane, strip".into(),
+            runs(&|| surface_intersect_tol(&p, s, CT, GT).unwrap()),
+        ),
+        (
+            "section".into(),
+            runs(&|| surface_section_tol(s, v(0.0, y0, 0.0), DVec3::Y, CT, GT).unwrap()),
+        ),
+    ]
+}
+
+#[test]
+fn a_flat_held_a_fraction_of_the_tolerance_off_a_plane_is_their_common_region() {
+    // A wide flat (a third of the profile) and a narrow one (1/161 of it: no sample of the
+    // quick look, no grid node of the tracer on it), at levels 0, 0.3 and 0.9 × GEOMTOL.
+    for (w, m) in [(1.0, 1), (0.02, 80)] {
+        let s = strip(w, m);
+        for level in [0.0, 0.3, 0.9] {
+            let y0 = level * GT;
+            let slack = (y0 + GT) * 2f64.sqrt();
+            for (order, r) in results(&s, y0) {
+                let name = format!("w {w}, level {level}, {order}");
+                assert_flat_region(&name, &r, w, y0, slack);
+            }
+        }
+    }
+}
+
+/// Arcs of radius R tangent to the line y = 0 at the origin, bending towards +y (the common
+/// regions' narrow-flat profile with no flat).
+fn arcs(z: f64) -> Arc<Curve> {
+    let (m1, m2) = (70usize, 90usize);
+    let (d1, d2) = (FRAC_PI_3 / m1 as f64, FRAC_PI_3 / m2 as f64);
+    let at = |f: f64, sign: f64| v(sign * R * f.sin(), R - R * f.cos(), z);
+    let mut pts: Vec<DVec3> = (0..=m1).rev().map(|k| at(k as f64 * d1, -1.0)).collect();
+    pts.extend((1..=m2).map(|k| at(k as f64 * d2, 1.0)));
+    let mut bulges = vec![(d1 / 4.0).tan(); m1];
+    bulges.extend(vec![(d2 / 4.0).tan(); m2]);
+    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
+}
+
+/// No closed loop (no region), something found, and every point within GEOMTOL of the two
+/// surfaces (`off`: their distances from a point, in closed form).
+fn assert_no_region(name: &str, r: &[Polyline3], off: [&dyn Fn(DVec3) -> f64; 2]) {
+    assert!(!r.is_empty(), "{name}: nothing");
+    assert!(r.iter().all(|c| !c.closed), "{name}: {}", summary(r));
+    for p in r.iter().flat_map(|c| &c.points) {
+        assert!(off.iter().all(|d| d(*p) <= GT), "{name}: {p} off a surface");
+    }
+}
+
+#[test]
+fn a_tangent_contact_is_no_region_whatever_its_least_gap() {
+    // The gap rises from its least (0, 0.3 or 0.9 × GEOMTOL) quadratically across the
+    // contact: under the tolerance over a band 2·√(2·R·(1 − level)·GEOMTOL) wide, but never
+    // flat across it. With the flatness test passing every band, each case gives a loop.
+    let strip = Surface::ruled(arcs(0.0), arcs(3.0));
+    let on_arcs = |p: DVec3| {
+        let d = (p.x.hypot(p.y - R) - R).abs();
+        if (-GT..=3.0 + GT).contains(&p.z) {
+            d
+        } else {
+            f64::INFINITY
+        }
+    };
+    for level in [0.0, 0.3, 0.9] {
+        for (order, r) in results(&strip, level * GT) {
+            let name = format!("arcs at level {level}, {order}");
+            let on_plane = |p: DVec3| (p.y - level * GT).abs();
+            assert_no_region(&name, &r, [&on_arcs, &on_plane]);
+        }
+    }
+    // Cylinders of radius 1 about the line y = 0, z = 1 (x from 0 to 4), on planes z = −level.
+    for (kind, c) in cylinders() {
+        for level in [0.0, 0.3] {
+            let z0 = -level * GT;
+            let plane = Surface::plane(vec![
+                v(-1.0, -2.0, z0),
+                v(5.0, -2.0, z0),
+                v(5.0, 2.0, z0),
+                v(-1.0, 2.0, z0),
+            ])
+            .unwrap();
+            let on_cyl = |p: DVec3| {
+                let d = (p.y.hypot(p.z - 1.0) - 1.0).abs();
+                if (-GT..=4.0 + GT).contains(&p.x) {
+                    d
+                } else {
+                    f64::INFINITY
+                }
+            };
+            for (order, r) in [
+                ("cylinder, plane", surface_intersect_tol(&c, &plane, CT, GT)),
+                ("plane, cylinder", surface_intersect_tol(&plane, &c, CT, GT)),
+            ] {
+                let name = format!("{kind} at level {level}, {order}");
+                let r = r.unwrap();
+                let on_plane = |p: DVec3| (p.z - z0).abs();
+                assert_no_region(&name, &r, [&on_cyl, &on_plane]);
+            }
+        }
+    }
+}
