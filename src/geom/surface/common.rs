@@ -245,11 +245,13 @@ enum Key {
 /// A grid edge along the domain's edge: its nodes in counter-clockwise order and its key.
 type SideEdge = ((usize, usize), (usize, usize), Key);
 
-/// A traced boundary point: its parameters and which of them sit on a domain edge.
+/// A traced boundary point: its parameters, which of them sit on a domain edge, and whether
+/// it is a crossing lying off its grid edge ([`Tracer::untangle`]).
 #[derive(Debug, Clone, Copy)]
 struct Pt {
     uv: DVec2,
     pinned: [bool; 2],
+    off: bool,
 }
 
 struct Tracer<'a, 'b> {
@@ -609,9 +611,57 @@ impl Tracer<'_, '_> {
         let edge = |x: Option<usize>, k: usize| {
             !self.periodic[k] && x.is_some_and(|x| x == 0 || x == n[k])
         };
+        // A crossing's grid edge: the line it lies on and the span along the other direction.
+        let off = match k {
+            Key::Node(..) => false,
+            Key::H(i, j) => self.off_edge(uv, 1, j, 0, i),
+            Key::V(i, j) => self.off_edge(uv, 0, i, 1, j),
+        };
         Pt {
             uv,
             pinned: [edge(pinned_i, 0), edge(pinned_j, 1)],
+            off,
+        }
+    }
+
+    /// Whether `uv` lies off the grid edge on line `i` of direction `k` from line `j` of
+    /// direction `m` to the next.
+    fn off_edge(&self, uv: DVec2, k: usize, i: usize, m: usize, j: usize) -> bool {
+        let l = &self.lines;
+        let x = self.wrap(k, i);
+        let (a, b) = (l[m][j], l[m][(j + 1).min(l[m].len() - 1)]);
+        uv[k] != l[k][x] && uv[k] != l[k][i] || uv[m] < a.min(b) || uv[m] > a.max(b)
+    }
+
+    /// The loop's points without crossings that step back along it. A node lying beyond the
+    /// region's edge within the tolerance's reach (where the surfaces part tangentially, the
+    /// gap stays under it for a while) is classified in the region, and the edge found from
+    /// it along its grid edges lies behind it, off those edges: exact, but in the cell's
+    /// order rather than the edge's, so the loop would run back and forth along the edge by
+    /// that reach. Such a crossing is dropped where the loop turns back at it, and
+    /// densifying fills the chord left from the points on either side.
+    fn untangle(&self, pts: Vec<Pt>, closed: bool) -> Vec<Pt> {
+        if pts.len() < 4 || !pts.iter().any(|p| p.off) {
+            return pts;
+        }
+        let m = pts.len();
+        let mut keep: Vec<Pt> = Vec::with_capacity(m);
+        for i in 0..m {
+            let b = pts[i];
+            let prev = keep.last().copied().or(closed.then(|| pts[m - 1]));
+            let first = keep.first().copied().unwrap_or(pts[0]);
+            let next = (i + 1 < m).then(|| pts[i + 1]).or(closed.then_some(first));
+            if let (true, Some(a), Some(c)) = (b.off, prev, next) {
+                if self.delta(a.uv, b.uv).dot(self.delta(b.uv, c.uv)) < 0.0 {
+                    continue;
+                }
+            }
+            keep.push(b);
+        }
+        if keep.len() >= 3 {
+            keep
+        } else {
+            pts
         }
     }
 
@@ -620,7 +670,10 @@ impl Tracer<'_, '_> {
     fn chain(&self, segs: &[(Key, Key)]) -> Vec<(Vec<Pt>, bool)> {
         crate::geom::mesh::chain_directed(segs)
             .into_iter()
-            .map(|(keys, closed)| (keys.into_iter().map(|k| self.pt(k)).collect(), closed))
+            .map(|(keys, closed)| {
+                let pts = keys.into_iter().map(|k| self.pt(k)).collect();
+                (self.untangle(pts, closed), closed)
+            })
             .collect()
     }
 
@@ -682,7 +735,11 @@ impl Tracer<'_, '_> {
         let chord = pb - pa;
         let off = (pm - pa).cross(chord).length() / chord.length();
         if off > self.chord_tol {
-            let mp = Pt { uv: m, pinned };
+            let mp = Pt {
+                uv: m,
+                pinned,
+                off: false,
+            };
             self.densify(a, mp, depth + 1, out);
             out.push(pm);
             self.densify(mp, b, depth + 1, out);
