@@ -566,23 +566,29 @@ impl Tracer<'_, '_> {
     /// runs through it, maybe along this grid edge, whose points then all lie on the target and
     /// bisection would end at that node (a spike out along the crossing). The edge is found on
     /// the parallel lines a little to either side, off the crossing, and the mean of where they
-    /// meet it taken (which cancels their offset's slant across an oblique edge); when neither
-    /// does, as before.
+    /// meet it taken (which cancels their offset's slant across an oblique edge). Where only
+    /// one side's line does (the other lies outside the domain: the grid edge runs along the
+    /// domain's edge), the slant is taken out by a second line twice as far off on that side,
+    /// the edge's place extrapolated back from the two. Where neither line starts in the
+    /// region, the node in it is the region's corner; where they do but neither meets the
+    /// edge, as before.
     fn edge_beside(&self, lo: DVec2, hi: DVec2) -> DVec2 {
         let d = hi - lo;
         let len = d.length();
         let side = DVec2::new(-d.y, d.x) * (OFF_LINE / len);
-        let mut along = Vec::with_capacity(2);
-        for s in [side, -side] {
+        // Where the line offset by `s` meets the edge, as a fraction of the grid edge.
+        let along = |s: DVec2| {
             let (l, h) = (lo + s, hi + s);
-            if self.on(l) && !self.on(h) {
-                along.push((self.edge(l, h) - l).dot(d) / (len * len));
-            }
-        }
-        if along.is_empty() {
-            return self.edge(lo, hi);
-        }
-        let t = along.iter().sum::<f64>() / along.len() as f64;
+            (self.on(l) && !self.on(h)).then(|| (self.edge(l, h) - l).dot(d) / (len * len))
+        };
+        let one_sided = |a: f64, s: DVec2| along(2.0 * s).map_or(a, |a2| 2.0 * a - a2);
+        let t = match (along(side), along(-side)) {
+            (Some(a), Some(b)) => 0.5 * (a + b),
+            (Some(a), None) => one_sided(a, side),
+            (None, Some(b)) => one_sided(b, -side),
+            (None, None) if !self.on(lo + side) && !self.on(lo - side) => return lo,
+            (None, None) => return self.edge(lo, hi),
+        };
         lo + d * t.clamp(0.0, 1.0)
     }
 

@@ -21,6 +21,13 @@ use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, FRAC_PI_6};
 /// next term is negligible.
 const ABOVE: f64 = 64.0;
 
+/// Nearest the first sample lies past the threshold, in parameters, in the fits tried: near,
+/// so the power law's next term counts least; failing that, beyond where the projection onto
+/// a target with a kink inside its patch (a fold's crease) blends the two sides' derivatives
+/// (its central differences step 1e-6 in parameters), which bends a crease's straight gap by
+/// some 1e-3 within a few of those steps.
+const FIRST: [f64; 2] = [1e-7, 1e-5];
+
 /// Farthest the first sample goes past the threshold, in parameters (a grid cell is 1/32).
 const REACH: f64 = 1.0 / 64.0;
 
@@ -131,10 +138,17 @@ impl Tracer<'_, '_> {
     /// region's point the search started from too, which lies on the target only within the
     /// tolerance (a threshold point taken as the inside end when densifying along an edge).
     fn zero_along(&self, t: DVec2, w: DVec2, back: f64) -> Option<DVec2> {
+        FIRST
+            .iter()
+            .find_map(|&first| self.zero_from(t, w, back, first))
+    }
+
+    /// [`Self::zero_along`] with the first sample no nearer `t` than `first`.
+    fn zero_from(&self, t: DVec2, w: DVec2, back: f64, first: f64) -> Option<DVec2> {
         let at = |s: f64| t + w * s;
         // Out from the threshold in doubling steps until the gap stands well above it (the
         // samples may lie past `hi`: a densifying search brackets the edge closely).
-        let mut d = 1e-7;
+        let mut d = first;
         let g1 = loop {
             let g = self.gap_at(at(d))?;
             if g >= ABOVE * self.tol {
