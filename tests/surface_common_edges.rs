@@ -8,7 +8,7 @@
 //! boundary point to 1e-9 of the true edge.
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::surface::{surface_intersect_seeded, surface_intersect_tol, Surface};
 use lispcad::geom::DVec3;
 use std::sync::Arc;
 
@@ -218,5 +218,69 @@ fn an_oblique_edge_meeting_a_crossing_along_the_domain_edge_ends_at_their_corner
             (length - perimeter(&quad)).abs() <= 1e-6 * length,
             "{length}"
         );
+    }
+}
+
+#[test]
+fn a_small_crossing_loop_beside_a_ring_comes_back_closed_and_the_ring_whole() {
+    // A profile revolved about the z axis: a cone from (0, 0.01) down through z = 0 at
+    // r = 0.01 to (0.02, −0.01), flat to r = 0.03, up to (0.04, 0) and flat on z = 0 out to
+    // r = 3. Against the plane z = 0 it crosses in the circle r = 0.01 (0.063 long, smaller
+    // than a cell of the seeding meshes and of the region tracer's grid) beside the ring
+    // 0.04 ≤ r ≤ 3 they share, whose inner edge lies a tracer cell's eighth away. Expected:
+    // three closed loops, the circle r = 0.01 and the ring's edges r = 0.04 and r = 3.
+    let prof = pline(vec![
+        v(0.0, 0.0, 0.01),
+        v(0.02, 0.0, -0.01),
+        v(0.03, 0.0, -0.01),
+        v(0.04, 0.0, 0.0),
+        v(3.0, 0.0, 0.0),
+    ]);
+    let rev = Surface::revolve(prof, DVec3::ZERO, DVec3::Z, std::f64::consts::TAU).unwrap();
+    let corners = [(-4.0, -4.0), (4.0, -4.0), (4.0, 4.0), (-4.0, 4.0)];
+    let plane = Surface::plane(corners.iter().map(|&(x, y)| v(x, y, 0.0)).collect()).unwrap();
+    // The plane again as a ruled square, so the ring is traced in the square's domain: the
+    // revolved surface is then the one projected on, and its pole at the axis stopped the
+    // projection of the ring's points near it short (they were taken for points past its
+    // boundary): the inner edge came back as 4 points, out to r = 0.25.
+    let square = Surface::ruled(
+        pline(vec![v(-4.0, -4.0, 0.0), v(4.0, -4.0, 0.0)]),
+        pline(vec![v(-4.0, 4.0, 0.0), v(4.0, 4.0, 0.0)]),
+    );
+    let radius = |p: &DVec3| p.x.hypot(p.y);
+    // The ring's inner edge, where the profile's kink lies inside the revolved surface's
+    // patch, to 2e-6 when traced in the square's domain: the projection's difference quotients
+    // (1e-6 in parameters) straddle the kink there. To 1e-9 otherwise.
+    let pairs = [
+        (&plane, &rev, GT),
+        (&rev, &plane, GT),
+        (&square, &rev, 2e-6),
+        (&rev, &square, 2e-6),
+    ];
+    for (x, y, inner) in pairs {
+        // Seeding meshes within 1e-3: within 1e-6, the order (revolved, plane) gives one
+        // more circle, r = 0.41, inside the ring (on main too; not the region's edges).
+        let r = surface_intersect_seeded(x, y, 1e-3, 1e-6, GT).unwrap();
+        assert_eq!(r.len(), 3, "{}", summary(&r));
+        assert!(r.iter().all(|c| c.closed), "{}", summary(&r));
+        for (rho, within) in [(0.01, GT), (0.04, inner), (3.0, GT)] {
+            let c = r
+                .iter()
+                .find(|c| (radius(&c.points[0]) - rho).abs() <= 1e-5)
+                .unwrap_or_else(|| panic!("no loop r = {rho}: {}", summary(&r)));
+            for p in &c.points {
+                assert!(
+                    p.z.abs() <= GT && (radius(p) - rho).abs() <= within,
+                    "r = {rho}: {p}"
+                );
+            }
+            // A polygon inscribed within the chord tolerance 1e-6: short of the circle by at
+            // most 2/3 of the tolerance over the radius, relatively.
+            let (l, full) = (c.length(), std::f64::consts::TAU * rho);
+            assert!(
+                l <= full * (1.0 + within / rho) && l >= full * (1.0 - 1e-6 / rho),
+                "r = {rho}: {l}"
+            );
+        }
     }
 }

@@ -66,10 +66,17 @@ impl Target<'_> {
             }
             Target::Plane(o, n) => Some(n.dot(p - *o).abs()),
             Target::Patch(patch, hint) => {
-                let uv = patch.project(p, hint.get());
+                let mut uv = patch.project(p, hint.get());
+                // Stopped at a pole, maybe short of the nearest point: from the search grid too.
                 let periodic = patch.periodic();
                 let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
-                (!at_edge).then(|| patch.eval(uv).distance(p))
+                if at_edge && !super::on_boundary(patch, uv) {
+                    let other = patch.project(p, None);
+                    if patch.eval(other).distance(p) < patch.eval(uv).distance(p) {
+                        uv = other;
+                    }
+                }
+                (!super::on_boundary(patch, uv)).then(|| patch.eval(uv).distance(p))
             }
         }
     }
