@@ -93,13 +93,11 @@ impl<'a> Target<'a> {
                     let uv = patch.project(p, start);
                     (patch.eval(uv).distance(p) <= tol, uv)
                 };
-                // A miss at the domain's edge is past the surface's boundary; close to it,
-                // the nearest point; only a far interior miss may be another local minimum.
+                // A miss at the surface's boundary is past it; close to it, the nearest point;
+                // only a far miss elsewhere (a pole included) may be another local minimum.
                 let (mut ok, mut uv) = try_from(hint.get());
                 let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
-                let periodic = patch.periodic();
-                let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
-                if !ok && !near && !at_edge && hint.get().is_some() {
+                if !ok && !near && !on_boundary(patch, uv) && hint.get().is_some() {
                     (ok, uv) = try_from(None);
                 }
                 if ok {
@@ -109,6 +107,27 @@ impl<'a> Target<'a> {
             }
         }
     }
+}
+
+/// Whether `uv` lies on an edge of the patch's domain that bounds the surface: not a seam,
+/// and not a pole (an edge collapsing to a point, as a revolved profile's end on the axis),
+/// where a projection from a warm start may stop, clamped, far short of the nearest point
+/// (a point of a flat ring around the pole, its projection slid to the pole, was taken for
+/// one past the surface's boundary: the ring's inner edge came back as a 4-point loop).
+fn on_boundary(patch: &Patch, uv: DVec2) -> bool {
+    let periodic = patch.periodic();
+    (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0) && !collapses(patch, k, uv[k]))
+}
+
+/// Whether the domain edge where parameter `k` is `c` collapses to a point.
+fn collapses(patch: &Patch, k: usize, c: f64) -> bool {
+    let at = |t: f64| {
+        let mut q = DVec2::splat(t);
+        q[k] = c;
+        patch.eval(q)
+    };
+    let p0 = at(0.0);
+    (1..=4).all(|i| at(i as f64 / 4.0).distance(p0) <= 1e-12 * patch.scale())
 }
 
 /// The region where `a` and `b` coincide: in closed form for the analytic pairs
@@ -258,11 +277,13 @@ enum Key {
 /// A grid edge along the domain's edge: its nodes in counter-clockwise order and its key.
 type SideEdge = ((usize, usize), (usize, usize), Key);
 
-/// A traced boundary point: its parameters and which of them sit on a domain edge.
+/// A traced boundary point: its parameters, which of them sit on a domain edge, and whether
+/// it is a crossing lying off its grid edge ([`Tracer::untangle`]).
 #[derive(Debug, Clone, Copy)]
 struct Pt {
     uv: DVec2,
     pinned: [bool; 2],
+    off: bool,
 }
 
 struct Tracer<'a, 'b> {
@@ -589,23 +610,29 @@ impl Tracer<'_, '_> {
     /// runs through it, maybe along this grid edge, whose points then all lie on the target and
     /// bisection would end at that node (a spike out along the crossing). The edge is found on
     /// the parallel lines a little to either side, off the crossing, and the mean of where they
-    /// meet it taken (which cancels their offset's slant across an oblique edge); when neither
-    /// does, as before.
+    /// meet it taken (which cancels their offset's slant across an oblique edge). Where only
+    /// one side's line does (the other lies outside the domain: the grid edge runs along the
+    /// domain's edge), the slant is taken out by a second line twice as far off on that side,
+    /// the edge's place extrapolated back from the two. Where neither line starts in the
+    /// region, the node in it is the region's corner; where they do but neither meets the
+    /// edge, as before.
     fn edge_beside(&self, lo: DVec2, hi: DVec2) -> DVec2 {
         let d = hi - lo;
         let len = d.length();
         let side = DVec2::new(-d.y, d.x) * (OFF_LINE / len);
-        let mut along = Vec::with_capacity(2);
-        for s in [side, -side] {
+        // Where the line offset by `s` meets the edge, as a fraction of the grid edge.
+        let along = |s: DVec2| {
             let (l, h) = (lo + s, hi + s);
-            if self.on(l) && !self.on(h) {
-                along.push((self.edge(l, h) - l).dot(d) / (len * len));
-            }
-        }
-        if along.is_empty() {
-            return self.edge(lo, hi);
-        }
-        let t = along.iter().sum::<f64>() / along.len() as f64;
+            (self.on(l) && !self.on(h)).then(|| (self.edge(l, h) - l).dot(d) / (len * len))
+        };
+        let one_sided = |a: f64, s: DVec2| along(2.0 * s).map_or(a, |a2| 2.0 * a - a2);
+        let t = match (along(side), along(-side)) {
+            (Some(a), Some(b)) => 0.5 * (a + b),
+            (Some(a), None) => one_sided(a, side),
+            (None, Some(b)) => one_sided(b, -side),
+            (None, None) if !self.on(lo + side) && !self.on(lo - side) => return lo,
+            (None, None) => return self.edge(lo, hi),
+        };
         lo + d * t.clamp(0.0, 1.0)
     }
 
@@ -634,9 +661,57 @@ impl Tracer<'_, '_> {
         let edge = |x: Option<usize>, k: usize| {
             !self.periodic[k] && x.is_some_and(|x| x == 0 || x == n[k])
         };
+        // A crossing's grid edge: the line it lies on and the span along the other direction.
+        let off = match k {
+            Key::Node(..) => false,
+            Key::H(i, j) => self.off_edge(uv, 1, j, 0, i),
+            Key::V(i, j) => self.off_edge(uv, 0, i, 1, j),
+        };
         Pt {
             uv,
             pinned: [edge(pinned_i, 0), edge(pinned_j, 1)],
+            off,
+        }
+    }
+
+    /// Whether `uv` lies off the grid edge on line `i` of direction `k` from line `j` of
+    /// direction `m` to the next.
+    fn off_edge(&self, uv: DVec2, k: usize, i: usize, m: usize, j: usize) -> bool {
+        let l = &self.lines;
+        let x = self.wrap(k, i);
+        let (a, b) = (l[m][j], l[m][(j + 1).min(l[m].len() - 1)]);
+        uv[k] != l[k][x] && uv[k] != l[k][i] || uv[m] < a.min(b) || uv[m] > a.max(b)
+    }
+
+    /// The loop's points without crossings that step back along it. A node lying beyond the
+    /// region's edge within the tolerance's reach (where the surfaces part tangentially, the
+    /// gap stays under it for a while) is classified in the region, and the edge found from
+    /// it along its grid edges lies behind it, off those edges: exact, but in the cell's
+    /// order rather than the edge's, so the loop would run back and forth along the edge by
+    /// that reach. Such a crossing is dropped where the loop turns back at it, and
+    /// densifying fills the chord left from the points on either side.
+    fn untangle(&self, pts: Vec<Pt>, closed: bool) -> Vec<Pt> {
+        if pts.len() < 4 || !pts.iter().any(|p| p.off) {
+            return pts;
+        }
+        let m = pts.len();
+        let mut keep: Vec<Pt> = Vec::with_capacity(m);
+        for i in 0..m {
+            let b = pts[i];
+            let prev = keep.last().copied().or(closed.then(|| pts[m - 1]));
+            let first = keep.first().copied().unwrap_or(pts[0]);
+            let next = (i + 1 < m).then(|| pts[i + 1]).or(closed.then_some(first));
+            if let (true, Some(a), Some(c)) = (b.off, prev, next) {
+                if self.delta(a.uv, b.uv).dot(self.delta(b.uv, c.uv)) < 0.0 {
+                    continue;
+                }
+            }
+            keep.push(b);
+        }
+        if keep.len() >= 3 {
+            keep
+        } else {
+            pts
         }
     }
 
@@ -645,7 +720,10 @@ impl Tracer<'_, '_> {
     fn chain(&self, segs: &[(Key, Key)]) -> Vec<(Vec<Pt>, bool)> {
         crate::geom::mesh::chain_directed(segs)
             .into_iter()
-            .map(|(keys, closed)| (keys.into_iter().map(|k| self.pt(k)).collect(), closed))
+            .map(|(keys, closed)| {
+                let pts = keys.into_iter().map(|k| self.pt(k)).collect();
+                (self.untangle(pts, closed), closed)
+            })
             .collect()
     }
 
@@ -707,7 +785,11 @@ impl Tracer<'_, '_> {
         let chord = pb - pa;
         let off = (pm - pa).cross(chord).length() / chord.length();
         if off > self.chord_tol {
-            let mp = Pt { uv: m, pinned };
+            let mp = Pt {
+                uv: m,
+                pinned,
+                off: false,
+            };
             self.densify(a, mp, depth + 1, out);
             out.push(pm);
             self.densify(mp, b, depth + 1, out);

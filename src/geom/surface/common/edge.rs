@@ -5,23 +5,49 @@
 //! they part tangentially (a flat joining an arc of radius R, the gap growing like s²/2R) it is
 //! √(2·tol·R) beyond the edge: 1e-4 for R = 10 and tol = 1e-9. Beyond the threshold the gap is
 //! `c·(s − s0)^k` (k = 1 across a crease, 2 past a tangent join with a jump in curvature, 3 past
-//! a curvature-continuous one), so `gap^(1/k)` is linear in s: two samples well above the
-//! tolerance give s0 by extrapolation and a third tells which k holds. When none fits (the gap
-//! is the other surface's extent ending, or not a power law) the threshold point stays.
+//! a curvature-continuous one, more where further derivatives are continuous), so `gap^(1/k)`
+//! is linear in s: two samples well above the tolerance give s0 by extrapolation and a third
+//! tells which of k = 1, 2, 3 holds; failing those, the three give k too and a fourth checks
+//! it. Near a corner of the region, where the samples along the search line would leave the
+//! domain or the other surface, they are taken along turned lines. When none fits (the gap is
+//! the other surface's extent ending, or not a power law) the threshold point stays.
 
 use super::{Target, Tracer};
 use glam::{DVec2, DVec3};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, FRAC_PI_6};
 
 /// How far above the tracer's tolerance the first sample's gap must be: large enough that its
 /// roundoff (about 1e-15 of the scale) is small beside it, small enough that the power law's
 /// next term is negligible.
 const ABOVE: f64 = 64.0;
 
+/// Nearest the first sample lies past the threshold, in parameters, in the fits tried: near,
+/// so the power law's next term counts least; failing that, beyond where the projection onto
+/// a target with a kink inside its patch (a fold's crease) blends the two sides' derivatives
+/// (its central differences step 1e-6 in parameters), which bends a crease's straight gap by
+/// some 1e-3 within a few of those steps.
+const FIRST: [f64; 2] = [1e-7, 1e-5];
+
 /// Farthest the first sample goes past the threshold, in parameters (a grid cell is 1/32).
 const REACH: f64 = 1.0 / 64.0;
 
 /// Largest relative misfit of the third sample for a power law to be taken.
 const FIT: f64 = 1e-3;
+
+/// How far behind the threshold the zero may lie, in the first sample's distances from it:
+/// for `c·s^k` the gap grows by ABOVE over that distance, so the zero lies within
+/// 1/(ABOVE^(1/k) − 1) of it behind, 3.3 for k = 16.
+const BEHIND: f64 = 4.0;
+
+/// The turns of the search line tried, in radians, when the samples along it leave the domain
+/// or the target's extent: a direction between the region's edge and a domain or extent edge
+/// meeting it stays within both and still crosses the region's edge.
+const TURNS: [f64; 6] = [
+    FRAC_PI_6, -FRAC_PI_6, FRAC_PI_3, -FRAC_PI_3, FRAC_PI_2, -FRAC_PI_2,
+];
+
+/// The powers fitted when no whole one of 1 to 3 fits (some roundoff below 1).
+const POWERS: std::ops::RangeInclusive<f64> = 0.9..=16.0;
 
 impl Target<'_> {
     /// The distance from `p` to the target's carrier surface when `p` lies within the target's
@@ -40,10 +66,17 @@ impl Target<'_> {
             }
             Target::Plane(o, n) => Some(n.dot(p - *o).abs()),
             Target::Patch(patch, hint) => {
-                let uv = patch.project(p, hint.get());
+                let mut uv = patch.project(p, hint.get());
+                // Stopped at a pole, maybe short of the nearest point: from the search grid too.
                 let periodic = patch.periodic();
                 let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
-                (!at_edge).then(|| patch.eval(uv).distance(p))
+                if at_edge && !super::on_boundary(patch, uv) {
+                    let other = patch.project(p, None);
+                    if patch.eval(other).distance(p) < patch.eval(uv).distance(p) {
+                        uv = other;
+                    }
+                }
+                (!super::on_boundary(patch, uv)).then(|| patch.eval(uv).distance(p))
             }
         }
     }
@@ -66,18 +99,63 @@ impl Tracer<'_, '_> {
         self.target.gap(self.eval(uv), self.tol)
     }
 
-    /// The zero of the gap's power law fitted beyond the threshold point `t` on the line from
-    /// `lo` to `hi`, when one fits and lies between `lo` and `t`.
+    /// The edge near the threshold point `t` on the line from `lo` to `hi`: the zero of the
+    /// gap's power law fitted beyond `t` along that line. Where the samples along it leave the
+    /// domain or the target's extent (near a corner of the region, where the other surface's
+    /// edge or the domain's cuts it), the edge is found along the line turned by [`TURNS`]
+    /// instead, at two places either side where it can be, and the line taken to where it
+    /// crosses the chord between them: on the edge (to the edge's curvature over a few
+    /// thresholds' distance) and on the line, so that densifying does not step back and forth
+    /// along the edge. With one place only, that place.
     fn extrapolated(&self, lo: DVec2, t: DVec2, hi: DVec2) -> Option<DVec2> {
         let span = hi.distance(lo);
         if span == 0.0 {
             return None;
         }
         let dir = (hi - lo) / span;
-        let at = |s: f64| t + dir * s;
+        if let Some(e) = self.zero_along(t, dir, t.distance(lo)) {
+            return Some(e);
+        }
+        let turned = |a: f64| {
+            let (sin, cos) = f64::sin_cos(a);
+            DVec2::new(cos * dir.x - sin * dir.y, sin * dir.x + cos * dir.y)
+        };
+        let mut found = TURNS
+            .iter()
+            .filter_map(|&a| self.zero_along(t, turned(a), 0.0));
+        let e1 = found.next()?;
+        let Some(e2) = found.next() else {
+            return Some(e1);
+        };
+        let f = e2 - e1;
+        let across = dir.perp_dot(f);
+        if across.abs() <= 1e-3 * f.length() {
+            return Some(e1);
+        }
+        let s = (e1 - t).perp_dot(f) / across;
+        let reach = 2.0 * e1.distance(t).max(e2.distance(t));
+        let e = t + dir * s;
+        (s <= 0.0 && s >= -reach && self.on(e))
+            .then_some(e)
+            .or(Some(e1))
+    }
+
+    /// The zero of the gap's power law fitted beyond `t` along the unit direction `w`, when
+    /// one fits. It lies behind `t`, within a few samples' spacing or `back`: maybe behind the
+    /// region's point the search started from too, which lies on the target only within the
+    /// tolerance (a threshold point taken as the inside end when densifying along an edge).
+    fn zero_along(&self, t: DVec2, w: DVec2, back: f64) -> Option<DVec2> {
+        FIRST
+            .iter()
+            .find_map(|&first| self.zero_from(t, w, back, first))
+    }
+
+    /// [`Self::zero_along`] with the first sample no nearer `t` than `first`.
+    fn zero_from(&self, t: DVec2, w: DVec2, back: f64, first: f64) -> Option<DVec2> {
+        let at = |s: f64| t + w * s;
         // Out from the threshold in doubling steps until the gap stands well above it (the
         // samples may lie past `hi`: a densifying search brackets the edge closely).
-        let mut d = 1e-7;
+        let mut d = first;
         let g1 = loop {
             let g = self.gap_at(at(d))?;
             if g >= ABOVE * self.tol {
@@ -88,23 +166,24 @@ impl Tracer<'_, '_> {
                 return None;
             }
         };
-        let (g2, g3) = (self.gap_at(at(2.0 * d))?, self.gap_at(at(4.0 * d))?);
-        let s0 = fit_zero([d, 2.0 * d, 4.0 * d], [g1, g2, g3])?;
-        // The edge lies between the region's point and the threshold (a little slack for the
-        // fit's own error either side: the region's point may be on the edge itself).
-        let back = t.distance(lo);
-        let slack = 1e-3 * back;
-        if !(s0 <= slack && s0 >= -back - slack) {
+        let s = [d, 2.0 * d, 4.0 * d];
+        let g = [g1, self.gap_at(at(s[1]))?, self.gap_at(at(s[2]))?];
+        let s0 = match fit_zero(s, g) {
+            Some(z) => z,
+            None => fit_power(s, g, (3.0 * d, self.gap_at(at(3.0 * d))?))?,
+        };
+        if !(s0 <= 1e-3 * d && s0 >= -back.max(BEHIND * d)) {
             return None;
         }
-        let e = at(s0.clamp(-back, 0.0));
+        let e = at(s0.min(0.0));
         self.on(e).then_some(e)
     }
 }
 
 /// The zero of `c·(s − s0)^k` through the samples `(s[i], g[i])` for the k ∈ {1, 2, 3} that
 /// predicts the third sample from the first two best (None when none predicts it within
-/// [`FIT`]).
+/// [`FIT`]): the common partings, fitted from two samples so the power law's next term (an
+/// arc's gap is not quite a parabola) moves the zero least.
 fn fit_zero(s: [f64; 3], g: [f64; 3]) -> Option<f64> {
     let mut best: Option<(f64, f64)> = None;
     for k in 1..=3 {
@@ -122,9 +201,45 @@ fn fit_zero(s: [f64; 3], g: [f64; 3]) -> Option<f64> {
     best.map(|(_, s0)| s0)
 }
 
+/// The zero of `c·(s − s0)^k` through three samples with the power k fitted too (surfaces
+/// parting with higher-order contact: a flat joining a curve whose curvature and its
+/// derivatives are continuous), when k lies in [`POWERS`] and the law predicts a fourth
+/// sample `check` within [`FIT`]. The three equations reduce to one in y = s[0] − s0: the
+/// ratio of the logarithmic steps ln(g1/g0) / ln(g2/g1), which falls steadily from ∞ (y → 0)
+/// to (s1 − s0) / (s2 − s1) (y → ∞), solved by bisection of log y.
+fn fit_power(s: [f64; 3], g: [f64; 3], check: (f64, f64)) -> Option<f64> {
+    if !(g[0] > 0.0 && g[1] > g[0] && g[2] > g[1] && check.1 > 0.0) {
+        return None;
+    }
+    let rho = (g[1] / g[0]).ln() / (g[2] / g[1]).ln();
+    let (a1, a2) = (s[1] - s[0], s[2] - s[0]);
+    let ratio = |y: f64| ((a1 + y) / y).ln() / ((a2 + y) / (a1 + y)).ln();
+    let (mut lo, mut hi) = ((1e-12 * a2).ln(), (1e6 * a2).ln());
+    if !(ratio(lo.exp()) >= rho && ratio(hi.exp()) <= rho) {
+        return None;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if ratio(mid.exp()) > rho {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let y = (0.5 * (lo + hi)).exp();
+    let k = (g[1] / g[0]).ln() / ((a1 + y) / y).ln();
+    if !POWERS.contains(&k) {
+        return None;
+    }
+    // The fourth sample's distance from the zero, as the law predicts it from the first.
+    let predicted = y * (check.1 / g[0]).powf(1.0 / k);
+    let actual = check.0 - s[0] + y;
+    ((predicted - actual).abs() <= FIT * actual).then_some(s[0] - y)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::fit_zero;
+    use super::{fit_power, fit_zero};
 
     #[test]
     fn the_fit_finds_the_zero_and_the_power() {
@@ -141,5 +256,37 @@ mod tests {
         assert!((fit_zero(s, g).unwrap() - s0).abs() <= 1e-10);
         // No power law: none.
         assert!(fit_zero(s, [1.0, 5.0, 2.0]).is_none());
+    }
+
+    #[test]
+    fn the_power_is_fitted_where_no_whole_one_to_three_fits() {
+        let s = [0.01, 0.02, 0.04];
+        for (k, s0) in [
+            (4.0, -0.004),
+            (5.0, -0.01),
+            (2.5, -1e-4),
+            (8.0, -0.02),
+            (1.0, -0.3),
+        ] {
+            let g = s.map(|x: f64| 0.7 * (x - s0).powf(k));
+            if k > 3.0 {
+                assert!(fit_zero(s, g).is_none(), "k {k}");
+            }
+            let check = (0.03, 0.7 * (0.03 - s0).powf(k));
+            let z = fit_power(s, g, check).unwrap();
+            assert!((z - s0).abs() <= 1e-12 * s[2], "k {k}: {z} vs {s0}");
+        }
+        // A gap of s⁴ + s⁵/10 near its zero: the fourth-order law to the next term's error.
+        let gap = |x: f64| (x + 1e-3).powi(4) * (1.0 + (x + 1e-3) / 10.0);
+        let check = (3e-3, gap(3e-3));
+        let z = fit_power([1e-3, 2e-3, 4e-3], [gap(1e-3), gap(2e-3), gap(4e-3)], check);
+        assert!((z.unwrap() + 1e-3).abs() <= 1e-6, "{z:?}");
+        // Three samples fit some power; a fourth off the law is refused.
+        let g = s.map(|x: f64| (x + 0.004).powi(4));
+        assert!(fit_power(s, g, (0.03, 2.0 * (0.034f64).powi(4))).is_none());
+        // Not rising, or rising faster than any power whose zero lies behind the first sample
+        // (its logarithmic steps in the ratio 0.39, below the 1/2 of a zero far behind): none.
+        assert!(fit_power(s, [1.0, 1.0, 2.0], (0.03, 1.5)).is_none());
+        assert!(fit_power(s, [1.0, 1.1, 1.4], (0.03, 1.2)).is_none());
     }
 }
