@@ -297,6 +297,11 @@ struct Tracer<'a, 'b> {
     lines: [Vec<f64>; 2],
     nodes: Vec<bool>,
     cross: HashMap<Key, DVec2>,
+    /// The lines spread across oblique or narrowing bands, per direction, sorted, and where
+    /// those bands pass ([`walk`]): where two spread lines cross far from every band, the node
+    /// is not classified (out of the region).
+    spread: [Vec<f64>; 2],
+    corridors: Vec<walk::Corridor>,
 }
 
 /// Traces the region of `s` lying on `t`, whose gap over the region is `level` (None: not
@@ -346,6 +351,8 @@ impl<'a, 'b> Tracer<'a, 'b> {
             lines: [uniform.clone(), uniform],
             nodes: Vec::new(),
             cross: HashMap::new(),
+            spread: [Vec::new(), Vec::new()],
+            corridors: Vec::new(),
         }
     }
 }
@@ -439,7 +446,7 @@ impl Tracer<'_, '_> {
         for j in 0..=nv {
             for i in 0..=nu {
                 let wrapped = (self.periodic[0] && i == nu) || (self.periodic[1] && j == nv);
-                if !wrapped {
+                if !wrapped && self.needed(i, j) {
                     let d = 0.25 * DVec2::new(self.cell_near(0, i), self.cell_near(1, j));
                     nodes[j * (nu + 1) + i] = self.in_region_by(self.uv_of(i, j), d);
                 }

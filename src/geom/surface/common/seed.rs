@@ -67,13 +67,24 @@ impl Tracer<'_, '_> {
                 }
             }
         }
+        // Nodes off the bands' corridors are left out only when every band is oblique (lines
+        // spread across it both ways): a band along a parameter line, or a wide region, has no
+        // corridor, and may lie where another band's spread lines cross.
+        let mut oblique = true;
         for (b, walks) in &bands {
             for (k, e) in b.iter().enumerate() {
-                match *e {
-                    Some((lo, hi)) if self.steady(&walks[k], lo, hi) => self.add_lines(k, lo, hi),
+                oblique &= match *e {
+                    Some((lo, hi)) if self.steady(&walks[k], lo, hi) => {
+                        self.add_lines(k, lo, hi);
+                        false
+                    }
                     _ => self.spread_lines(k, &walks[k]),
-                }
+                };
             }
+        }
+        if !oblique {
+            self.spread = [Vec::new(), Vec::new()];
+            self.corridors.clear();
         }
         (!bands.is_empty()).then_some(level)
     }
@@ -284,13 +295,16 @@ impl Tracer<'_, '_> {
 
 /// Adds the grid line `x` (wrapped into the domain where periodic, dropped outside it where
 /// not) unless one lies within rounding of it; the caller sorts the lines after.
-pub(super) fn add_line(lines: &mut Vec<f64>, periodic: bool, mut x: f64) {
+/// The line added, if any.
+pub(super) fn add_line(lines: &mut Vec<f64>, periodic: bool, mut x: f64) -> Option<f64> {
     if periodic {
         x = x.rem_euclid(1.0);
     } else if !(x > 0.0 && x < 1.0) {
-        return;
+        return None;
     }
-    if lines.iter().all(|l| (l - x).abs() > 1e-12) {
+    let new = lines.iter().all(|l| (l - x).abs() > 1e-12);
+    if new {
         lines.push(x);
     }
+    new.then_some(x)
 }

@@ -7,8 +7,10 @@
 //! extent measured there. A band whose extent stays the seed's gets the seed's fine lines, as
 //! before; otherwise lines at a quarter of its least width are spread over all the places it
 //! passes through, so every station's cross-section holds some and the band is connected on
-//! the grid. The lines are global, so an oblique band costs (its range / its width)² nodes:
-//! [`MOST_LINES`] bounds them per direction.
+//! the grid. The lines are global, so an oblique band crosses (its range / its width)² of
+//! their nodes; only those near the band (in its corridor: the stations' extents, interpolated
+//! between stations, widened by the lines' margin) are classified, so its cost grows with its
+//! length. [`MOST_LINES`] bounds the lines per direction.
 
 use super::seed::{add_line, W_MIN};
 use super::{Tracer, N};
@@ -24,6 +26,14 @@ const STEPS: usize = 12;
 
 /// A station: its place along the walked direction and the band's extent across it.
 pub(super) type Station = (f64, f64, f64);
+
+/// Where a walked band passes: its stations across direction `k` (in order along the walk),
+/// widened by `margin` either side.
+pub(super) struct Corridor {
+    k: usize,
+    stations: Vec<Station>,
+    margin: f64,
+}
 
 impl Tracer<'_, '_> {
     /// The band through `q` (on the target) measured across direction `k` at stations along
@@ -116,14 +126,19 @@ impl Tracer<'_, '_> {
     }
 
     /// Lines across direction `k` at a quarter of the narrowest station's width, over every
-    /// station's extent and as far again beyond, as the band moves between stations.
-    pub(super) fn spread_lines(&mut self, k: usize, stations: &[Station]) {
+    /// station's extent and as far again beyond, as the band moves between stations, and the
+    /// band's corridor; false when no station is narrow (no lines).
+    pub(super) fn spread_lines(&mut self, k: usize, stations: &[Station]) -> bool {
+        // In order along the walk (it goes one way from the seed, then the other), so that
+        // neighbours are next to each other.
+        let mut stations = stations.to_vec();
+        stations.sort_by(|a, b| a.0.total_cmp(&b.0));
         let narrow: Vec<&Station> = stations
             .iter()
             .filter(|s| s.2 - s.1 < 2.0 / N as f64)
             .collect();
         let Some(e) = narrow.iter().map(|s| s.2 - s.1).min_by(f64::total_cmp) else {
-            return;
+            return false;
         };
         let moved = narrow
             .windows(2)
@@ -136,9 +151,66 @@ impl Tracer<'_, '_> {
         let step = (hi - lo) / count as f64;
         let lines = &mut self.lines[k];
         for i in 0..count {
-            add_line(lines, self.periodic[k], lo + step * (i as f64 + 0.5));
+            let added = add_line(lines, self.periodic[k], lo + step * (i as f64 + 0.5));
+            self.spread[k].extend(added);
         }
         lines.sort_by(f64::total_cmp);
+        self.spread[k].sort_by(f64::total_cmp);
+        self.corridors.push(Corridor {
+            k,
+            stations,
+            margin,
+        });
+        true
+    }
+
+    /// Whether grid node (i, j) is classified: on the grid the search started from, or in a
+    /// band's corridor. A node on a line spread across bands ([`Self::spread_lines`]) off
+    /// every corridor lies out of every band found: classifying those would cost
+    /// (range / width)² nodes for an oblique band. (With lines spread, every band found is
+    /// oblique: see [`Self::refine_narrow`].)
+    pub(super) fn needed(&self, i: usize, j: usize) -> bool {
+        let uv = self.uv_of(i, j);
+        let spread = |k: usize| {
+            self.spread[k]
+                .binary_search_by(|x| x.total_cmp(&uv[k]))
+                .is_ok()
+        };
+        !(spread(0) || spread(1)) || self.corridors.iter().any(|c| self.in_corridor(c, uv))
+    }
+
+    /// Whether `uv` lies in the corridor: within its margin of the band's extent, interpolated
+    /// between the two stations either side of it along the walk (or within a station of the
+    /// walk's ends); everywhere across where stations were passed over (the band wide there).
+    fn in_corridor(&self, c: &Corridor, uv: DVec2) -> bool {
+        let (k, m) = (c.k, 1 - c.k);
+        let st = &c.stations;
+        let shifts: &[f64] = if self.periodic[m] {
+            &[-1.0, 0.0, 1.0]
+        } else {
+            &[0.0]
+        };
+        let near = |lo: f64, hi: f64| {
+            let mut d = uv[k] - 0.5 * (lo + hi);
+            if self.periodic[k] {
+                d -= d.round();
+            }
+            d.abs() <= 0.5 * (hi - lo) + c.margin
+        };
+        shifts.iter().any(|&shift| {
+            let x = uv[m] + shift;
+            let i = st.partition_point(|s| s.0 <= x);
+            if i == 0 || i == st.len() {
+                let end = st[if i == 0 { 0 } else { i - 1 }];
+                return (x - end.0).abs() <= STEP && near(end.1, end.2);
+            }
+            let (a, b) = (st[i - 1], st[i]);
+            if b.0 - a.0 > 1.5 * STEP {
+                return true;
+            }
+            let f = (x - a.0) / (b.0 - a.0);
+            near(a.1 + f * (b.1 - a.1), a.2 + f * (b.2 - a.2))
+        })
     }
 
     /// Whether `uv` lies within a seed cell of a station's extent, half a station along.
