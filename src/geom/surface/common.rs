@@ -97,7 +97,7 @@ impl<'a> Target<'a> {
                 // only a far miss elsewhere (a pole included) may be another local minimum.
                 let (mut ok, mut uv) = try_from(hint.get());
                 let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
-                if !ok && !near && !on_boundary(patch, uv) && hint.get().is_some() {
+                if !ok && !near && !edge::on_boundary(patch, uv) && hint.get().is_some() {
                     (ok, uv) = try_from(None);
                 }
                 if ok {
@@ -107,27 +107,6 @@ impl<'a> Target<'a> {
             }
         }
     }
-}
-
-/// Whether `uv` lies on an edge of the patch's domain that bounds the surface: not a seam,
-/// and not a pole (an edge collapsing to a point, as a revolved profile's end on the axis),
-/// where a projection from a warm start may stop, clamped, far short of the nearest point
-/// (a point of a flat ring around the pole, its projection slid to the pole, was taken for
-/// one past the surface's boundary: the ring's inner edge came back as a 4-point loop).
-fn on_boundary(patch: &Patch, uv: DVec2) -> bool {
-    let periodic = patch.periodic();
-    (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0) && !collapses(patch, k, uv[k]))
-}
-
-/// Whether the domain edge where parameter `k` is `c` collapses to a point.
-fn collapses(patch: &Patch, k: usize, c: f64) -> bool {
-    let at = |t: f64| {
-        let mut q = DVec2::splat(t);
-        q[k] = c;
-        patch.eval(q)
-    };
-    let p0 = at(0.0);
-    (1..=4).all(|i| at(i as f64 / 4.0).distance(p0) <= 1e-12 * patch.scale())
 }
 
 /// The region where `a` and `b` coincide: in closed form for the analytic pairs

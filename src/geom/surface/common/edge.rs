@@ -12,7 +12,7 @@
 //! domain or the other surface, they are taken along turned lines. When none fits (the gap is
 //! the other surface's extent ending, or not a power law) the threshold point stays.
 
-use super::{Target, Tracer};
+use super::{Patch, Target, Tracer};
 use glam::{DVec2, DVec3};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_3, FRAC_PI_6};
 
@@ -70,13 +70,13 @@ impl Target<'_> {
                 // Stopped at a pole, maybe short of the nearest point: from the search grid too.
                 let periodic = patch.periodic();
                 let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
-                if at_edge && !super::on_boundary(patch, uv) {
+                if at_edge && !on_boundary(patch, uv) {
                     let other = patch.project(p, None);
                     if patch.eval(other).distance(p) < patch.eval(uv).distance(p) {
                         uv = other;
                     }
                 }
-                (!super::on_boundary(patch, uv)).then(|| patch.eval(uv).distance(p))
+                (!on_boundary(patch, uv)).then(|| patch.eval(uv).distance(p))
             }
         }
     }
@@ -178,6 +178,27 @@ impl Tracer<'_, '_> {
         let e = at(s0.min(0.0));
         self.on(e).then_some(e)
     }
+}
+
+/// Whether `uv` lies on an edge of the patch's domain that bounds the surface: not a seam,
+/// and not a pole (an edge collapsing to a point, as a revolved profile's end on the axis),
+/// where a projection from a warm start may stop, clamped, far short of the nearest point
+/// (a point of a flat ring around the pole, its projection slid to the pole, was taken for
+/// one past the surface's boundary: the ring's inner edge came back as a 4-point loop).
+pub(super) fn on_boundary(patch: &Patch, uv: DVec2) -> bool {
+    let periodic = patch.periodic();
+    (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0) && !collapses(patch, k, uv[k]))
+}
+
+/// Whether the domain edge where parameter `k` is `c` collapses to a point.
+fn collapses(patch: &Patch, k: usize, c: f64) -> bool {
+    let at = |t: f64| {
+        let mut q = DVec2::splat(t);
+        q[k] = c;
+        patch.eval(q)
+    };
+    let p0 = at(0.0);
+    (1..=4).all(|i| at(i as f64 / 4.0).distance(p0) <= 1e-12 * patch.scale())
 }
 
 /// The zero of `c·(s − s0)^k` through the samples `(s[i], g[i])` for the k ∈ {1, 2, 3} that
