@@ -308,16 +308,15 @@ impl Crossings<'_> {
             self.extend(&mut pieces, &found);
         }
         let reach = 2.0 * self.len;
-        let mut joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
+        let joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
         branch::run_into(
             self.a,
             self.gap,
-            &mut joined,
+            joined,
             self.contacts,
-            (self.near, self.len),
+            self.near,
             (tol, chord_tol),
-        );
-        joined
+        )
     }
 
     /// Carries on the last `new.len()` of `pieces` (each with the ends where it was cut off a

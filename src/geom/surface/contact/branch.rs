@@ -52,71 +52,126 @@ pub(crate) fn contact_curve_near(
     })
 }
 
+/// A parameter pair of `a` and the point there.
+type Node = (DVec2, DVec3);
+
 /// The open `pieces` whose ends stop within 2·`near` of one of the `contacts` carried on to it
-/// where they run into it: the march stops beside a contact (whose double zero it could fall on),
-/// so a crossing meeting a contact at a branch point ended near/sin(angle) short of it. The
-/// end's tangent is carried on, up to `reach` (a step of the march), to where it passes within
-/// `near` of a contact's segment: the crossing's last points are within the tolerance of both
-/// surfaces but, the gap flattening there to a triple root, up to about `near` across, so the
-/// tangent is off by that over the chord it is taken on (a crossing running alongside a contact
-/// never comes within `near` of it). The meeting point is solved on the true surfaces (the
-/// extremum of the gap across the contact there) or, within near/sin(angle) of an open
-/// contact's end (a bounded edge the crossing runs into it at), is that end; the end's chord to
-/// it is densified on the crossing within `chord_tol`.
+/// where they run into it (see [`meeting`]); the end's chord to the meeting point is densified
+/// on the crossing within `chord_tol`. Two ends meeting a contact within 2·`near` of each other
+/// are one crossing passing through a branch point, cut there: those pieces are joined by the
+/// chord between the two ends, densified likewise (their meeting points spread about the branch
+/// point by about ∛tol; through them the crossing would be that long on the contact).
 pub(crate) fn run_into(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
-    pieces: &mut [Polyline3],
+    mut pieces: Vec<Polyline3>,
     contacts: &[Polyline3],
-    (near, reach): (f64, f64),
+    near: f64,
     (tol, chord_tol): (f64, f64),
-) {
-    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
-    for c in pieces
-        .iter_mut()
-        .filter(|c| !c.closed && c.points.len() >= 2)
-    {
+) -> Vec<Polyline3> {
+    let mid_of = |x: &Node, y: &Node| between(a, gap, x, y, tol);
+    let mut meets: Vec<(usize, usize, Node, Node)> = Vec::new();
+    for (i, c) in pieces.iter().enumerate() {
+        if c.closed || c.points.len() < 2 {
+            continue;
+        }
         for end in 0..2 {
-            let n = c.points.len();
-            // The points from this end inwards.
-            let inwards = |k: usize| c.points[if end == 0 { k } else { n - 1 - k }];
-            let p = inwards(0);
-            // The march stopped at the last node beyond `near`.
-            if !super::near_any(p, contacts, 2.0 * near) {
-                continue;
-            }
-            // The tangent over a chord of about `near`: the last nodes can be a bisection's
-            // length apart, their direction off by the tolerance over that.
-            let far = (0..n).map(inwards).find(|x| x.distance(p) >= near);
-            let q = far.unwrap_or(inwards(n - 1));
-            let t = (p - q).normalize_or_zero();
-            let hit = contacts
-                .iter()
-                .flat_map(|k| {
-                    let m = k.points.len();
-                    let segs = if k.closed { m } else { m.saturating_sub(1) };
-                    (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
-                })
-                .filter_map(|seg| ray_meets(p, t, reach, seg, near).map(|h| (h, seg)))
-                .min_by(|x, y| x.0 .0.total_cmp(&y.0 .0));
-            let Some(((_, at, sine), seg)) = hit else {
-                continue;
-            };
-            let from = (a.project(p, None), p);
-            let Some(to) = contact_end(a, contacts, at, near / sine, from.0)
-                .or_else(|| onto_contact(a, gap, at, seg, from.0, tol))
-            else {
-                continue;
-            };
-            let chord = assemble(&[from, to], false, |x| x.1, &mid_of, tol, chord_tol);
-            let more = chord.points.into_iter().skip(1);
-            if end == 0 {
-                c.points.splice(0..0, more.rev());
-            } else {
-                c.points.extend(more);
+            if let Some((from, to)) = meeting(a, gap, c, end, contacts, near, tol) {
+                meets.push((i, end, from, to));
             }
         }
     }
+    let mut through: Option<(usize, usize)> = None;
+    for (x, m) in meets.iter().enumerate() {
+        let other = meets[x + 1..]
+            .iter()
+            .position(|o| o.0 != m.0 && o.3 .1.distance(m.3 .1) <= 2.0 * near);
+        if let Some(y) = other {
+            through = Some((x, x + 1 + y));
+            break;
+        }
+    }
+    if let Some((x, y)) = through {
+        let ((i, ei, pi, _), (j, ej, pj, _)) = (meets[x], meets[y]);
+        let chord = assemble(&[pi, pj], false, |n| n.1, &mid_of, tol, chord_tol);
+        let (mut head, mut tail) = (pieces[i].points.clone(), pieces[j].points.clone());
+        if ei == 0 {
+            head.reverse();
+        }
+        if ej == 1 {
+            tail.reverse();
+        }
+        let inner = chord.points.len().saturating_sub(1);
+        head.extend_from_slice(&chord.points[1.min(inner)..inner]);
+        head.extend(tail);
+        pieces[i.min(j)] = Polyline3 {
+            points: head,
+            closed: false,
+        };
+        pieces.remove(i.max(j));
+        // The joined piece's other ends, and the rest, as before.
+        return run_into(a, gap, pieces, contacts, near, (tol, chord_tol));
+    }
+    for (i, end, from, to) in meets {
+        let chord = assemble(&[from, to], false, |n| n.1, &mid_of, tol, chord_tol);
+        let more = chord.points.into_iter().skip(1);
+        let c = &mut pieces[i].points;
+        if end == 0 {
+            c.splice(0..0, more.rev());
+        } else {
+            c.extend(more);
+        }
+    }
+    pieces
+}
+
+/// Where the `end` (0: first point, 1: last) of the crossing piece `c` runs into one of the
+/// `contacts`, when it stops within 2·`near` of one: the end (with its parameters) and the
+/// meeting point. The march stops beside a contact (whose double zero it could fall on), so a
+/// crossing meeting a contact at a branch point ended near/sin(angle) short of it. The end's
+/// tangent is carried on to where it passes within `near` of a contact's segment, no farther
+/// than 4·near/sin(angle) (twice the most the end can be short of it): the crossing's last
+/// points are within the tolerance of both surfaces but, the gap flattening there to a triple
+/// root, up to about `near` across, so the tangent is off by that over the chord it is taken on
+/// (a crossing running alongside a contact never comes within `near` of it). The meeting point
+/// is solved on the true surfaces (the extremum of the gap across the contact there) or, within
+/// near/sin(angle) of an open contact's end (a bounded edge the crossing runs into it at), is
+/// that end.
+fn meeting(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    c: &Polyline3,
+    end: usize,
+    contacts: &[Polyline3],
+    near: f64,
+    tol: f64,
+) -> Option<(Node, Node)> {
+    let n = c.points.len();
+    // The points from this end inwards.
+    let inwards = |k: usize| c.points[if end == 0 { k } else { n - 1 - k }];
+    let p = inwards(0);
+    // The march stopped at the last node beyond `near`.
+    if !super::near_any(p, contacts, 2.0 * near) {
+        return None;
+    }
+    // The tangent over a chord of about `near`: the last nodes can be a bisection's length
+    // apart, their direction off by the tolerance over that.
+    let far = (0..n).map(inwards).find(|x| x.distance(p) >= near);
+    let q = far.unwrap_or(inwards(n - 1));
+    let t = (p - q).normalize_or_zero();
+    let ((_, at, sine), seg) = contacts
+        .iter()
+        .flat_map(|k| {
+            let m = k.points.len();
+            let segs = if k.closed { m } else { m.saturating_sub(1) };
+            (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
+        })
+        .filter_map(|seg| ray_meets(p, t, seg, near).map(|h| (h, seg)))
+        .min_by(|x, y| x.0 .0.total_cmp(&y.0 .0))?;
+    let from = (a.project(p, None), p);
+    let to = contact_end(a, contacts, at, near / sine, from.0)
+        .or_else(|| onto_contact(a, gap, at, seg, from.0, tol))?;
+    Some((from, to))
 }
 
 /// The end of an open one of `contacts` within `r` of `at`, with its parameters (from `near`).
@@ -156,15 +211,9 @@ fn onto_contact(
     (g.dist <= tol).then_some((uv, g.point))
 }
 
-/// Where the ray `p + s·t` (s in (0, reach]) passes within `within` of the segment `xy`: s, the
-/// segment's point there, and the sine of their angle.
-fn ray_meets(
-    p: DVec3,
-    t: DVec3,
-    reach: f64,
-    (x, y): (DVec3, DVec3),
-    within: f64,
-) -> Option<(f64, DVec3, f64)> {
+/// Where the ray `p + s·t` (s > 0, no farther than 4·`within`/sine) passes within `within` of
+/// the segment `xy`: s, the segment's point there, and the sine of their angle.
+fn ray_meets(p: DVec3, t: DVec3, (x, y): (DVec3, DVec3), within: f64) -> Option<(f64, DVec3, f64)> {
     let e = y - x;
     let (a, b, c) = (t.dot(t), t.dot(e), e.dot(e));
     let w = p - x;
@@ -178,5 +227,5 @@ fn ray_meets(
     let at = x + e * r;
     let on = p + t * s;
     let sine = (den / (a * c)).sqrt();
-    (s > 0.0 && s <= reach && on.distance(at) <= within).then_some((s, at, sine))
+    (s > 0.0 && s * sine <= 4.0 * within && on.distance(at) <= within).then_some((s, at, sine))
 }
