@@ -150,7 +150,8 @@ type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
 
 /// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the
 /// plate z = 0 (a square wider than the patch), the seeding meshes made within `seed` and the
-/// curves densified within 1e-6; each run three times for the same bits.
+/// curves densified within 1e-6; each run twice for the same bits (three times took 280 s in a
+/// debug build).
 fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
     let s = patch(d0, d1);
     let plate = Surface::plane(vec![
@@ -184,14 +185,12 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
         let r = run();
         let name = format!("{name} d = {d0}..{d1} seed {seed}");
         check(&name, &r, (d0, d1));
-        for _ in 0..2 {
-            let again = run();
-            assert_eq!(again.len(), r.len());
-            assert!(again
-                .iter()
-                .zip(&r)
-                .all(|(c, e)| c.points == e.points && c.closed == e.closed));
-        }
+        let again = run();
+        assert_eq!(again.len(), r.len());
+        assert!(again
+            .iter()
+            .zip(&r)
+            .all(|(c, e)| c.points == e.points && c.closed == e.closed));
     }
 }
 
