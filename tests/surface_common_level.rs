@@ -271,13 +271,22 @@ fn off_profile(p: DVec3, profile: &[DVec3]) -> f64 {
 }
 
 #[test]
-#[ignore = "fails: the region is traced at the least level found (0), so the flat 0.9 x GEOMTOL off is lost"]
-fn two_flats_at_different_levels_off_a_plane_are_both_common_regions() {
-    // One flat on the plane y = 0, the other 0.9 × GEOMTOL off it (either one raised), wide
-    // and narrow: two loops, each round its flat's region (x from x0 to x0 + w, z from 0 to
-    // 3), of area 3w and length 2(w + 3), within 2·GEOMTOL·√2 of its outline (the slopes leave
-    // the tolerance that far along x at most).
-    for (w, m) in [(1.0, 1), (0.02, 80)] {
+fn two_wide_flats_at_different_levels_off_a_plane_are_both_common_regions() {
+    assert_two_flats(1.0, 1);
+}
+
+#[test]
+#[ignore = "fails: the narrow flat 0.9 x GEOMTOL off is not found (one loop, the flat on the plane)"]
+fn two_narrow_flats_at_different_levels_off_a_plane_are_both_common_regions() {
+    assert_two_flats(0.02, 80);
+}
+
+/// One flat on the plane y = 0, the other 0.9 × GEOMTOL off it (either one raised), `w` wide
+/// with `m` segments down each slope: two loops, each round its flat's region (x from x0 to
+/// x0 + w, z from 0 to 3), of area 3w and length 2(w + 3), within 2·GEOMTOL·√2 of its outline
+/// (the slopes leave the tolerance that far along x at most).
+fn assert_two_flats(w: f64, m: usize) {
+    {
         for d in [[0.0, 0.9 * GT], [0.9 * GT, 0.0]] {
             let profile = two_flats(w, m, d, 0.0);
             let curve = |z: f64| {
