@@ -155,8 +155,8 @@ pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) 
         return None;
     }
     let (ta, tb) = (Target::of(a), Target::of(b));
-    let (on_b, level_b) = on_samples(a, &tb, tol);
-    let (on_a, level_a) = on_samples(b, &ta, tol);
+    let (on_b, least_b, most_b) = on_samples(a, &tb, tol);
+    let (on_a, least_a, most_a) = on_samples(b, &ta, tol);
     if on_a == 0 && on_b == 0 {
         // No sample lies on the other surface: a region, if any, is narrower than the samples'
         // spacing; it is looked for from where the gap vanishes, in each free-form domain.
@@ -169,7 +169,8 @@ pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) 
     let a_first = !matches!(a, Surface::Plane(_))
         && (matches!(b, Surface::Plane(_)) || on_b * sample_count(b) >= on_a * sample_count(a));
     let (s, t) = if a_first { (a, &tb) } else { (b, &ta) };
-    trace(s, t, tol, chord_tol, Some(level_a.min(level_b)))
+    let levels = (least_a.min(least_b), most_a.max(most_b));
+    trace(s, t, tol, chord_tol, Some(levels))
 }
 
 /// The part of `s` lying in the plane through `p` with unit normal `n`, as its boundary loops;
@@ -196,8 +197,8 @@ pub(crate) fn in_plane(
         _ => {
             let t = Target::Plane(p, n);
             // No sample in the plane: a region, if any, is narrower than their spacing.
-            let (on, level) = on_samples(s, &t, tol);
-            match trace(s, &t, tol, chord_tol, (on > 0).then_some(level))? {
+            let (on, least, most) = on_samples(s, &t, tol);
+            match trace(s, &t, tol, chord_tol, (on > 0).then_some((least, most)))? {
                 Overlap::Loops(l) => Some(l),
                 Overlap::Everywhere => None,
             }
@@ -228,20 +229,22 @@ fn sample_count(s: &Surface) -> usize {
     samples(s).len().max(1)
 }
 
-/// How many of `s`'s samples lie on `t`, and the least gap among them (the common region's
-/// level: 0 where the surfaces coincide, 0.3 of the tolerance where held that far apart;
-/// infinite when none lies on `t`).
-fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64) {
-    let mut least = f64::INFINITY;
+/// How many of `s`'s samples lie on `t`, and the least and most gaps among them (the least
+/// is the common region's level: 0 where the surfaces coincide, 0.3 of the tolerance where
+/// held that far apart; a region may sit at a higher level, up to the most; infinite when none
+/// lies on `t`).
+fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64, f64) {
+    let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut count = 0;
     for p in samples(s) {
         if t.on(p, tol) {
             count += 1;
             // From where `on` left the projection; at most the tolerance, as `on` found.
-            least = least.min(t.gap(p, tol).unwrap_or(tol).min(tol));
+            let g = t.gap(p, tol).unwrap_or(tol).min(tol);
+            (least, most) = (least.min(g), most.max(g));
         }
     }
-    (count, least)
+    (count, least, most)
 }
 
 /// A key of the marching grid: a node, or the crossing on a horizontal (u) or vertical (v)
@@ -292,28 +295,46 @@ struct Tracer<'a, 'b> {
 /// surfaces held 0.9 of the tolerance apart still coincide (SPEC §4: farther apart than it
 /// they do not meet). At most the whole tolerance less a margin for rounding, so the boundary
 /// points found by bisection lie within it.
-fn trace(s: &Surface, t: &Target, tol: f64, chord_tol: f64, level: Option<f64>) -> Option<Overlap> {
+///
+/// `level` is the least and the most gap where the surfaces were seen to meet. When the most
+/// lies above the edge threshold, a region may sit at a higher level than the least (two
+/// flats, one on a plane and one 0.9 of the tolerance off it): the grid is classified again
+/// at the whole tolerance, and each part of the region so found that holds no node of the
+/// first is traced at that threshold, the first's loops kept as they were.
+fn trace(
+    s: &Surface,
+    t: &Target,
+    tol: f64,
+    chord_tol: f64,
+    level: Option<(f64, f64)>,
+) -> Option<Overlap> {
     let mut tr = Tracer::new(s, t, tol, chord_tol);
     let size = tr.patch.scale() + tr.eval(DVec2::splat(0.5)).length();
     let within = (tol - ROUNDING * size).max(0.5 * tol);
     tr.tol = within;
-    let level = match level {
+    let (least, most) = match level {
         Some(l) => l,
         None => tr.refine_narrow()?,
     };
-    tr.tol = (level + 0.5 * tol).min(within);
+    tr.tol = (least + 0.5 * tol).min(within);
     tr.classify();
     let segs = tr.segments();
-    if segs.is_empty() {
-        let all = tr.nodes.iter().all(|&x| x);
-        return (all && tr.boundaryless()).then_some(Overlap::Everywhere);
+    let first = tr.nodes.clone();
+    let mut loops = tr.loops(&segs);
+    if most > tr.tol && tr.tol < within {
+        tr.tol = within;
+        tr.cross.clear();
+        tr.classify();
+        tr.nodes = tr.new_parts(&first);
+        let segs = tr.segments();
+        loops.extend(tr.loops(&segs));
+        tr.nodes = first;
     }
-    let loops: Vec<Polyline3> = tr
-        .chain(&segs)
-        .into_iter()
-        .filter_map(|(pts, closed)| tr.polyline(&pts, closed))
-        .collect();
-    (!loops.is_empty()).then_some(Overlap::Loops(loops))
+    if !loops.is_empty() {
+        return Some(Overlap::Loops(loops));
+    }
+    let all = segs.is_empty() && tr.nodes.iter().all(|&x| x);
+    (all && tr.boundaryless()).then_some(Overlap::Everywhere)
 }
 
 impl<'a, 'b> Tracer<'a, 'b> {
@@ -417,6 +438,56 @@ impl Tracer<'_, '_> {
 
     fn node(&self, i: usize, j: usize) -> bool {
         self.nodes[self.idx(i, j)]
+    }
+
+    /// The boundary loops of the directed segments `segs`.
+    fn loops(&mut self, segs: &[(Key, Key)]) -> Vec<Polyline3> {
+        self.chain(segs)
+            .into_iter()
+            .filter_map(|(pts, closed)| self.polyline(&pts, closed))
+            .collect()
+    }
+
+    /// The nodes in the region (as now classified) whose connected part (across grid lines and
+    /// seams) holds no node of `first`.
+    fn new_parts(&self, first: &[bool]) -> Vec<bool> {
+        let [nu, nv] = self.cells();
+        let n = self.nodes.len();
+        let mut parent: Vec<usize> = (0..n).collect();
+        fn root(p: &mut [usize], mut x: usize) -> usize {
+            while p[x] != x {
+                p[x] = p[p[x]];
+                x = p[x];
+            }
+            x
+        }
+        let join = |p: &mut Vec<usize>, a: usize, b: usize| {
+            let (ra, rb) = (root(p, a), root(p, b));
+            p[ra] = rb;
+        };
+        for j in 0..=nv {
+            for i in 0..=nu {
+                let at = j * (nu + 1) + i;
+                if !self.nodes[at] {
+                    continue;
+                }
+                for b in [self.idx(i, j), at + 1, at + nu + 1] {
+                    let beside = b == at + 1 && i == nu || b == at + nu + 1 && j == nv;
+                    if !beside && b != at && self.nodes[b] {
+                        join(&mut parent, at, b);
+                    }
+                }
+            }
+        }
+        let mut old = vec![false; n];
+        // The same grid in both passes: `first` has a flag per node.
+        for x in (0..n).filter(|&x| first[x] && self.nodes[x]) {
+            let r = root(&mut parent, x);
+            old[r] = true;
+        }
+        (0..n)
+            .map(|x| self.nodes[x] && !old[root(&mut parent, x)])
+            .collect()
     }
 
     fn classify(&mut self) {

@@ -40,11 +40,11 @@ type Band = [Option<(f64, f64)>; 2];
 
 impl Tracer<'_, '_> {
     /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
-    /// one found, followed along its length ([`super::walk`]); the least gap over the regions
-    /// found (their level), None when none is found.
-    pub(super) fn refine_narrow(&mut self) -> Option<f64> {
+    /// one found, followed along its length ([`super::walk`]); the least and most levels of
+    /// the regions found, None when none is found.
+    pub(super) fn refine_narrow(&mut self) -> Option<(f64, f64)> {
         let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
-        let mut level = f64::INFINITY;
+        let (mut level, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
             bands
                 .iter()
@@ -59,7 +59,7 @@ impl Tracer<'_, '_> {
                 continue;
             }
             if let Some((b, l)) = self.band(q) {
-                level = level.min(l);
+                (level, most) = (level.min(l), most.max(l));
                 let wide = b.iter().all(Option::is_none);
                 bands.push((b, [self.walk(q, 0), self.walk(q, 1)]));
                 if wide {
@@ -86,7 +86,7 @@ impl Tracer<'_, '_> {
             self.spread = [Vec::new(), Vec::new()];
             self.corridors.clear();
         }
-        (!bands.is_empty()).then_some(level)
+        (!bands.is_empty()).then_some((level, most))
     }
 
     /// The nodes of an S × S grid where the gap is no larger than at any neighbour, smallest
