@@ -328,3 +328,68 @@ fn assert_two_flats(w: f64, m: usize) {
         }
     }
 }
+
+/// A flat on the plane y = 0 (x from 0 to 1) and, beside it, arcs of radius R whose lowest
+/// point, at x = XC, lies `lift` off the plane: the profile at z runs down a 45° slope to the
+/// flat, up a 45° slope to y = 1, along y = 1 to the arcs' left end, round them and up to their
+/// right end (R/2 + lift high, as [`arcs`]).
+fn flat_and_arcs(lift: f64, z: f64) -> Arc<Curve> {
+    let (m, d) = (60usize, FRAC_PI_3 / 60.0);
+    let at = |f: f64| v(XC + R * f.sin(), lift + R - R * f.cos(), z);
+    let mut pts = vec![
+        v(-1.0, 1.0, z),
+        v(0.0, 0.0, z),
+        v(1.0, 0.0, z),
+        v(2.0, 1.0, z),
+    ];
+    let mut bulges = vec![0.0; 4];
+    pts.extend((0..=2 * m).map(|k| at((k as f64 - m as f64) * d)));
+    bulges.extend(vec![(d / 4.0).tan(); 2 * m]);
+    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
+}
+
+/// Where [`flat_and_arcs`]' arcs come lowest.
+const XC: f64 = 4.0;
+
+#[test]
+#[ignore = "fails on 99e72a4 too: the flat's sides come back 2.9e-5 and 1.9e-6 inside x = 0 and 1 (area 2.99991), and the contact 0.6 x GEOMTOL off as two lone points, not its line"]
+fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
+    // The flat coincides with the plane (the regions' level 0); the arcs touch it 0.6 × GEOMTOL
+    // off, a gap between the level's threshold and the tolerance, whose band a second pass at
+    // the whole tolerance would classify as well: still one loop, round the flat.
+    let lift = 0.6 * GT;
+    let s = Surface::ruled(flat_and_arcs(lift, 0.0), flat_and_arcs(lift, 3.0));
+    let on_profile = |p: DVec3| {
+        let arc = (p.x - XC).hypot(p.y - lift - R) - R;
+        let flat = if (0.0..=1.0).contains(&p.x) {
+            p.y.abs()
+        } else {
+            f64::INFINITY
+        };
+        let slope = (p.x - 1.0 - p.y).abs() / 2f64.sqrt();
+        let d = arc.abs().min(flat).min(slope);
+        if (-GT..=3.0 + GT).contains(&p.z) {
+            d
+        } else {
+            f64::INFINITY
+        }
+    };
+    for (order, r) in results(&s, 0.0) {
+        let name = format!("flat and arcs, {order}");
+        let loops: Vec<&Polyline3> = r.iter().filter(|c| c.closed).collect();
+        assert_eq!(loops.len(), 1, "{name}: {}", summary(&r));
+        let slack = GT * 2f64.sqrt();
+        for p in &loops[0].points {
+            assert!(
+                (0.0 - slack..=1.0 + slack).contains(&p.x),
+                "{name}: {p} off the flat"
+            );
+        }
+        let area = area_xz(&loops[0].points);
+        assert!((area - 3.0).abs() <= 8.0 * slack, "{name}: area {area}");
+        for p in r.iter().flat_map(|c| &c.points) {
+            assert!(p.y.abs() <= GT, "{name}: {p} off the plane");
+            assert!(on_profile(*p) <= GT, "{name}: {p} off the strip");
+        }
+    }
+}
