@@ -235,10 +235,13 @@ fn a_crossing_running_into_a_curved_contact_at_an_edge_comes_back_with_it() {
 }
 
 /// The same seen from the plate (the gap measured from the plate's parameters to the patch):
-/// open. At seed 1e-2 a third curve, 29297 points and 18.03 long, wanders from the contact's
-/// end at θ = π/2 to beside the branch point (the contact's walk in the plate's parameters).
+/// open. At seed 1e-2 a third curve, 29297 points and 18.03 long, came back: a second walk of the
+/// contact, from a seed touching on it, that wandered about the branch point (the gap's maximum
+/// beside the contact is within tol there). With that seed passed over, the contact (from the
+/// plate's parameters, where the patch's edge is no parameter edge) stops 1.2e-7 rad short of
+/// θ = 0, and the crossing with it: the cross-section flattens to an inflection there.
 #[test]
-#[ignore = "open: plate ∩ patch traces a wandering third curve from a branch point on an edge (issue 13)"]
+#[ignore = "open: plate ∩ patch: the contact stops 1.2e-7 rad short of a branch point on an edge (issue 13)"]
 fn a_crossing_into_a_curved_contact_at_an_edge_seen_from_the_plane() {
     for (d0, d1, seed) in [(0.0, 0.3, 1e-2), (0.3, 0.0, 1e-3)] {
         both_curves_come_back((d0, d1), seed, true);

@@ -218,7 +218,13 @@ fn regroup(
     let mut traced: Vec<Polyline3> = Vec::new();
     let mut steps: Vec<f64> = Vec::new();
     for (c, uv) in touching.iter().chain(&partly) {
-        if c.points.len() < 2 || c.points.iter().all(|p| near_any(*p, &traced, near)) {
+        // A seed touching where a traced contact runs would trace that contact again (and
+        // beside a branch point, where the gap's extremum off the contact is within tol too,
+        // wander about it: seen from the plate, a second walk 18 long).
+        if c.points.len() < 2
+            || c.points.iter().all(|p| near_any(*p, &traced, near))
+            || near_any(a.eval(*uv), &traced, near)
+        {
             continue;
         }
         let len = c
