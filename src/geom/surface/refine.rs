@@ -76,8 +76,12 @@ impl<'a> Patch<'a> {
     /// near the crease (a gap across it by some 1e-3 of itself, a region's edge on it by 1e-6):
     /// then the second-order one-sided difference from the side without the kink is taken.
     pub(crate) fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
+        self.derivs_at(uv, self.eval(uv))
+    }
+
+    /// [`Self::derivs`] given the point at `uv`, `p0`, where the caller has it already.
+    pub(crate) fn derivs_at(&self, uv: DVec2, p0: DVec3) -> (DVec3, DVec3) {
         const H: f64 = 1e-6;
-        let p0 = self.eval(uv);
         let d = |k: usize| {
             let (mut a, mut b) = (uv, uv);
             a[k] -= H;
@@ -157,8 +161,9 @@ impl<'a> Patch<'a> {
                 .unwrap_or(DVec2::splat(0.5)),
         };
         for _ in 0..30 {
-            let r = self.eval(uv) - p;
-            let (su, sv) = self.derivs(uv);
+            let at = self.eval(uv);
+            let r = at - p;
+            let (su, sv) = self.derivs_at(uv, at);
             let (a, b, c) = (su.dot(su), su.dot(sv), sv.dot(sv));
             let det = a * c - b * b;
             if det.abs() <= 1e-300 {
@@ -204,8 +209,8 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) ->
         if node.residual <= 0.01 * tol || (it > 30 && node.residual <= tol) {
             break;
         }
-        let (au, av) = a.derivs(uv[0]);
-        let (bu, bv) = b.derivs(uv[1]);
+        let (au, av) = a.derivs_at(uv[0], pa);
+        let (bu, bv) = b.derivs_at(uv[1], pb);
         // Columns of J; a parameter held on a domain edge contributes nothing.
         let mut cols = [au, av, -bu, -bv];
         for (k, c) in cols.iter_mut().enumerate() {
@@ -506,7 +511,7 @@ pub(crate) fn newton_curve_hit(
         if r.length() <= 1e-15 * (1.0 + ps.length()) {
             break;
         }
-        let (su, sv) = s.derivs(uv);
+        let (su, sv) = s.derivs_at(uv, ps);
         const H: f64 = 1e-7;
         let (ta, tb) = ((t - H).max(0.0), (t + H).min(1.0));
         let dc = (c.eval(tb) - c.eval(ta)) / (tb - ta);
