@@ -15,13 +15,11 @@
 //! it are checked to [`CORNER`] rather than GEOMTOL: a defect of the edge location near
 //! corners, not of the seed search, left open. Tightening them is setting [`CORNER`] to `GT`.
 
-use lispcad::geom::curve::Curve;
 use lispcad::geom::surface::{surface_intersect_tol, Surface};
 use lispcad::geom::DVec3;
-use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{summary, u_profile, R};
+use surface_support::{summary, u_profile, unit_square, R};
 
 const GT: f64 = 1e-9;
 
@@ -32,14 +30,6 @@ const CORNER: f64 = 5e-5;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
-}
-
-fn square() -> Surface {
-    let line = |a: DVec3, b: DVec3| Arc::new(Curve::line(a, b).unwrap());
-    Surface::ruled(
-        line(v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0)),
-        line(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0)),
-    )
 }
 
 /// The distance from `p` to the segment from `a` to `b`.
@@ -85,7 +75,7 @@ impl Band {
 /// every side reached at both ends and in the middle, the length the outline's (to 1e-6, or
 /// 1e-3 where the slack is looser), and two more runs giving the same bits.
 fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
-    let sq = square();
+    let sq = unit_square();
     let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
     let q = &band.outline;
     for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
@@ -135,7 +125,7 @@ fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
 }
 
 #[test]
-fn a_narrow_flat_running_diagonally_across_the_square() {
+fn a_narrow_flat_running_diagonally_across_the_unit_square() {
     // The flat, 0.02 wide along x, runs along (1, 0, 1) over the band c0 ≤ x − z ≤ c1: no grid
     // node (x − z a multiple of 1/32 or 1/16) and no sample (a multiple of 1/12) lies on it.
     // (On main before the walk: 7 short loops, one around each seed.)
@@ -156,7 +146,7 @@ fn a_narrow_flat_running_diagonally_across_the_square() {
 }
 
 #[test]
-fn a_narrow_flat_narrowing_across_the_square() {
+fn a_narrow_flat_narrowing_across_the_unit_square() {
     // The flat runs along z over c0 ≤ x ≤ c0 + w(z), w falling linearly from 0.08 at z = 0 to
     // 0.02 at z = 1 (the ruled surface runs from z = −0.2 to 1.2). Its narrow end lies between
     // grid lines, its wide end between samples.

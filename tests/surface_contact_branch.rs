@@ -14,13 +14,13 @@
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::{surface_intersect_seeded, surface_section_seeded, Surface};
+use lispcad::geom::surface::Surface;
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::summary;
+use surface_support::{section_and_both_orders, summary};
 
 /// The product of two polynomials (coefficients from the constant term up).
 fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
@@ -145,9 +145,6 @@ fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     }
 }
 
-/// One way of asking for the intersection.
-type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
-
 /// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the
 /// plate z = 0 (a square wider than the patch), the seeding meshes made within `seed` and the
 /// curves densified within 1e-6; each run twice for the same bits (three times took 280 s in a
@@ -162,22 +159,7 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
     ])
     .unwrap();
     let chord = 1e-6;
-    let runs: [(&str, Run); 3] = [
-        (
-            "section",
-            Box::new(|| {
-                surface_section_seeded(&s, DVec3::ZERO, DVec3::Z, seed, chord, 1e-9).unwrap()
-            }),
-        ),
-        (
-            "patch ∩ plate",
-            Box::new(|| surface_intersect_seeded(&s, &plate, seed, chord, 1e-9).unwrap()),
-        ),
-        (
-            "plate ∩ patch",
-            Box::new(|| surface_intersect_seeded(&plate, &s, seed, chord, 1e-9).unwrap()),
-        ),
-    ];
+    let runs = section_and_both_orders("patch", &s, &plate, seed, chord);
     for (name, run) in runs
         .iter()
         .filter(|r| (r.0 == "plate ∩ patch") == plate_first)

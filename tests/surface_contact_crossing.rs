@@ -10,12 +10,12 @@
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::{surface_intersect_seeded, surface_section_seeded, Surface};
+use lispcad::geom::surface::{surface_intersect_seeded, Surface};
 use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::summary;
+use surface_support::{section_and_both_orders, summary};
 
 /// The sheet for root `d`, the same at every x.
 fn sheet(d: f64) -> Surface {
@@ -101,9 +101,6 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     }
 }
 
-/// One way of asking for the intersection.
-type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
-
 /// The plate z = 0 over x in [−1, 5], y in [−2, 2]: wider than the sheet both ways.
 fn plate() -> Surface {
     Surface::plane(vec![
@@ -125,22 +122,7 @@ fn both_curves_come_back(d: f64, seed: f64, chord: f64) {
 /// [`both_curves_come_back`] on [`sheet_between`]`(d0, d1)`.
 fn both_curves_come_back_between((d0, d1): (f64, f64), seed: f64, chord: f64) {
     let (s, plate) = (sheet_between(d0, d1), plate());
-    let runs: [(&str, Run); 3] = [
-        (
-            "section",
-            Box::new(|| {
-                surface_section_seeded(&s, DVec3::ZERO, DVec3::Z, seed, chord, 1e-9).unwrap()
-            }),
-        ),
-        (
-            "sheet ∩ plate",
-            Box::new(|| surface_intersect_seeded(&s, &plate, seed, chord, 1e-9).unwrap()),
-        ),
-        (
-            "plate ∩ sheet",
-            Box::new(|| surface_intersect_seeded(&plate, &s, seed, chord, 1e-9).unwrap()),
-        ),
-    ];
+    let runs = section_and_both_orders("sheet", &s, &plate, seed, chord);
     for (name, run) in &runs {
         let r = run();
         let name = format!("{name} d = {d0}..{d1} seed {seed} chord {chord}");

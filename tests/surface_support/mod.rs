@@ -7,7 +7,9 @@
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::surface::{
+    surface_intersect_seeded, surface_intersect_tol, surface_section_seeded, Surface,
+};
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_3, PI};
 use std::process::Command;
@@ -177,4 +179,45 @@ pub fn u_profile(w: f64, place: impl Fn(f64, f64) -> DVec3, ccw: bool) -> Arc<Cu
     bulges.push(0.0);
     bulges.extend(vec![sign * (d2 / 4.0).tan(); M2]);
     Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
+}
+
+/// The unit square y = 0, 0 ≤ x, z ≤ 1, as a ruled surface (u = x, v = z).
+pub fn unit_square() -> Surface {
+    let line = |a: DVec3, b: DVec3| Arc::new(Curve::line(a, b).unwrap());
+    let v = DVec3::new;
+    Surface::ruled(
+        line(v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0)),
+        line(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0)),
+    )
+}
+
+/// One way of asking for the intersection.
+pub type Run<'a> = Box<dyn Fn() -> Vec<Polyline3> + 'a>;
+
+/// The three ways of asking for where `s` meets the plate z = 0: the section of `s` by the
+/// plane z = 0, `s` ∩ `plate` and `plate` ∩ `s`, named with `s`'s `name`; the seeding meshes
+/// made within `seed`, the curves densified within `chord`, at GEOMTOL.
+pub fn section_and_both_orders<'a>(
+    name: &str,
+    s: &'a Surface,
+    plate: &'a Surface,
+    seed: f64,
+    chord: f64,
+) -> [(String, Run<'a>); 3] {
+    [
+        (
+            "section".to_string(),
+            Box::new(move || {
+                surface_section_seeded(s, DVec3::ZERO, DVec3::Z, seed, chord, 1e-9).unwrap()
+            }),
+        ),
+        (
+            format!("{name} ∩ plate"),
+            Box::new(move || surface_intersect_seeded(s, plate, seed, chord, 1e-9).unwrap()),
+        ),
+        (
+            format!("plate ∩ {name}"),
+            Box::new(move || surface_intersect_seeded(plate, s, seed, chord, 1e-9).unwrap()),
+        ),
+    ]
 }

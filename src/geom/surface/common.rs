@@ -19,14 +19,16 @@
 
 mod edge;
 mod seed;
+mod target;
 mod walk;
 
+use target::{on_samples, sample_count, Target};
+
 use super::hits::point_in_polygon;
-use super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
+use super::kinds::Surface;
 use super::refine::Patch;
 use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
-use std::cell::Cell;
 use std::collections::HashMap;
 
 /// Where two surfaces coincide.
@@ -52,62 +54,6 @@ const ROUNDING: f64 = 1e-13;
 /// How far from a curve's middle point (as a fraction of the surface's size) the surfaces must
 /// still coincide for the curve to lie in their common region: as [`super::beside`]'s probes.
 const PROBE: f64 = 1e-4;
-
-/// What a point is tested against: a surface, or the plane of a section.
-enum Target<'a> {
-    Sphere(Sphere),
-    Cylinder(Cylinder),
-    Region(&'a PlaneRegion),
-    Plane(DVec3, DVec3),
-    Patch(Patch<'a>, Cell<Option<DVec2>>),
-}
-
-impl<'a> Target<'a> {
-    fn of(s: &'a Surface) -> Target<'a> {
-        match s {
-            Surface::Sphere(sp) => Target::Sphere(*sp),
-            Surface::Cylinder(c) => Target::Cylinder(*c),
-            Surface::Plane(p) => Target::Region(p),
-            _ => Target::Patch(Patch::new(s), Cell::new(None)),
-        }
-    }
-
-    /// Whether `p` lies on the target within `tol` (inside its extent).
-    fn on(&self, p: DVec3, tol: f64) -> bool {
-        match self {
-            Target::Sphere(s) => (p.distance(s.center) - s.radius).abs() <= tol,
-            Target::Cylinder(c) => {
-                let h = (p - c.base).dot(c.axis);
-                let radial = (p - c.base - c.axis * h).length();
-                (radial - c.radius).abs() <= tol && h >= -tol && h <= c.height + tol
-            }
-            Target::Region(r) => {
-                r.normal.dot(p - r.boundary[0]).abs() <= tol
-                    && point_in_polygon(p, &r.boundary, r.normal, tol).is_in()
-            }
-            Target::Plane(o, n) => n.dot(p - *o).abs() <= tol,
-            Target::Patch(patch, hint) => {
-                // A warm start from the last point is tried first; a miss is checked from the
-                // search grid (the warm start may have slid into another local minimum).
-                let try_from = |start: Option<DVec2>| {
-                    let uv = patch.project(p, start);
-                    (patch.eval(uv).distance(p) <= tol, uv)
-                };
-                // A miss at the surface's boundary is past it; close to it, the nearest point;
-                // only a far miss elsewhere (a pole included) may be another local minimum.
-                let (mut ok, mut uv) = try_from(hint.get());
-                let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
-                if !ok && !near && !edge::on_boundary(patch, uv) && hint.get().is_some() {
-                    (ok, uv) = try_from(None);
-                }
-                if ok {
-                    hint.set(Some(uv));
-                }
-                ok
-            }
-        }
-    }
-}
 
 /// The region where `a` and `b` coincide: in closed form for the analytic pairs
 /// ([`super::coincide`]), traced on the true surfaces when a free-form kind is involved.
@@ -204,47 +150,6 @@ pub(crate) fn in_plane(
             }
         }
     }
-}
-
-/// The quick look's sample points of a surface (inside the polygon for a planar region).
-fn samples(s: &Surface) -> Vec<DVec3> {
-    use super::ParamSurface;
-    let mut out = Vec::with_capacity(K * K);
-    for j in 0..K {
-        for i in 0..K {
-            let (u, v) = ((i as f64 + 0.5) / K as f64, (j as f64 + 0.5) / K as f64);
-            let p = s.eval(u, v);
-            if let Surface::Plane(r) = s {
-                if !point_in_polygon(p, &r.boundary, r.normal, 0.0).is_in() {
-                    continue;
-                }
-            }
-            out.push(p);
-        }
-    }
-    out
-}
-
-fn sample_count(s: &Surface) -> usize {
-    samples(s).len().max(1)
-}
-
-/// How many of `s`'s samples lie on `t`, and the least and most gaps among them (the least
-/// is the common region's level: 0 where the surfaces coincide, 0.3 of the tolerance where
-/// held that far apart; a region may sit at a higher level, up to the most; infinite when none
-/// lies on `t`).
-fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64, f64) {
-    let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
-    let mut count = 0;
-    for p in samples(s) {
-        if t.on(p, tol) {
-            count += 1;
-            // From where `on` left the projection; at most the tolerance, as `on` found.
-            let g = t.gap(p, tol).unwrap_or(tol).min(tol);
-            (least, most) = (least.min(g), most.max(g));
-        }
-    }
-    (count, least, most)
 }
 
 /// A key of the marching grid: a node, or the crossing on a horizontal (u) or vertical (v)

@@ -70,67 +70,20 @@ impl<'a> Patch<'a> {
         self.s.eval(uv.x, uv.y)
     }
 
-    /// Partial derivatives by central differences (one-sided at a domain edge). Where the
-    /// surface has a kink (a crease: a polyline profile's vertex) within a step of `uv`, the
-    /// central difference blends the two sides' derivatives and bends whatever Newton finds
-    /// near the crease (a gap across it by some 1e-3 of itself, a region's edge on it by 1e-6):
-    /// then the second-order one-sided difference from the side without the kink is taken.
+    /// Partial derivatives by central differences (one-sided at a domain edge).
     pub(crate) fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
-        self.derivs_at(uv, self.eval(uv))
-    }
-
-    /// [`Self::derivs`] given the point at `uv`, `p0`, where the caller has it already.
-    pub(crate) fn derivs_at(&self, uv: DVec2, p0: DVec3) -> (DVec3, DVec3) {
         const H: f64 = 1e-6;
         let d = |k: usize| {
             let (mut a, mut b) = (uv, uv);
             a[k] -= H;
             b[k] += H;
-            if !self.periodic[k] && (a[k] < 0.0 || b[k] > 1.0) {
+            if !self.periodic[k] {
                 a[k] = a[k].max(0.0);
                 b[k] = b[k].min(1.0);
-                return (self.eval(b) - self.eval(a)) / (b[k] - a[k]);
             }
-            let (pa, pb) = (self.eval(a), self.eval(b));
-            let (fwd, bwd) = ((pb - p0) / H, (p0 - pa) / H);
-            let central = 0.5 * (fwd + bwd);
-            // Smooth, the two turn by the curvature times the step: 1e-3 rad is a curvature a
-            // thousand times the parameter speed, or a crease. A jump in speed alone (a
-            // polyline's segments of unequal length, joined tangentially) is no crease: the
-            // central difference keeps the direction there, and Newton needs no more.
-            let turn = fwd
-                .normalize_or_zero()
-                .cross(bwd.normalize_or_zero())
-                .length();
-            if turn <= 1e-3 {
-                return central;
-            }
-            self.one_sided(uv, k, [pa, p0, pb], fwd - bwd)
-                .unwrap_or(central)
+            (self.eval(b) - self.eval(a)) / (b[k] - a[k])
         };
         (d(0), d(1))
-    }
-
-    /// The derivative along parameter `k` from the side of `uv` whose next step on agrees with
-    /// its first (no kink there), given the points a step back, at, and a step on, and the
-    /// jump between the backward and forward differences. None when neither side is smooth or
-    /// a second step leaves the domain.
-    fn one_sided(&self, uv: DVec2, k: usize, p: [DVec3; 3], jump: DVec3) -> Option<DVec3> {
-        const H: f64 = 1e-6;
-        let at = |s: f64| {
-            let mut q = uv;
-            q[k] += s;
-            (self.periodic[k] || (0.0..=1.0).contains(&q[k])).then(|| self.eval(q))
-        };
-        let smooth = |second: DVec3, first: DVec3| (second - first).length() <= 0.1 * jump.length();
-        let [pa, p0, pb] = p;
-        if let Some(pf) = at(2.0 * H) {
-            if smooth((pf - pb) / H, (pb - p0) / H) {
-                return Some((4.0 * pb - 3.0 * p0 - pf) / (2.0 * H));
-            }
-        }
-        let pr = at(-2.0 * H)?;
-        smooth((pa - pr) / H, (p0 - pa) / H).then(|| (3.0 * p0 - 4.0 * pa + pr) / (2.0 * H))
     }
 
     /// Puts a parameter pair back in the domain: wraps periodic directions, clamps the others.
@@ -161,9 +114,8 @@ impl<'a> Patch<'a> {
                 .unwrap_or(DVec2::splat(0.5)),
         };
         for _ in 0..30 {
-            let at = self.eval(uv);
-            let r = at - p;
-            let (su, sv) = self.derivs_at(uv, at);
+            let r = self.eval(uv) - p;
+            let (su, sv) = self.derivs(uv);
             let (a, b, c) = (su.dot(su), su.dot(sv), sv.dot(sv));
             let det = a * c - b * b;
             if det.abs() <= 1e-300 {
@@ -209,8 +161,8 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) ->
         if node.residual <= 0.01 * tol || (it > 30 && node.residual <= tol) {
             break;
         }
-        let (au, av) = a.derivs_at(uv[0], pa);
-        let (bu, bv) = b.derivs_at(uv[1], pb);
+        let (au, av) = a.derivs(uv[0]);
+        let (bu, bv) = b.derivs(uv[1]);
         // Columns of J; a parameter held on a domain edge contributes nothing.
         let mut cols = [au, av, -bu, -bv];
         for (k, c) in cols.iter_mut().enumerate() {
@@ -511,7 +463,7 @@ pub(crate) fn newton_curve_hit(
         if r.length() <= 1e-15 * (1.0 + ps.length()) {
             break;
         }
-        let (su, sv) = s.derivs_at(uv, ps);
+        let (su, sv) = s.derivs(uv);
         const H: f64 = 1e-7;
         let (ta, tb) = ((t - H).max(0.0), (t + H).min(1.0));
         let dc = (c.eval(tb) - c.eval(ta)) / (tb - ta);

@@ -1,0 +1,106 @@
+//! What a traced surface's points are tested against (the other surface, or a section's
+//! plane), and the quick look's samples that tell whether and at what level they coincide.
+
+use super::super::hits::point_in_polygon;
+use super::super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
+use super::super::refine::Patch;
+use super::{edge, K};
+use glam::{DVec2, DVec3};
+use std::cell::Cell;
+
+/// What a point is tested against: a surface, or the plane of a section.
+pub(super) enum Target<'a> {
+    Sphere(Sphere),
+    Cylinder(Cylinder),
+    Region(&'a PlaneRegion),
+    Plane(DVec3, DVec3),
+    Patch(Patch<'a>, Cell<Option<DVec2>>),
+}
+
+impl<'a> Target<'a> {
+    pub(super) fn of(s: &'a Surface) -> Target<'a> {
+        match s {
+            Surface::Sphere(sp) => Target::Sphere(*sp),
+            Surface::Cylinder(c) => Target::Cylinder(*c),
+            Surface::Plane(p) => Target::Region(p),
+            _ => Target::Patch(Patch::new(s), Cell::new(None)),
+        }
+    }
+
+    /// Whether `p` lies on the target within `tol` (inside its extent).
+    pub(super) fn on(&self, p: DVec3, tol: f64) -> bool {
+        match self {
+            Target::Sphere(s) => (p.distance(s.center) - s.radius).abs() <= tol,
+            Target::Cylinder(c) => {
+                let h = (p - c.base).dot(c.axis);
+                let radial = (p - c.base - c.axis * h).length();
+                (radial - c.radius).abs() <= tol && h >= -tol && h <= c.height + tol
+            }
+            Target::Region(r) => {
+                r.normal.dot(p - r.boundary[0]).abs() <= tol
+                    && point_in_polygon(p, &r.boundary, r.normal, tol).is_in()
+            }
+            Target::Plane(o, n) => n.dot(p - *o).abs() <= tol,
+            Target::Patch(patch, hint) => {
+                // A warm start from the last point is tried first; a miss is checked from the
+                // search grid (the warm start may have slid into another local minimum).
+                let try_from = |start: Option<DVec2>| {
+                    let uv = patch.project(p, start);
+                    (patch.eval(uv).distance(p) <= tol, uv)
+                };
+                // A miss at the surface's boundary is past it; close to it, the nearest point;
+                // only a far miss elsewhere (a pole included) may be another local minimum.
+                let (mut ok, mut uv) = try_from(hint.get());
+                let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
+                if !ok && !near && !edge::on_boundary(patch, uv) && hint.get().is_some() {
+                    (ok, uv) = try_from(None);
+                }
+                if ok {
+                    hint.set(Some(uv));
+                }
+                ok
+            }
+        }
+    }
+}
+
+/// The quick look's sample points of a surface (inside the polygon for a planar region).
+pub(super) fn samples(s: &Surface) -> Vec<DVec3> {
+    use super::super::ParamSurface;
+    let mut out = Vec::with_capacity(K * K);
+    for j in 0..K {
+        for i in 0..K {
+            let (u, v) = ((i as f64 + 0.5) / K as f64, (j as f64 + 0.5) / K as f64);
+            let p = s.eval(u, v);
+            if let Surface::Plane(r) = s {
+                if !point_in_polygon(p, &r.boundary, r.normal, 0.0).is_in() {
+                    continue;
+                }
+            }
+            out.push(p);
+        }
+    }
+    out
+}
+
+pub(super) fn sample_count(s: &Surface) -> usize {
+    samples(s).len().max(1)
+}
+
+/// How many of `s`'s samples lie on `t`, and the least and most gaps among them (the least
+/// is the common region's level: 0 where the surfaces coincide, 0.3 of the tolerance where
+/// held that far apart; a region may sit at a higher level, up to the most; infinite when none
+/// lies on `t`).
+pub(super) fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64, f64) {
+    let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut count = 0;
+    for p in samples(s) {
+        if t.on(p, tol) {
+            count += 1;
+            // From where `on` left the projection; at most the tolerance, as `on` found.
+            let g = t.gap(p, tol).unwrap_or(tol).min(tol);
+            (least, most) = (least.min(g), most.max(g));
+        }
+    }
+    (count, least, most)
+}
