@@ -20,7 +20,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{section_and_both_orders, summary};
+use surface_support::{assert_same_bits, section_and_both_orders, summary};
 
 /// The product of two polynomials (coefficients from the constant term up).
 fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
@@ -168,11 +168,7 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
         let name = format!("{name} d = {d0}..{d1} seed {seed}");
         check(&name, &r, (d0, d1));
         let again = run();
-        assert_eq!(again.len(), r.len());
-        assert!(again
-            .iter()
-            .zip(&r)
-            .all(|(c, e)| c.points == e.points && c.closed == e.closed));
+        assert_same_bits(&name, &again, &r);
     }
 }
 

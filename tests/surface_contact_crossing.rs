@@ -15,7 +15,7 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{section_and_both_orders, summary};
+use surface_support::{assert_same_bits, section_and_both_orders, summary};
 
 /// The sheet for root `d`, the same at every x.
 fn sheet(d: f64) -> Surface {
@@ -129,11 +129,7 @@ fn both_curves_come_back_between((d0, d1): (f64, f64), seed: f64, chord: f64) {
         check_between(&name, &r, (d0, d1));
         for _ in 0..2 {
             let again = run();
-            assert_eq!(again.len(), r.len());
-            assert!(again
-                .iter()
-                .zip(&r)
-                .all(|(c, e)| c.points == e.points && c.closed == e.closed));
+            assert_same_bits(&name, &again, &r);
         }
     }
 }

@@ -221,3 +221,15 @@ pub fn section_and_both_orders<'a>(
         ),
     ]
 }
+
+/// That a second run of an intersection gave the same curves, bit for bit.
+pub fn assert_same_bits(name: &str, again: &[Polyline3], first: &[Polyline3]) {
+    assert_eq!(again.len(), first.len(), "{name}: {}", summary(again));
+    assert!(
+        again
+            .iter()
+            .zip(first)
+            .all(|(c, e)| c.points == e.points && c.closed == e.closed),
+        "{name}: a second run differs"
+    );
+}
