@@ -92,8 +92,15 @@ pub(crate) fn run_into(
         }
     }
     if let Some((x, y)) = through {
-        let ((i, ei, pi, _), (j, ej, pj, _)) = (meets[x], meets[y]);
-        let chord = assemble(&[pi, pj], false, |n| n.1, &mid_of, tol, chord_tol);
+        let ((i, ei, pi, bx), (j, ej, pj, by)) = (meets[x], meets[y]);
+        // Through the branch point where both meetings found it (solved there, see
+        // `branch_point`, they agree to its accuracy); end to end where not.
+        let nodes = if bx.1.distance(by.1) <= tol {
+            vec![pi, bx, pj]
+        } else {
+            vec![pi, pj]
+        };
+        let chord = assemble(&nodes, false, |n| n.1, &mid_of, tol, chord_tol);
         let (mut head, mut tail) = (pieces[i].points.clone(), pieces[j].points.clone());
         if ei == 0 {
             head.reverse();
@@ -159,7 +166,7 @@ fn meeting(
     let far = (0..n).map(inwards).find(|x| x.distance(p) >= near);
     let q = far.unwrap_or(inwards(n - 1));
     let t = (p - q).normalize_or_zero();
-    let ((_, at, sine), seg) = contacts
+    let hit = contacts
         .iter()
         .flat_map(|k| {
             let m = k.points.len();
@@ -167,12 +174,104 @@ fn meeting(
             (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
         })
         .filter_map(|seg| ray_meets(p, t, seg, near).map(|h| (h, seg)))
-        .min_by(|x, y| x.0 .0.total_cmp(&y.0 .0))?;
+        .min_by(|x, y| x.0 .0.total_cmp(&y.0 .0));
     let from = (a.project(p, None), p);
+    // The tangent is off by up to the spread of the last points over the chord (∛tol over
+    // `near`: a tenth of a radian), more than the angle at which a crossing runs into a contact
+    // where it ends at the other surface's edge, so the ray can pass the contact's end by:
+    // an open contact's end within END_REACH·near is then the meeting point.
+    let Some(((_, at, sine), seg)) = hit else {
+        return contact_end(a, contacts, p, END_REACH * near, from.0).map(|to| (from, to));
+    };
     let to = contact_end(a, contacts, at, near / sine, from.0)
+        .or_else(|| branch_point(a, gap, a.project(at, Some(from.0)), near / sine, tol))
         .or_else(|| onto_contact(a, gap, at, seg, from.0, tol))?;
     Some((from, to))
 }
+
+/// The half-width in space of the stencils [`branch_point`] takes the gap's derivatives on: wide
+/// enough that the gap's noise over its square is far under the third derivative (the Hessian's
+/// noise about 1e-15/STEP², so the point is good to about 1e-10), narrow enough that the
+/// fourth-order differences' error (STEP⁴ times the sixth derivative) is smaller still.
+const STEP: f64 = 4e-3;
+
+/// The branch point near `uv0` (within `r` of it in space): where a crossing runs into a contact
+/// the gap is zero with its gradient and, the section across flattening to a triple root, its
+/// whole Hessian (all three components vanish there, and only there, along the contact: the
+/// gap is w²·g(w, s) across and along the contact, g(0, s) passing through zero). Gauss–Newton
+/// on the Hessian's three components by fourth-order differences, the Jacobian (the third
+/// derivatives, regular where the crossing is transverse) by differences of those. Found so,
+/// the point does not depend on where the crossing's last points are, which are known only to
+/// about ∛tol across near it. None near a bounded edge (the stencil would leave the surface),
+/// or when it does not converge, leaves `r`, or the surfaces do not meet there within `tol`.
+fn branch_point(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    uv0: DVec2,
+    r: f64,
+    tol: f64,
+) -> Option<(DVec2, DVec3)> {
+    let mut w = uv0;
+    a.normalise(&mut w);
+    let (su, sv) = a.derivs(w);
+    let (lu, lv) = (su.length(), sv.length());
+    if !(lu > 0.0 && lv > 0.0 && lu.is_finite() && lv.is_finite()) {
+        return None;
+    }
+    // Coordinates in which a unit is about STEP in space each way.
+    let unit = DVec2::new(STEP / lu, STEP / lv);
+    let f = |x: DVec2| gap(uv0 + x * unit).signed;
+    let hess = |x: DVec2| {
+        let at = |i: f64, j: f64| f(x + DVec2::new(i, j));
+        let f0 = at(0.0, 0.0);
+        let second = |p: &dyn Fn(f64) -> f64| {
+            (-p(2.0) + 16.0 * p(1.0) - 30.0 * f0 + 16.0 * p(-1.0) - p(-2.0)) / 12.0
+        };
+        let cross = |k: f64| (at(k, k) - at(k, -k) - at(-k, k) + at(-k, -k)) / (4.0 * k * k);
+        DVec3::new(
+            second(&|i| at(i, 0.0)),
+            (4.0 * cross(1.0) - cross(2.0)) / 3.0,
+            second(&|j| at(0.0, j)),
+        )
+    };
+    let inside = |x: DVec2| {
+        let uv = uv0 + x * unit;
+        (0..2).all(|k| a.periodic()[k] || (2.0 * unit[k]..=1.0 - 2.0 * unit[k]).contains(&uv[k]))
+    };
+    let mut x = DVec2::ZERO;
+    for _ in 0..8 {
+        if !inside(x + DVec2::ONE) || !inside(x - DVec2::ONE) {
+            return None;
+        }
+        let h0 = hess(x);
+        let ju = 0.5 * (hess(x + DVec2::X) - hess(x - DVec2::X));
+        let jv = 0.5 * (hess(x + DVec2::Y) - hess(x - DVec2::Y));
+        let (m11, m12, m22) = (ju.dot(ju), ju.dot(jv), jv.dot(jv));
+        let det = m11 * m22 - m12 * m12;
+        if !(det > 1e-12 * m11 * m22 && det.is_finite()) {
+            return None;
+        }
+        let (b1, b2) = (-ju.dot(h0), -jv.dot(h0));
+        let step = DVec2::new(m22 * b1 - m12 * b2, m11 * b2 - m12 * b1) / det;
+        x += step;
+        if (x * STEP).length() > r {
+            return None;
+        }
+        // The components are linear in x near the point but for their noise (about 1e-15 of
+        // STEP³ here): a step this short has reached it, within 1e-10 or so in space.
+        if step.length() <= 1e-6 {
+            let mut uv = uv0 + x * unit;
+            a.normalise(&mut uv);
+            let g = gap(uv);
+            return (g.dist <= tol).then_some((uv, g.point));
+        }
+    }
+    None
+}
+
+/// How far (in `near`s) from a crossing's end, one whose tangent passes by every contact, an
+/// open contact's end is taken for where it runs in: 2·near/sine for crossings at 1/8 or steeper.
+const END_REACH: f64 = 16.0;
 
 /// The end of an open one of `contacts` within `r` of `at`, with its parameters (from `near`).
 fn contact_end(

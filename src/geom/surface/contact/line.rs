@@ -173,6 +173,12 @@ fn to_segment(p: DVec3, a: DVec3, b: DVec3) -> (f64, f64) {
     (p.distance(a + d * f), f)
 }
 
+/// A step along a contact this short (in space) is within about the tolerance of it when taken
+/// straight along its tangent: the contact's curvature (about 1/size at most) times its square.
+fn short_step(a: &Patch, tol: f64) -> f64 {
+    (tol * a.scale()).sqrt()
+}
+
 /// Follows the contact from `start` along `dir` (in (u, v)) in steps of about `len` in space.
 /// Returns the nodes after `start` and whether the walk came back round to it.
 fn walk(
@@ -189,6 +195,7 @@ fn walk(
     let mut p_prev = p_start;
     let mut nodes: Vec<DVec2> = Vec::new();
     let mut frac = 1.0;
+    let short = short_step(a, tol);
     while nodes.len() < MAX_NODES {
         let mut w = uv;
         a.normalise(&mut w);
@@ -214,11 +221,29 @@ fn walk(
                 at_edge = true;
             }
         }
-        let cand = settle(a, &h, uv + t * step, t.perp());
-        let g = gap(cand);
-        let moved = cand - uv;
+        let ahead = uv + t * step;
         // Half the tolerance, so the end, where the surfaces part, is found within it.
-        if g.dist <= 0.5 * tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step {
+        let on = |g: &GapAt, moved: DVec2| {
+            g.dist <= 0.5 * tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step
+        };
+        // Once a bisection for the end has made the step shorter than `short`, the step straight
+        // along the tangent is on the contact to its curvature times the step squared (about
+        // the tolerance), and is taken where the surfaces meet there: near a branch point (a
+        // crossing running into the contact, here where it ends at the other surface's edge)
+        // the section across flattens to an inflection, and the extremum `settle` finds is off
+        // the contact by the derivative's noise over a vanishing curvature (1e-6 within 1e-5
+        // of it), or missing. Where the surfaces part (the contact's true end) it fails.
+        let straight = clamp_bounded(a, ahead);
+        let gs = (frac * len <= short).then(|| gap(straight));
+        let (cand, g) = match gs {
+            Some(gs) if on(&gs, straight - uv) => (straight, gs),
+            _ => {
+                let c = settle(a, &h, ahead, t.perp());
+                (c, gap(c))
+            }
+        };
+        let moved = cand - uv;
+        if on(&g, moved) {
             // Back round to the start (this step reaches or passes it): the loop closes there.
             let (d, f) = to_segment(p_start, p_prev, g.point);
             if nodes.len() >= 2 && d <= 0.1 * len && f > 0.0 {
@@ -296,9 +321,18 @@ pub(crate) fn contact_curve(
             (uv, gap(uv).point)
         })
         .collect();
+    let short = short_step(a, tol);
     let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| {
         let across = delta(a, x.0, y.0).perp().normalize_or_zero();
-        let m = settle(a, &h, mid(a, x.0, y.0), across);
+        // Between nodes a short step apart (the walk's last, near an end) the midpoint is on
+        // the contact to about the tolerance: settled, near a branch point, it would be off by
+        // the noise over a vanishing curvature across (see `walk`) and be inserted as a zigzag.
+        let m = mid(a, x.0, y.0);
+        let m = if x.1.distance(y.1) <= short {
+            m
+        } else {
+            settle(a, &h, m, across)
+        };
         let g = gap(m);
         (g.dist <= tol).then_some((m, g.point))
     };
