@@ -14,7 +14,7 @@
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::Surface;
+use lispcad::geom::surface::{surface_intersect_seeded, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
@@ -33,15 +33,19 @@ fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
     r
 }
 
-/// The radial profile at angle `th` for `d`: z(w) = d·w² − d·w⁴ − w³ with w = 2u − 1, from its
-/// power coefficients in u to Bernstein ones, b_i = Σ_{j ≤ i} C(i, j)/C(4, j)·a_j.
-fn profile(d: f64, th: f64) -> Curve {
+/// The radial profile at angle `th` for `d`: z(w) = k·w + d·w² − d·w⁴ − w³ with w = 2u − 1, from
+/// its power coefficients in u to Bernstein ones, b_i = Σ_{j ≤ i} C(i, j)/C(4, j)·a_j.
+fn profile(d: f64, th: f64, k: f64) -> Curve {
     let w = [-1.0, 2.0];
     let w2 = times(&w, &w);
     let w3 = times(&w2, &w);
     let w4 = times(&w3, &w);
     let a: Vec<f64> = (0..5)
-        .map(|j| d * w2.get(j).unwrap_or(&0.0) - d * w4[j] - w3.get(j).unwrap_or(&0.0))
+        .map(|j| {
+            k * w.get(j).unwrap_or(&0.0) + d * w2.get(j).unwrap_or(&0.0)
+                - d * w4[j]
+                - w3.get(j).unwrap_or(&0.0)
+        })
         .collect();
     let choose = |n: usize, k: usize| (0..k).fold(1.0, |c, m| c * (n - m) as f64 / (m + 1) as f64);
     let ctrl: Vec<DVec3> = (0..5)
@@ -56,14 +60,20 @@ fn profile(d: f64, th: f64) -> Curve {
 
 /// The patch for d running from `d0` at θ = 0 to `d1` at θ = π/2.
 fn patch(d0: f64, d1: f64) -> Surface {
+    sloped_patch(d0, d1, 0.0)
+}
+
+/// [`patch`] with k·w added to its height: it then touches and crosses the cone z = k·w (the
+/// line from (1, 0, −k) to (3, 0, k) revolved about z) where the flat patch meets z = 0.
+fn sloped_patch(d0: f64, d1: f64, k: f64) -> Surface {
     let arc = |r: f64, z: f64| {
         Arc::new(Curve::arc(DVec3::new(0.0, 0.0, z), r, 0.0, FRAC_PI_2, Some(DVec3::Z)).unwrap())
     };
     Surface::boundary([
-        Arc::new(profile(d0, 0.0)),
-        arc(3.0, -1.0),
-        Arc::new(profile(d1, FRAC_PI_2)),
-        arc(1.0, 1.0),
+        Arc::new(profile(d0, 0.0, k)),
+        arc(3.0, k - 1.0),
+        Arc::new(profile(d1, FRAC_PI_2, k)),
+        arc(1.0, 1.0 - k),
     ])
     .unwrap()
 }
@@ -73,9 +83,9 @@ fn root(d: f64) -> f64 {
     2.0 * d / (1.0 + (1.0 + 4.0 * d * d).sqrt())
 }
 
-/// The length of the crossing r = 2 + W(d(θ)) over [0, π/2]: ∫ √(r² + r′²) dθ by
-/// composite Simpson on 4096 panels (the integrand is smooth; error far under 1e-9).
-fn crossing_length(d0: f64, d1: f64) -> f64 {
+/// The length of the crossing r = 2 + W(d(θ)), z = k·W over [0, π/2]: ∫ √(r² + (1 + k²)·r′²) dθ
+/// by composite Simpson on 4096 panels (the integrand is smooth; error far under 1e-9).
+fn crossing_length(d0: f64, d1: f64, k: f64) -> f64 {
     let dd = (d1 - d0) / FRAC_PI_2;
     let f = |th: f64| {
         let d = d0 + dd * th;
@@ -83,7 +93,7 @@ fn crossing_length(d0: f64, d1: f64) -> f64 {
         // From d(1 − w²) = w: w′(d) = (1 − w²)/(1 + 2dw).
         let dr = (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd;
         let r = 2.0 + w;
-        (r * r + dr * dr).sqrt()
+        (r * r + (1.0 + k * k) * dr * dr).sqrt()
     };
     let n = 4096;
     let h = FRAC_PI_2 / n as f64;
@@ -100,6 +110,13 @@ fn crossing_length(d0: f64, d1: f64) -> f64 {
 /// off either), lengths π and the quadrature's to 1e-6, every point within 1e-9 of the plane
 /// and of the patch (its height difference times the cosine of the patch's slope).
 fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
+    check_sloped(name, r, (d0, d1), 0.0);
+}
+
+/// [`check`] for [`sloped_patch`] against the cone z = k·w (the plane z = 0 for k = 0): the
+/// distance to the cone is |z − k·w|·cos(atan k) (the cone is straight along its generators, and
+/// a point's nearest on it lies in its meridian plane).
+fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64) {
     assert_eq!(r.len(), 2, "{name}: {}", summary(r));
     let d = |th: f64| d0 + (d1 - d0) * th / FRAC_PI_2;
     let polar = |p: &DVec3| (p.x.hypot(p.y), p.y.atan2(p.x));
@@ -116,16 +133,17 @@ fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
         panic!("{name}: {}", summary(r));
     };
     assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
-    for (c, len) in [(contact, PI), (crossing, crossing_length(d0, d1))] {
+    for (c, len) in [(contact, PI), (crossing, crossing_length(d0, d1, k))] {
         assert!(!c.closed, "{name}: {}", summary(r));
         for p in &c.points {
             let (r, th) = polar(p);
             let (w, dt) = (r - 2.0, d(th));
-            let z = w * w * (dt * (1.0 - w * w) - w);
-            let dz_dr = 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
+            let z = k * w + w * w * (dt * (1.0 - w * w) - w);
+            let dz_dr = k + 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
             let dz_dth = w * w * (1.0 - w * w) * (d1 - d0) / FRAC_PI_2 / r;
             let cos = 1.0 / (1.0 + dz_dr * dz_dr + dz_dth * dz_dth).sqrt();
-            assert!(p.z.abs() <= 1e-9, "{name}: {p} off the plane");
+            let off = (p.z - k * w).abs() / (1.0 + k * k).sqrt();
+            assert!(off <= 1e-9, "{name}: {p} off the plane or cone");
             assert!((p.z - z).abs() * cos <= 1e-9, "{name}: {p} off the patch");
             assert!((1.0..=3.0).contains(&r), "{name}: {p}");
             assert!((-1e-9..=FRAC_PI_2 + 1e-9).contains(&th), "{name}: {p}");
@@ -172,21 +190,24 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
     }
 }
 
-/// The reference itself: the patch's points are where the closed form puts them (so the checks
-/// above test the intersection, not the construction).
+/// The reference itself: the patch's points (flat, and sloped for the cone) are where the closed
+/// form puts them (so the checks above test the intersection, not the construction).
 #[test]
 fn the_patch_is_the_closed_form() {
     use lispcad::geom::surface::ParamSurface;
     let (d0, d1) = (-0.1, 0.3);
-    let s = patch(d0, d1);
-    for i in 0..=8 {
-        for j in 0..=8 {
-            let (u, v) = (i as f64 / 8.0, j as f64 / 8.0);
-            let p = s.eval(u, v);
-            let (r, th) = (1.0 + 2.0 * u, FRAC_PI_2 * v);
-            let (w, d) = (r - 2.0, d0 + (d1 - d0) * v);
-            let q = DVec3::new(r * th.cos(), r * th.sin(), w * w * (d * (1.0 - w * w) - w));
-            assert!(p.distance(q) <= 1e-12, "{u} {v}: {p} vs {q}");
+    for k in [0.0, 0.5] {
+        let s = sloped_patch(d0, d1, k);
+        for i in 0..=8 {
+            for j in 0..=8 {
+                let (u, v) = (i as f64 / 8.0, j as f64 / 8.0);
+                let p = s.eval(u, v);
+                let (r, th) = (1.0 + 2.0 * u, FRAC_PI_2 * v);
+                let (w, d) = (r - 2.0, d0 + (d1 - d0) * v);
+                let z = k * w + w * w * (d * (1.0 - w * w) - w);
+                let q = DVec3::new(r * th.cos(), r * th.sin(), z);
+                assert!(p.distance(q) <= 1e-12, "k {k} {u} {v}: {p} vs {q}");
+            }
         }
     }
 }
@@ -225,5 +246,24 @@ fn a_crossing_running_into_a_curved_contact_at_an_edge_comes_back_with_it() {
 fn a_crossing_into_a_curved_contact_at_an_edge_seen_from_the_plane() {
     for (d0, d1, seed) in [(0.0, 0.3, 1e-2), (0.3, 0.0, 1e-3)] {
         both_curves_come_back((d0, d1), seed, true);
+    }
+}
+
+/// A branch point between two curved surfaces: the sloped patch (k = 0.5) against the cone
+/// z = k·w, revolved whole about z, in both orders, seed 1e-2. The contact is the arc r = 2,
+/// z = 0 (the cone's height and slope there are the patch's), and the crossing r = 2 + W(d),
+/// z = k·W, through it where d = 0 (θ = π/8).
+#[test]
+fn a_crossing_through_a_contact_between_a_patch_and_a_cone() {
+    let k = 0.5;
+    let (d0, d1) = (-0.1, 0.3);
+    let s = sloped_patch(d0, d1, k);
+    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
+    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    for (name, x, y) in [("patch ∩ cone", &s, &cone), ("cone ∩ patch", &cone, &s)] {
+        let run = || surface_intersect_seeded(x, y, 1e-2, 1e-6, 1e-9).unwrap();
+        let r = run();
+        check_sloped(name, &r, (d0, d1), k);
+        assert_same_bits(name, &run(), &r);
     }
 }
