@@ -276,7 +276,6 @@ fn two_wide_flats_at_different_levels_off_a_plane_are_both_common_regions() {
 }
 
 #[test]
-#[ignore = "fails: the narrow flat 0.9 x GEOMTOL off is not found (one loop, the flat on the plane)"]
 fn two_narrow_flats_at_different_levels_off_a_plane_are_both_common_regions() {
     assert_two_flats(0.02, 80);
 }

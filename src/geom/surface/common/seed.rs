@@ -23,7 +23,7 @@ use glam::DVec2;
 const S: usize = 16;
 /// A seed cell's width, in parameters.
 pub(super) const SEED_CELL: f64 = 1.0 / S as f64;
-/// Most minima followed, smallest gap first.
+/// Most minima (one per plateau) followed, smallest gap first.
 const CANDIDATES: usize = 12;
 /// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
 /// diagonal).
@@ -90,19 +90,21 @@ impl Tracer<'_, '_> {
     }
 
     /// The nodes of an S × S grid where the gap is no larger than at any neighbour, smallest
-    /// gap first (ties in grid order).
+    /// gap first (ties in grid order), one per plateau: neighbouring minima have equal gaps (a
+    /// band along a ruling lies at one gap all along it), and taken one by one they would fill
+    /// the list from one band and hide the next (a second flat at another level).
     fn candidates(&self) -> Vec<DVec2> {
         let at = |i: usize, j: usize| DVec2::new(i as f64 / S as f64, j as f64 / S as f64);
         let wrap = |k: usize, i: usize| if self.periodic[k] { i % S } else { i };
+        let id = |i: usize, j: usize| j * (S + 1) + i;
         let mut gap = vec![f64::INFINITY; (S + 1) * (S + 1)];
         for j in 0..=S {
             for i in 0..=S {
                 if wrap(0, i) == i && wrap(1, j) == j {
-                    gap[j * (S + 1) + i] = self.gap_at(at(i, j)).unwrap_or(f64::INFINITY);
+                    gap[id(i, j)] = self.gap_at(at(i, j)).unwrap_or(f64::INFINITY);
                 }
             }
         }
-        let g = |i: usize, j: usize| gap[wrap(1, j) * (S + 1) + wrap(0, i)];
         let step = |k: usize, i: usize, d: i64| -> Option<usize> {
             let x = i as i64 + d;
             if self.periodic[k] {
@@ -111,29 +113,52 @@ impl Tracer<'_, '_> {
                 (0..=S as i64).contains(&x).then_some(x as usize)
             }
         };
-        let mut out: Vec<(f64, usize, usize)> = Vec::new();
+        // The up to eight neighbours of a node, wrapped across seams.
+        let around = |i: usize, j: usize| {
+            (-1..=1i64)
+                .flat_map(move |dj| (-1..=1i64).map(move |di| (di, dj)))
+                .filter(|&d| d != (0, 0))
+                .filter_map(move |(di, dj)| Some((step(0, i, di)?, step(1, j, dj)?)))
+        };
+        let mut lowest = vec![false; gap.len()];
         for j in 0..=S {
             for i in 0..=S {
-                let here = g(i, j);
-                if !here.is_finite() || wrap(0, i) != i || wrap(1, j) != j {
-                    continue;
-                }
-                let lowest = (-1..=1).all(|dj| {
-                    (-1..=1).all(|di| match (step(0, i, di), step(1, j, dj)) {
-                        (Some(a), Some(b)) => here <= g(a, b),
-                        _ => true,
-                    })
-                });
-                if lowest {
-                    out.push((here, j, i));
+                let here = gap[id(i, j)];
+                lowest[id(i, j)] = here.is_finite()
+                    && wrap(0, i) == i
+                    && wrap(1, j) == j
+                    && around(i, j).all(|(a, b)| here <= gap[id(a, b)]);
+            }
+        }
+        let mut order: Vec<(f64, usize, usize)> = (0..=S)
+            .flat_map(|j| (0..=S).map(move |i| (i, j)))
+            .filter(|&(i, j)| lowest[id(i, j)])
+            .map(|(i, j)| (gap[id(i, j)], j, i))
+            .collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        let mut taken = vec![false; gap.len()];
+        let mut out = Vec::new();
+        for (_, j, i) in order {
+            if taken[id(i, j)] {
+                continue;
+            }
+            out.push(at(i, j));
+            if out.len() == CANDIDATES {
+                break;
+            }
+            // The rest of its plateau is passed over.
+            let mut stack = vec![(i, j)];
+            taken[id(i, j)] = true;
+            while let Some((a, b)) = stack.pop() {
+                for (c, d) in around(a, b) {
+                    if lowest[id(c, d)] && !taken[id(c, d)] {
+                        taken[id(c, d)] = true;
+                        stack.push((c, d));
+                    }
                 }
             }
         }
-        out.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
-        out.into_iter()
-            .take(CANDIDATES)
-            .map(|(_, j, i)| at(i, j))
-            .collect()
+        out
     }
 
     /// Down the gap from `uv` to a point on the target, by golden-section searches within a
