@@ -17,7 +17,7 @@
 
 use super::walk::Station;
 use super::{Tracer, N};
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 /// Cells per direction of the grid whose gap minima are followed.
 const S: usize = 16;
@@ -39,10 +39,11 @@ const GOLDEN: usize = 48;
 type Band = [Option<(f64, f64)>; 2];
 
 impl Tracer<'_, '_> {
-    /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
-    /// one found, followed along its length ([`super::walk`]); the least and most levels of
-    /// the regions found, None when none is found.
-    pub(super) fn refine_narrow(&mut self) -> Option<(f64, f64)> {
+    /// Looks for a region from the gap's minima (from `seeds` instead, points of the surface
+    /// on the target, when given) and adds finer grid lines across each narrow one found,
+    /// followed along its length ([`super::walk`]); the least and most levels of the regions
+    /// found, None when none is found.
+    pub(super) fn refine_narrow(&mut self, seeds: &[DVec3]) -> Option<(f64, f64)> {
         let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
         let (mut level, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
@@ -50,7 +51,11 @@ impl Tracer<'_, '_> {
                 .iter()
                 .any(|(b, w)| t.covers(b, uv) || (0..2).any(|k| t.walked(k, &w[k], uv)))
         };
-        for uv in self.candidates() {
+        let starts = match seeds {
+            [] => self.candidates(),
+            _ => seeds.iter().map(|p| self.patch.project(*p, None)).collect(),
+        };
+        for uv in starts {
             if seen(self, &bands, uv) {
                 continue;
             }
