@@ -247,6 +247,7 @@ impl Tracer<'_, '_> {
             }
             let (hi, lo) = (self.reach(q, e), self.reach(q, -e));
             let (Some(hi), Some(lo)) = (hi, lo) else {
+                level = level.min(self.least_beyond(q, e, [hi.is_none(), lo.is_none()]));
                 continue;
             };
             if (hi - lo) * speed[k] < w_min {
@@ -258,6 +259,22 @@ impl Tracer<'_, '_> {
             }
         }
         Some((out, level))
+    }
+
+    /// The least gap on the target at a half, one and two grid cells from `q` along `e`
+    /// (`ways`: forward, backward) where the region goes on that far: the seed may lie where
+    /// the gap rises to the region's edge, above the region's level.
+    fn least_beyond(&self, q: DVec2, e: DVec2, ways: [bool; 2]) -> f64 {
+        let mut least = f64::INFINITY;
+        for (way, s) in ways.into_iter().zip([1.0, -1.0]) {
+            for f in [0.5, 1.0, 2.0] {
+                let p = q + e * (s * f / N as f64);
+                if way && self.on(p) {
+                    least = least.min(self.gap_at(p).unwrap_or(f64::INFINITY));
+                }
+            }
+        }
+        least
     }
 
     /// Whether the gap is flat across the middle of `lo..hi` (along direction `k` through `q`):
@@ -337,4 +354,35 @@ pub(super) fn add_line(lines: &mut Vec<f64>, periodic: bool, mut x: f64) -> Opti
         lines.push(x);
     }
     new.then_some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Surface, Target, Tracer};
+    use crate::geom::curve::Curve;
+    use glam::{DVec2, DVec3};
+    use std::sync::Arc;
+
+    #[test]
+    fn a_wide_region_seen_from_its_rising_edge_takes_its_least_gap_as_its_level() {
+        // A strip ruled from (-1, 1) down to a flat (0, 0)..(1, 0) and up to (2, 1), at z = 0
+        // and 3, on the plane y = 0: the flat is a third of u wide, the strip's v all of it.
+        // A seed on the left slope where the gap is 0.9 x tol (the point (-1 + t, 1 - t),
+        // t = 1 - 0.9 tol, at u = t/3) sees the region run on for two cells both ways.
+        let tol = 1e-9;
+        let profile = |z: f64| {
+            let pts = [(-1.0, 1.0), (0.0, 0.0), (1.0, 0.0), (2.0, 1.0)];
+            let pts = pts.iter().map(|&(x, y)| DVec3::new(x, y, z)).collect();
+            Arc::new(Curve::pline(pts, false, None).unwrap())
+        };
+        let s = Surface::ruled(profile(0.0), profile(3.0));
+        let t = Target::Plane(DVec3::ZERO, DVec3::Y);
+        let tr = Tracer::new(&s, &t, tol, 1e-6);
+        let q = DVec2::new((1.0 - 0.9 * tol) / 3.0, 0.5);
+        let g = tr.gap_at(q).unwrap();
+        assert!((g - 0.9 * tol).abs() <= 1e-15, "seed's gap {g}");
+        let (band, level) = tr.band(q).expect("a region");
+        assert_eq!(band, [None, None], "wide both ways");
+        assert_eq!(level, 0.0, "the flat's level");
+    }
 }
