@@ -216,7 +216,8 @@ fn trace(
     tr.classify();
     if level.is_some() && !seeds.is_empty() && !tr.nodes.contains(&true) {
         tr.tol = within;
-        (least, most) = tr.refine_narrow(seeds)?;
+        let (l, m) = tr.refine_narrow(seeds)?;
+        (least, most) = (least.min(l), most.max(m));
         tr.tol = (least + 0.5 * tol).min(within);
         tr.classify();
     }
