@@ -108,7 +108,8 @@ fn section_seeded(
         let contacts = super::contact::plane_contacts(&patch, &m, touch, &curves, tols, geom_tol);
         curves.extend(contacts);
         // A region lying in the plane narrower than the samples and the seed grid (a short
-        // flat between creases) shows as a crossing or contact along it: looked for from the curves.
+        // flat between creases) shows as a crossing or contact along it: looked for from the
+        // curves (about 0.1 ms of the torus section's 26).
         let mids: Vec<DVec3> = curves
             .iter()
             .filter_map(|c| c.points.get(c.points.len() / 2).copied())
