@@ -15,7 +15,8 @@
 //! it are checked to [`CORNER`] rather than GEOMTOL: a defect of the edge location near
 //! corners, not of the seed search, left open. Tightening them is setting [`CORNER`] to `GT`.
 
-use lispcad::geom::surface::{surface_intersect_tol, Surface};
+use lispcad::geom::mesh::Polyline3;
+use lispcad::geom::surface::{surface_intersect_tol, surface_section_tol, Surface};
 use lispcad::geom::DVec3;
 
 mod surface_support;
@@ -70,57 +71,76 @@ impl Band {
     }
 }
 
-/// Both orders of the intersection of the square and `other`: one closed loop, every point on
-/// the square and on `other` within GEOMTOL, within `slack[order]` of the band's outline,
-/// every side reached at both ends and in the middle, the length the outline's (to 1e-6, or
-/// 1e-3 where the slack is looser), and two more runs giving the same bits.
+/// Both orders of the intersection of the square and `other`: [`check_loop`] of each, to
+/// `slack[order]`.
 fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
     let sq = unit_square();
     let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
-    let q = &band.outline;
     for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
-        let slack = slack[order];
-        let r = meet(x, y);
         let name = if order == 0 {
             "square, other"
         } else {
             "other, square"
         };
-        assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
-        assert!(r[0].closed, "{name}: {}", summary(&r));
-        for p in &r[0].points {
-            assert!(p.y.abs() <= GT, "{name}: {p} off the square");
-            assert!(
-                (p.y - band.lift(*p)).abs() <= GT,
-                "{name}: {p} off the other"
-            );
-            assert!(
-                to_polygon(*p, q) <= slack,
-                "{name}: {p} off the band's outline"
-            );
-        }
-        for i in 0..4 {
-            let (a, b) = (q[i], q[(i + 1) % 4]);
-            for f in [0.02, 0.5, 0.98] {
-                let x = a.lerp(b, f);
-                let near = |p: &&DVec3| p.distance(x) <= 0.05 && to_segment(**p, a, b) <= slack;
-                assert!(
-                    r[0].points.iter().any(|p| near(&p)),
-                    "{name}: side {i} at {f}"
-                );
-            }
-        }
-        // Where the corner defect shows, the points off the outline zigzag along the long
-        // sides, lengthening the loop by up to a thousandth.
-        let (length, want) = (r[0].length(), perimeter(q));
-        let within = if slack > GT { 1e-3 } else { 1e-6 } * want;
+        check_loop(name, &|| meet(x, y), band, (slack[order], 0.05));
+    }
+}
+
+/// The section of `other` by the plane y = 0: the whole of its flat, `band` (in the profile
+/// surface's own domain, a band along a parameter line at a steady width or one narrowing
+/// evenly), checked as [`check_loop`] to GEOMTOL. Its straight sides, up to 4 long, have
+/// points only where they cross the grid's lines (an eighth of the length apart along z).
+fn check_section(other: &Surface, band: &Band) {
+    let cut = || surface_section_tol(other, DVec3::ZERO, DVec3::Y, 1e-6, 1e-9).unwrap();
+    check_loop("section", &cut, band, (GT, 0.2));
+}
+
+/// One closed loop from `run`, every point on the plane y = 0 and on the profile surface
+/// within GEOMTOL, within `slack` of the band's outline, every side reached (within `reach`)
+/// at both ends and in the middle, the length the outline's (to 1e-6, or 1e-3 where the slack
+/// is looser), and two more runs giving the same bits.
+fn check_loop(
+    name: &str,
+    run: &dyn Fn() -> Vec<Polyline3>,
+    band: &Band,
+    (slack, reach): (f64, f64),
+) {
+    let q = &band.outline;
+    let r = run();
+    assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
+    assert!(r[0].closed, "{name}: {}", summary(&r));
+    for p in &r[0].points {
+        assert!(p.y.abs() <= GT, "{name}: {p} off the square");
         assert!(
-            (length - want).abs() <= within,
-            "{name}: length {length} vs {want}"
+            (p.y - band.lift(*p)).abs() <= GT,
+            "{name}: {p} off the other"
         );
-        for _ in 0..2 {
-            assert_eq!(meet(x, y)[0].points, r[0].points, "{name}: another run");
+        assert!(
+            to_polygon(*p, q) <= slack,
+            "{name}: {p} off the band's outline"
+        );
+    }
+    for i in 0..4 {
+        let (a, b) = (q[i], q[(i + 1) % 4]);
+        for f in [0.02, 0.5, 0.98] {
+            let x = a.lerp(b, f);
+            let near = |p: &&DVec3| p.distance(x) <= reach && to_segment(**p, a, b) <= slack;
+            assert!(
+                r[0].points.iter().any(|p| near(&p)),
+                "{name}: side {i} at {f}"
+            );
         }
+    }
+    // Where the corner defect shows, the points off the outline zigzag along the long
+    // sides, lengthening the loop by up to a thousandth.
+    let (length, want) = (r[0].length(), perimeter(q));
+    let within = if slack > GT { 1e-3 } else { 1e-6 } * want;
+    assert!(
+        (length - want).abs() <= within,
+        "{name}: length {length} vs {want}"
+    );
+    for _ in 0..2 {
+        assert_eq!(run()[0].points, r[0].points, "{name}: another run");
     }
 }
 
@@ -143,6 +163,17 @@ fn a_narrow_flat_running_diagonally_across_the_unit_square() {
         flat: |z| (C0 + z, C1 + z),
     };
     check_both(&strip, &band, [CORNER, CORNER]);
+    // The section by y = 0: the whole flat, from z = -1.5 to 2.5.
+    let whole = Band {
+        outline: [
+            v(C0 - 1.5, 0.0, -1.5),
+            v(C1 - 1.5, 0.0, -1.5),
+            v(C1 + 2.5, 0.0, 2.5),
+            v(C0 + 2.5, 0.0, 2.5),
+        ],
+        flat: band.flat,
+    };
+    check_section(&strip, &whole);
 }
 
 #[test]
@@ -166,4 +197,15 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
         flat: |z| (C0, C0 + w(z)),
     };
     check_both(&wedge, &band, [GT, CORNER]);
+    // The section by y = 0: the whole flat, from z = -0.2 to 1.2.
+    let whole = Band {
+        outline: [
+            v(C0, 0.0, -0.2),
+            v(C0 + w(-0.2), 0.0, -0.2),
+            v(C0 + w(1.2), 0.0, 1.2),
+            v(C0, 0.0, 1.2),
+        ],
+        flat: band.flat,
+    };
+    check_section(&wedge, &whole);
 }

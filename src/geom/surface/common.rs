@@ -18,10 +18,12 @@
 //! than a quarter of a grid cell (1/128 of the parameter range) is not seen.
 
 mod edge;
+mod outside;
 mod seed;
 mod target;
 mod walk;
 
+pub(crate) use outside::{outside_common, outside_plane_region};
 use target::{on_samples, sample_count, Target};
 
 use super::hits::point_in_polygon;
@@ -62,30 +64,6 @@ pub(crate) fn overlap(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) -> Opt
         .or_else(|| common_region(a, b, tol, chord_tol))
 }
 
-/// The curves (of a closed form, found beside a common region) that do not lie in the common
-/// region of `a` and `b`: a curve whose middle point lies on both surfaces with the surfaces
-/// coinciding around it belongs to the region, whose boundary loops already describe it.
-pub(crate) fn outside_common(
-    a: &Surface,
-    b: &Surface,
-    curves: Vec<Polyline3>,
-    tol: f64,
-) -> Vec<Polyline3> {
-    let (s, other) = if free_form(a) { (a, b) } else { (b, a) };
-    let t = Target::of(other);
-    let tr = Tracer::new(s, &t, tol, tol);
-    curves
-        .into_iter()
-        .filter(|c| {
-            let Some(&p) = c.points.get(c.points.len() / 2) else {
-                return false;
-            };
-            let uv = tr.patch.project(p, None);
-            !(tr.patch.eval(uv).distance(p) <= tol && tr.in_region_by(uv, tr.probe(uv)))
-        })
-        .collect()
-}
-
 /// Whether the kind is one the analytic code cannot decide coincidence for.
 fn free_form(s: &Surface) -> bool {
     matches!(
@@ -101,30 +79,34 @@ pub(crate) fn common_region(a: &Surface, b: &Surface, tol: f64, chord_tol: f64) 
         return None;
     }
     let (ta, tb) = (Target::of(a), Target::of(b));
-    let (on_b, least_b, most_b) = on_samples(a, &tb, tol);
-    let (on_a, least_a, most_a) = on_samples(b, &ta, tol);
+    let (hits_b, least_b, most_b) = on_samples(a, &tb, tol);
+    let (hits_a, least_a, most_a) = on_samples(b, &ta, tol);
+    let (on_a, on_b) = (hits_a.len(), hits_b.len());
     if on_a == 0 && on_b == 0 {
         // No sample lies on the other surface: a region, if any, is narrower than the samples'
         // spacing; it is looked for from where the gap vanishes, in each free-form domain.
         return [(a, &tb), (b, &ta)]
             .into_iter()
             .filter(|(s, _)| free_form(s))
-            .find_map(|(s, t)| trace(s, t, tol, chord_tol, None));
+            .find_map(|(s, t)| trace(s, t, tol, chord_tol, None, &[]));
     }
     // Trace in the domain of the one lying more on the other (a plane region has none).
     let a_first = !matches!(a, Surface::Plane(_))
         && (matches!(b, Surface::Plane(_)) || on_b * sample_count(b) >= on_a * sample_count(a));
     let (s, t) = if a_first { (a, &tb) } else { (b, &ta) };
     let levels = (least_a.min(least_b), most_a.max(most_b));
-    trace(s, t, tol, chord_tol, Some(levels))
+    // The samples lying on the other surface are points of the region, whatever its width.
+    let hits: Vec<DVec3> = hits_a.into_iter().chain(hits_b).collect();
+    trace(s, t, tol, chord_tol, Some(levels), &hits)
 }
 
 /// The part of `s` lying in the plane through `p` with unit normal `n`, as its boundary loops;
-/// None when no region of it lies in the plane.
+/// None when no region of it lies in the plane. Given `seeds` (points of `s` in the plane: a
+/// mesh section's), the region is looked for from them alone.
 pub(crate) fn in_plane(
     s: &Surface,
-    p: DVec3,
-    n: DVec3,
+    (p, n): (DVec3, DVec3),
+    seeds: &[DVec3],
     tol: f64,
     chord_tol: f64,
 ) -> Option<Vec<Polyline3>> {
@@ -143,8 +125,14 @@ pub(crate) fn in_plane(
         _ => {
             let t = Target::Plane(p, n);
             // No sample in the plane: a region, if any, is narrower than their spacing.
-            let (on, least, most) = on_samples(s, &t, tol);
-            match trace(s, &t, tol, chord_tol, (on > 0).then_some((least, most)))? {
+            let level = match seeds {
+                [] => {
+                    let (hits, least, most) = on_samples(s, &t, tol);
+                    (!hits.is_empty()).then_some((least, most))
+                }
+                _ => None,
+            };
+            match trace(s, &t, tol, chord_tol, level, seeds)? {
                 Overlap::Loops(l) => Some(l),
                 Overlap::Everywhere => None,
             }
@@ -192,7 +180,9 @@ struct Tracer<'a, 'b> {
 }
 
 /// Traces the region of `s` lying on `t`, whose gap over the region is `level` (None: not
-/// known, the region narrower than the quick look's samples, looked for by [`seed`]).
+/// known, the region narrower than the quick look's samples, looked for by [`seed`], from
+/// `seeds` when given, points of `s` on `t`). Where the samples met `t` (`seeds`) but no grid
+/// node lies in the region, the region is narrower than the grid's cells: looked for from them.
 ///
 /// The region's edge is taken where the gap rises half the tolerance above its level: as
 /// far inside the tolerance as the level allows, so that where the surfaces part across a
@@ -212,17 +202,25 @@ fn trace(
     tol: f64,
     chord_tol: f64,
     level: Option<(f64, f64)>,
+    seeds: &[DVec3],
 ) -> Option<Overlap> {
     let mut tr = Tracer::new(s, t, tol, chord_tol);
     let size = tr.patch.scale() + tr.eval(DVec2::splat(0.5)).length();
     let within = (tol - ROUNDING * size).max(0.5 * tol);
     tr.tol = within;
-    let (least, most) = match level {
+    let (mut least, mut most) = match level {
         Some(l) => l,
-        None => tr.refine_narrow()?,
+        None => tr.refine_narrow(seeds)?,
     };
     tr.tol = (least + 0.5 * tol).min(within);
     tr.classify();
+    if level.is_some() && !seeds.is_empty() && !tr.nodes.contains(&true) {
+        tr.tol = within;
+        let (l, m) = tr.refine_narrow(seeds)?;
+        (least, most) = (least.min(l), most.max(m));
+        tr.tol = (least + 0.5 * tol).min(within);
+        tr.classify();
+    }
     let segs = tr.segments();
     let first = tr.nodes.clone();
     let mut loops = tr.loops(&segs);

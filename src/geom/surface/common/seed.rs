@@ -17,13 +17,13 @@
 
 use super::walk::Station;
 use super::{Tracer, N};
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 /// Cells per direction of the grid whose gap minima are followed.
 const S: usize = 16;
 /// A seed cell's width, in parameters.
 pub(super) const SEED_CELL: f64 = 1.0 / S as f64;
-/// Most minima followed, smallest gap first.
+/// Most minima (one per plateau) followed, smallest gap first.
 const CANDIDATES: usize = 12;
 /// The narrowest region looked for, as a fraction of the surface's size (its bounding box's
 /// diagonal).
@@ -39,10 +39,11 @@ const GOLDEN: usize = 48;
 type Band = [Option<(f64, f64)>; 2];
 
 impl Tracer<'_, '_> {
-    /// Looks for a region from the gap's minima and adds finer grid lines across each narrow
-    /// one found, followed along its length ([`super::walk`]); the least and most levels of
-    /// the regions found, None when none is found.
-    pub(super) fn refine_narrow(&mut self) -> Option<(f64, f64)> {
+    /// Looks for a region from the gap's minima (from `seeds` instead, points of the surface
+    /// on the target, when given) and adds finer grid lines across each narrow one found,
+    /// followed along its length ([`super::walk`]); the least and most levels of the regions
+    /// found, None when none is found.
+    pub(super) fn refine_narrow(&mut self, seeds: &[DVec3]) -> Option<(f64, f64)> {
         let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
         let (mut level, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
@@ -50,7 +51,11 @@ impl Tracer<'_, '_> {
                 .iter()
                 .any(|(b, w)| t.covers(b, uv) || (0..2).any(|k| t.walked(k, &w[k], uv)))
         };
-        for uv in self.candidates() {
+        let starts = match seeds {
+            [] => self.candidates(),
+            _ => seeds.iter().map(|p| self.patch.project(*p, None)).collect(),
+        };
+        for uv in starts {
             if seen(self, &bands, uv) {
                 continue;
             }
@@ -90,19 +95,21 @@ impl Tracer<'_, '_> {
     }
 
     /// The nodes of an S × S grid where the gap is no larger than at any neighbour, smallest
-    /// gap first (ties in grid order).
+    /// gap first (ties in grid order), one per plateau: neighbouring minima have equal gaps (a
+    /// band along a ruling lies at one gap all along it), and taken one by one they would fill
+    /// the list from one band and hide the next (a second flat at another level).
     fn candidates(&self) -> Vec<DVec2> {
         let at = |i: usize, j: usize| DVec2::new(i as f64 / S as f64, j as f64 / S as f64);
         let wrap = |k: usize, i: usize| if self.periodic[k] { i % S } else { i };
+        let id = |i: usize, j: usize| j * (S + 1) + i;
         let mut gap = vec![f64::INFINITY; (S + 1) * (S + 1)];
         for j in 0..=S {
             for i in 0..=S {
                 if wrap(0, i) == i && wrap(1, j) == j {
-                    gap[j * (S + 1) + i] = self.gap_at(at(i, j)).unwrap_or(f64::INFINITY);
+                    gap[id(i, j)] = self.gap_at(at(i, j)).unwrap_or(f64::INFINITY);
                 }
             }
         }
-        let g = |i: usize, j: usize| gap[wrap(1, j) * (S + 1) + wrap(0, i)];
         let step = |k: usize, i: usize, d: i64| -> Option<usize> {
             let x = i as i64 + d;
             if self.periodic[k] {
@@ -111,29 +118,52 @@ impl Tracer<'_, '_> {
                 (0..=S as i64).contains(&x).then_some(x as usize)
             }
         };
-        let mut out: Vec<(f64, usize, usize)> = Vec::new();
+        // The up to eight neighbours of a node, wrapped across seams.
+        let around = |i: usize, j: usize| {
+            (-1..=1i64)
+                .flat_map(move |dj| (-1..=1i64).map(move |di| (di, dj)))
+                .filter(|&d| d != (0, 0))
+                .filter_map(move |(di, dj)| Some((step(0, i, di)?, step(1, j, dj)?)))
+        };
+        let mut lowest = vec![false; gap.len()];
         for j in 0..=S {
             for i in 0..=S {
-                let here = g(i, j);
-                if !here.is_finite() || wrap(0, i) != i || wrap(1, j) != j {
-                    continue;
-                }
-                let lowest = (-1..=1).all(|dj| {
-                    (-1..=1).all(|di| match (step(0, i, di), step(1, j, dj)) {
-                        (Some(a), Some(b)) => here <= g(a, b),
-                        _ => true,
-                    })
-                });
-                if lowest {
-                    out.push((here, j, i));
+                let here = gap[id(i, j)];
+                lowest[id(i, j)] = here.is_finite()
+                    && wrap(0, i) == i
+                    && wrap(1, j) == j
+                    && around(i, j).all(|(a, b)| here <= gap[id(a, b)]);
+            }
+        }
+        let mut order: Vec<(f64, usize, usize)> = (0..=S)
+            .flat_map(|j| (0..=S).map(move |i| (i, j)))
+            .filter(|&(i, j)| lowest[id(i, j)])
+            .map(|(i, j)| (gap[id(i, j)], j, i))
+            .collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
+        let mut taken = vec![false; gap.len()];
+        let mut out = Vec::new();
+        for (_, j, i) in order {
+            if taken[id(i, j)] {
+                continue;
+            }
+            out.push(at(i, j));
+            if out.len() == CANDIDATES {
+                break;
+            }
+            // The rest of its plateau is passed over.
+            let mut stack = vec![(i, j)];
+            taken[id(i, j)] = true;
+            while let Some((a, b)) = stack.pop() {
+                for (c, d) in around(a, b) {
+                    if lowest[id(c, d)] && !taken[id(c, d)] {
+                        taken[id(c, d)] = true;
+                        stack.push((c, d));
+                    }
                 }
             }
         }
-        out.sort_by(|a, b| a.0.total_cmp(&b.0).then((a.1, a.2).cmp(&(b.1, b.2))));
-        out.into_iter()
-            .take(CANDIDATES)
-            .map(|(_, j, i)| at(i, j))
-            .collect()
+        out
     }
 
     /// Down the gap from `uv` to a point on the target, by golden-section searches within a
@@ -217,6 +247,7 @@ impl Tracer<'_, '_> {
             }
             let (hi, lo) = (self.reach(q, e), self.reach(q, -e));
             let (Some(hi), Some(lo)) = (hi, lo) else {
+                level = level.min(self.least_beyond(q, e, [hi.is_none(), lo.is_none()]));
                 continue;
             };
             if (hi - lo) * speed[k] < w_min {
@@ -228,6 +259,22 @@ impl Tracer<'_, '_> {
             }
         }
         Some((out, level))
+    }
+
+    /// The least gap on the target at a half, one and two grid cells from `q` along `e`
+    /// (`ways`: forward, backward) where the region goes on that far: the seed may lie where
+    /// the gap rises to the region's edge, above the region's level.
+    fn least_beyond(&self, q: DVec2, e: DVec2, ways: [bool; 2]) -> f64 {
+        let mut least = f64::INFINITY;
+        for (way, s) in ways.into_iter().zip([1.0, -1.0]) {
+            for f in [0.5, 1.0, 2.0] {
+                let p = q + e * (s * f / N as f64);
+                if way && self.on(p) {
+                    least = least.min(self.gap_at(p).unwrap_or(f64::INFINITY));
+                }
+            }
+        }
+        least
     }
 
     /// Whether the gap is flat across the middle of `lo..hi` (along direction `k` through `q`):
@@ -307,4 +354,35 @@ pub(super) fn add_line(lines: &mut Vec<f64>, periodic: bool, mut x: f64) -> Opti
         lines.push(x);
     }
     new.then_some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Surface, Target, Tracer};
+    use crate::geom::curve::Curve;
+    use glam::{DVec2, DVec3};
+    use std::sync::Arc;
+
+    #[test]
+    fn a_wide_region_seen_from_its_rising_edge_takes_its_least_gap_as_its_level() {
+        // A strip ruled from (-1, 1) down to a flat (0, 0)..(1, 0) and up to (2, 1), at z = 0
+        // and 3, on the plane y = 0: the flat is a third of u wide, the strip's v all of it.
+        // A seed on the left slope where the gap is 0.9 x tol (the point (-1 + t, 1 - t),
+        // t = 1 - 0.9 tol, at u = t/3) sees the region run on for two cells both ways.
+        let tol = 1e-9;
+        let profile = |z: f64| {
+            let pts = [(-1.0, 1.0), (0.0, 0.0), (1.0, 0.0), (2.0, 1.0)];
+            let pts = pts.iter().map(|&(x, y)| DVec3::new(x, y, z)).collect();
+            Arc::new(Curve::pline(pts, false, None).unwrap())
+        };
+        let s = Surface::ruled(profile(0.0), profile(3.0));
+        let t = Target::Plane(DVec3::ZERO, DVec3::Y);
+        let tr = Tracer::new(&s, &t, tol, 1e-6);
+        let q = DVec2::new((1.0 - 0.9 * tol) / 3.0, 0.5);
+        let g = tr.gap_at(q).unwrap();
+        assert!((g - 0.9 * tol).abs() <= 1e-15, "seed's gap {g}");
+        let (band, level) = tr.band(q).expect("a region");
+        assert_eq!(band, [None, None], "wide both ways");
+        assert_eq!(level, 0.0, "the flat's level");
+    }
 }

@@ -87,20 +87,20 @@ pub(super) fn sample_count(s: &Surface) -> usize {
     samples(s).len().max(1)
 }
 
-/// How many of `s`'s samples lie on `t`, and the least and most gaps among them (the least
+/// Those of `s`'s samples that lie on `t`, and the least and most gaps among them (the least
 /// is the common region's level: 0 where the surfaces coincide, 0.3 of the tolerance where
 /// held that far apart; a region may sit at a higher level, up to the most; infinite when none
 /// lies on `t`).
-pub(super) fn on_samples(s: &Surface, t: &Target, tol: f64) -> (usize, f64, f64) {
+pub(super) fn on_samples(s: &Surface, t: &Target, tol: f64) -> (Vec<DVec3>, f64, f64) {
     let (mut least, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
-    let mut count = 0;
+    let mut hits = Vec::new();
     for p in samples(s) {
         if t.on(p, tol) {
-            count += 1;
+            hits.push(p);
             // From where `on` left the projection; at most the tolerance, as `on` found.
             let g = t.gap(p, tol).unwrap_or(tol).min(tol);
             (least, most) = (least.min(g), most.max(g));
         }
     }
-    (count, least, most)
+    (hits, least, most)
 }
