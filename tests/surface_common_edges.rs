@@ -178,8 +178,8 @@ fn an_oblique_edge_meeting_a_crossing_along_the_domain_edge_ends_at_their_corner
     // until they were taken from the side without the kink.
     let on = on_polygon(&quad);
     for (x, y) in [(&rect, &fold), (&fold, &rect)] {
-        // The loop only: the crossing's own defects are another matter.
         let r = surface_intersect_tol(x, y, 1e-6, GT).unwrap();
+        assert_eq!(r.len(), 2, "{}", summary(&r));
         let loops: Vec<_> = r.iter().filter(|c| c.closed).collect();
         assert_eq!(loops.len(), 1, "{}", summary(&r));
         let pts = &loops[0].points;
@@ -196,7 +196,33 @@ fn an_oblique_edge_meeting_a_crossing_along_the_domain_edge_ends_at_their_corner
             (length - perimeter(&quad)).abs() <= 1e-6 * length,
             "{length}"
         );
+        check_crossing_along_the_edge(&r, pts);
     }
+}
+
+/// The fold's crossing with the rectangle's plane: where its tilted side's rulings (from
+/// (0, 4 + 6s, −3s) to (10, 6.3 + 3.7s, 3s)) pass z = 0, halfway along, so along x = 5 from
+/// (5, 5.15) (s = 0, the region's corner) to (5, 10) (s = 1): 4.85 long, on the rectangle's
+/// edge. Before, the rectangle's order gave the whole edge x = 5 (length 10: the loop's side
+/// again, traced on as a contact from the corner, where the surfaces are tangent) and the
+/// fold's order a piece from y = 4.70 and a stray 5.1 long across the region.
+fn check_crossing_along_the_edge(r: &[lispcad::geom::mesh::Polyline3], loop_pts: &[DVec3]) {
+    let c = r.iter().find(|c| !c.closed).unwrap();
+    for p in &c.points {
+        let on_line = (p.x - 5.0).abs() <= GT && p.z.abs() <= GT;
+        assert!(on_line && p.y >= 5.15 - GT && p.y <= 10.0 + GT, "{p}");
+    }
+    let (first, last) = (c.points[0], c.points[c.points.len() - 1]);
+    let (lo, hi) = if first.y < last.y {
+        (first, last)
+    } else {
+        (last, first)
+    };
+    assert!(lo.distance(v(5.0, 5.15, 0.0)) <= GT, "{lo}");
+    assert!(hi.distance(v(5.0, 10.0, 0.0)) <= GT, "{hi}");
+    // The crossing ends on the loop at a point the two share.
+    assert!(loop_pts.contains(&lo), "{lo} not on the loop");
+    assert!((c.length() - 4.85).abs() <= 1e-6, "{}", c.length());
 }
 
 #[test]

@@ -258,7 +258,11 @@ fn extend(
     };
     let reach = 4.0 * region.step + 2.0 * e.distance(f) + 4.0 * (r.seed_tol * a.scale()).sqrt();
     let ray = (e, e + dir * reach);
-    let mut best: Option<(f64, usize, usize, DVec3)> = None;
+    // The nearest segment off the ray; of those the ray meets (within the tolerance), the
+    // first along it: a crossing whose end lies on the loop where it runs along a side of it
+    // (the crossing leaving a fold's flat along a rectangle's edge) ends there, not at
+    // whichever of that side's segments comes first in the loop.
+    let mut best: Option<((f64, f64), usize, usize, DVec3)> = None;
     for (li, l) in loops.iter().enumerate() {
         let m = l.points.len();
         let segs = if l.closed { m } else { m.saturating_sub(1) };
@@ -267,8 +271,9 @@ fn extend(
             let (s, t, d) = segment_gap(ray.0, ray.1, q0, q1);
             // Off the ray's line by no more than the curve's own bending over the step.
             let lateral = 4.0 * r.chord_tol + 0.05 * s * reach;
-            if d <= lateral && best.is_none_or(|x| d < x.0) {
-                best = Some((d, li, k, q0.lerp(q1, t)));
+            let key = if d <= r.tol { (0.0, s) } else { (d, s) };
+            if d <= lateral && best.is_none_or(|x| key < x.0) {
+                best = Some((key, li, k, q0.lerp(q1, t)));
             }
         }
     }
