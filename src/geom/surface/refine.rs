@@ -13,6 +13,9 @@ use super::ParamSurface;
 use crate::geom::mesh::Polyline3;
 use glam::{DMat3, DVec2, DVec3};
 
+/// The step of the difference quotients, in parameters.
+const H: f64 = 1e-6;
+
 /// A parametric surface with what Newton needs: periodicity and a seed search grid.
 pub(crate) struct Patch<'a> {
     s: &'a Surface,
@@ -85,8 +88,8 @@ impl<'a> Patch<'a> {
     /// inner edge by 1.4e-6. There the second-order one-sided difference is taken from the side
     /// `uv` lies on (the later one when on the crease, as the curves evaluate it). The
     /// creases are the surface's own, known from its curves, so a smooth surface pays nothing.
+    #[inline]
     fn deriv(&self, uv: DVec2, k: usize) -> DVec3 {
-        const H: f64 = 1e-6;
         let (mut a, mut b) = (uv, uv);
         a[k] -= H;
         b[k] += H;
@@ -94,24 +97,36 @@ impl<'a> Patch<'a> {
             a[k] = a[k].max(0.0);
             b[k] = b[k].min(1.0);
         }
-        let creases = &self.creases[k];
-        if !creases.is_empty() {
-            let i = creases.partition_point(|c| *c <= a[k]);
-            if let Some(&c) = creases.get(i).filter(|c| **c < b[k]) {
-                let side = if uv[k] < c { -1.0 } else { 1.0 };
-                let at = |s: f64| {
-                    let mut q = uv;
-                    q[k] += side * s;
-                    q
-                };
-                // Too near the domain's edge on that side, the straddling quotient stands.
-                if self.periodic[k] || (0.0..=1.0).contains(&at(2.0 * H)[k]) {
-                    let (p0, p1, p2) = (self.eval(uv), self.eval(at(H)), self.eval(at(2.0 * H)));
-                    return side * (4.0 * p1 - 3.0 * p0 - p2) / (2.0 * H);
-                }
+        if !self.creases[k].is_empty() {
+            if let Some(d) = self.beside_crease(uv, k, (a[k], b[k])) {
+                return d;
             }
         }
         (self.eval(b) - self.eval(a)) / (b[k] - a[k])
+    }
+
+    /// [`Self::deriv`] where a crease lies strictly inside the stencil `(lo, hi)` along `k`:
+    /// the one-sided difference from `uv`'s side (None: no crease there, or too near the
+    /// domain's edge on that side, where the straddling quotient stands). Kept out of line,
+    /// so the smooth surfaces' path stays as short as it was.
+    #[inline(never)]
+    fn beside_crease(&self, uv: DVec2, k: usize, (lo, hi): (f64, f64)) -> Option<DVec3> {
+        let creases = &self.creases[k];
+        let c = *creases.get(creases.partition_point(|c| *c <= lo))?;
+        if c >= hi {
+            return None;
+        }
+        let side = if uv[k] < c { -1.0 } else { 1.0 };
+        let at = |s: f64| {
+            let mut q = uv;
+            q[k] += side * s;
+            q
+        };
+        if !self.periodic[k] && !(0.0..=1.0).contains(&at(2.0 * H)[k]) {
+            return None;
+        }
+        let (p0, p1, p2) = (self.eval(uv), self.eval(at(H)), self.eval(at(2.0 * H)));
+        Some(side * (4.0 * p1 - 3.0 * p0 - p2) / (2.0 * H))
     }
 
     /// Puts a parameter pair back in the domain: wraps periodic directions, clamps the others.
