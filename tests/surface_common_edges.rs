@@ -172,34 +172,19 @@ fn an_oblique_edge_meeting_a_crossing_along_the_domain_edge_ends_at_their_corner
         v(5.0, 5.15, 0.0),
         v(0.0, 4.0, 0.0),
     ];
-    // The fold's side to where the gap reaches GEOMTOL/2 past it (plus GEOMTOL): the surfaces
-    // part across the fold's crease there, at the dihedral angle φ between the flat and the
-    // ruling's tilted side (the normal (2.3(6f − 3), 10(3 − 6f), 10(6 − 2.3f)) at f = x/10),
-    // and the gap sampled across the kink inside the fold's patch is not a straight law to the
-    // fit's tolerance everywhere (the projection's difference quotients straddle the kink), so
-    // some points stay at that threshold, (GEOMTOL/2)/sin φ beyond: 2.2e-9 at x = 3, growing
-    // without bound towards the corner, where φ vanishes.
-    let fold_side = |p: DVec3| {
-        let (a, b) = (quad[2], quad[3]);
-        let t = ((p - a).dot(b - a) / (b - a).length_squared()).clamp(0.0, 1.0);
-        let f = p.x / 10.0;
-        let n = v(
-            2.3 * (6.0 * f - 3.0),
-            10.0 * (3.0 - 6.0 * f),
-            10.0 * (6.0 - 2.3 * f),
-        );
-        let sin = n.truncate().length() / n.length();
-        p.z.abs() <= GT && p.distance(a + (b - a) * t) <= GT + 0.5 * GT / sin
-    };
+    // Every point within GEOMTOL of the quadrilateral, the fold's side too: the surfaces part
+    // across the fold's crease there, which lies inside the fold's patch, and the projection's
+    // difference quotients straddled it (points up to 2.2e-9 off, growing towards the corner)
+    // until they were taken from the side without the kink.
     let on = on_polygon(&quad);
     for (x, y) in [(&rect, &fold), (&fold, &rect)] {
-        // The loop only: the crossing's own defects are another matter.
         let r = surface_intersect_tol(x, y, 1e-6, GT).unwrap();
+        assert_eq!(r.len(), 2, "{}", summary(&r));
         let loops: Vec<_> = r.iter().filter(|c| c.closed).collect();
         assert_eq!(loops.len(), 1, "{}", summary(&r));
         let pts = &loops[0].points;
         for p in pts {
-            assert!(on(*p) || fold_side(*p), "{p}");
+            assert!(on(*p), "{p}");
         }
         let corner = pts
             .iter()
@@ -211,7 +196,33 @@ fn an_oblique_edge_meeting_a_crossing_along_the_domain_edge_ends_at_their_corner
             (length - perimeter(&quad)).abs() <= 1e-6 * length,
             "{length}"
         );
+        check_crossing_along_the_edge(&r, pts);
     }
+}
+
+/// The fold's crossing with the rectangle's plane: where its tilted side's rulings (from
+/// (0, 4 + 6s, −3s) to (10, 6.3 + 3.7s, 3s)) pass z = 0, halfway along, so along x = 5 from
+/// (5, 5.15) (s = 0, the region's corner) to (5, 10) (s = 1): 4.85 long, on the rectangle's
+/// edge. Before, the rectangle's order gave the whole edge x = 5 (length 10: the loop's side
+/// again, traced on as a contact from the corner, where the surfaces are tangent) and the
+/// fold's order a piece from y = 4.70 and a stray 5.1 long across the region.
+fn check_crossing_along_the_edge(r: &[lispcad::geom::mesh::Polyline3], loop_pts: &[DVec3]) {
+    let c = r.iter().find(|c| !c.closed).unwrap();
+    for p in &c.points {
+        let on_line = (p.x - 5.0).abs() <= GT && p.z.abs() <= GT;
+        assert!(on_line && p.y >= 5.15 - GT && p.y <= 10.0 + GT, "{p}");
+    }
+    let (first, last) = (c.points[0], c.points[c.points.len() - 1]);
+    let (lo, hi) = if first.y < last.y {
+        (first, last)
+    } else {
+        (last, first)
+    };
+    assert!(lo.distance(v(5.0, 5.15, 0.0)) <= GT, "{lo}");
+    assert!(hi.distance(v(5.0, 10.0, 0.0)) <= GT, "{hi}");
+    // The crossing ends on the loop at a point the two share.
+    assert!(loop_pts.contains(&lo), "{lo} not on the loop");
+    assert!((c.length() - 4.85).abs() <= 1e-6, "{}", c.length());
 }
 
 #[test]
@@ -241,29 +252,31 @@ fn a_small_crossing_loop_beside_a_ring_comes_back_closed_and_the_ring_whole() {
         pline(vec![v(-4.0, 4.0, 0.0), v(4.0, 4.0, 0.0)]),
     );
     let radius = |p: &DVec3| p.x.hypot(p.y);
-    // The ring's inner edge, where the profile's kink lies inside the revolved surface's
-    // patch, to 2e-6 when traced in the square's domain: the projection's difference quotients
-    // (1e-6 in parameters) straddle the kink there. To 1e-9 otherwise.
+    // Every loop to GEOMTOL, the ring's inner edge too, where the profile's kink lies inside
+    // the revolved surface's patch: traced in the square's domain it was 1.4e-6 off while the
+    // projection's difference quotients (1e-6 in parameters) straddled the kink.
     let pairs = [
-        (&plane, &rev, GT),
-        (&rev, &plane, GT),
-        (&square, &rev, 2e-6),
-        (&rev, &square, 2e-6),
+        (&plane, &rev),
+        (&rev, &plane),
+        (&square, &rev),
+        (&rev, &square),
     ];
-    for (x, y, inner) in pairs {
-        // Seeding meshes within 1e-3: within 1e-6, the order (revolved, plane) gives one
-        // more circle, r = 0.41, inside the ring (on main too; not the region's edges).
-        let r = surface_intersect_seeded(x, y, 1e-3, 1e-6, GT).unwrap();
-        assert_eq!(r.len(), 3, "{}", summary(&r));
-        assert!(r.iter().all(|c| c.closed), "{}", summary(&r));
-        for (rho, within) in [(0.01, GT), (0.04, inner), (3.0, GT)] {
+    // Seeding meshes within 1e-3 and 1e-6. Within 1e-6 the order (revolved, plane) gave two
+    // more curves, a circle r = 0.41 inside the ring and a 3-point piece: a seed on the
+    // ring's inner edge, whose projection onto the revolved surface, warm-started from the
+    // last, slid to the pole and was taken as off the region, was traced on as a contact.
+    for ((x, y), seed) in pairs.iter().flat_map(|p| [(p, 1e-3), (p, 1e-6)]) {
+        let r = surface_intersect_seeded(x, y, seed, 1e-6, GT).unwrap();
+        assert_eq!(r.len(), 3, "seed {seed}: {}", summary(&r));
+        assert!(r.iter().all(|c| c.closed), "seed {seed}: {}", summary(&r));
+        for rho in [0.01, 0.04, 3.0] {
             let c = r
                 .iter()
                 .find(|c| (radius(&c.points[0]) - rho).abs() <= 1e-5)
                 .unwrap_or_else(|| panic!("no loop r = {rho}: {}", summary(&r)));
             for p in &c.points {
                 assert!(
-                    p.z.abs() <= GT && (radius(p) - rho).abs() <= within,
+                    p.z.abs() <= GT && (radius(p) - rho).abs() <= GT,
                     "r = {rho}: {p}"
                 );
             }
@@ -271,7 +284,7 @@ fn a_small_crossing_loop_beside_a_ring_comes_back_closed_and_the_ring_whole() {
             // most 2/3 of the tolerance over the radius, relatively.
             let (l, full) = (c.length(), std::f64::consts::TAU * rho);
             assert!(
-                l <= full * (1.0 + within / rho) && l >= full * (1.0 - 1e-6 / rho),
+                l <= full * (1.0 + GT / rho) && l >= full * (1.0 - 1e-6 / rho),
                 "r = {rho}: {l}"
             );
         }

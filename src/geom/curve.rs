@@ -16,7 +16,7 @@ use super::circle::Circle;
 use super::ellipse::Ellipse;
 use super::error::{finite, finite3, invalid, GeomError, Result};
 use super::line::Line;
-use super::piece::{Piece, Span};
+use super::piece::{span_creases, Piece, Span};
 use super::polyline::{Polyline, Segment};
 use super::quadspline::QuadSpline;
 use super::traits::*;
@@ -600,6 +600,15 @@ impl Curve {
 impl ParamCurve for Curve {
     fn eval(&self, t: f64) -> DVec3 {
         Curve::eval(self, t)
+    }
+
+    /// Only polylines and B-splines can join spans at a kink; a quadratic spline is C1 by
+    /// construction, the other kinds are one piece.
+    fn creases(&self) -> Vec<f64> {
+        match self {
+            Curve::Polyline(_) | Curve::BSpline(_) => span_creases(&self.spans()),
+            _ => Vec::new(),
+        }
     }
 }
 impl ParamCurveDeriv for Curve {

@@ -40,6 +40,21 @@ impl Span {
     }
 }
 
+/// The public parameters where consecutive spans' derivatives (in that parameter) differ in
+/// direction or size: a curve's creases ([`ParamCurve::creases`]).
+pub(crate) fn span_creases(spans: &[Span]) -> Vec<f64> {
+    let speed = |s: &Span, at: f64| s.piece.deriv(at) / (s.t1 - s.t0);
+    spans
+        .windows(2)
+        .filter(|w| {
+            let (a, b) = (speed(&w[0], 1.0), speed(&w[1], 0.0));
+            // Smooth joins agree to rounding; 1e-9 of the speed is far above it.
+            (a - b).length() > 1e-9 * a.length().max(b.length())
+        })
+        .map(|w| w[0].t1)
+        .collect()
+}
+
 /// Gauss–Legendre nodes and weights on [0, 1] (16 points, computed once by Newton on P16).
 pub(crate) fn gauss16() -> &'static [(f64, f64); 16] {
     static G: OnceLock<[(f64, f64); 16]> = OnceLock::new();

@@ -19,6 +19,13 @@ pub trait ParamCurve {
     fn end(&self) -> DVec3 {
         self.eval(1.0)
     }
+
+    /// The parameters inside (0, 1), ascending, where the first derivative jumps: joins that
+    /// are only C0 in this parameter (a polyline's vertices, a B-spline's full-multiplicity
+    /// knots). Difference quotients must not straddle them. Empty where the curve is smooth.
+    fn creases(&self) -> Vec<f64> {
+        Vec::new()
+    }
 }
 
 /// The first derivative with respect to the public parameter t.

@@ -66,7 +66,17 @@ impl<'a> Region<'a> {
     /// lies in (or on the boundary of) the region: its nearest point on the surface does, and
     /// is no farther than `near` (a point beyond the surface's edge is not in the region).
     pub(super) fn holds(&self, p: DVec3, near: f64) -> bool {
-        let uv = self.s.project(p, self.hint.get());
+        let mut uv = self.s.project(p, self.hint.get());
+        // A warm start from the last point may slide to a pole (a revolved profile's end on
+        // the axis, where the turn's derivative vanishes) and stop there, far from the nearest
+        // point: a circle inside a ring was taken as off the region, its every point projected
+        // to the pole 0.41 away. Then from the search grid too, the nearer kept.
+        if self.hint.get().is_some() && self.s.eval(uv).distance(p) > self.step {
+            let other = self.s.project(p, None);
+            if self.s.eval(other).distance(p) < self.s.eval(uv).distance(p) {
+                uv = other;
+            }
+        }
         self.hint.set(Some(uv));
         if self.s.eval(uv).distance(p) > near {
             return false;
@@ -258,7 +268,11 @@ fn extend(
     };
     let reach = 4.0 * region.step + 2.0 * e.distance(f) + 4.0 * (r.seed_tol * a.scale()).sqrt();
     let ray = (e, e + dir * reach);
-    let mut best: Option<(f64, usize, usize, DVec3)> = None;
+    // The nearest segment off the ray; of those the ray meets (within the tolerance), the
+    // first along it: a crossing whose end lies on the loop where it runs along a side of it
+    // (the crossing leaving a fold's flat along a rectangle's edge) ends there, not at
+    // whichever of that side's segments comes first in the loop.
+    let mut best: Option<((f64, f64), usize, usize, DVec3)> = None;
     for (li, l) in loops.iter().enumerate() {
         let m = l.points.len();
         let segs = if l.closed { m } else { m.saturating_sub(1) };
@@ -267,8 +281,9 @@ fn extend(
             let (s, t, d) = segment_gap(ray.0, ray.1, q0, q1);
             // Off the ray's line by no more than the curve's own bending over the step.
             let lateral = 4.0 * r.chord_tol + 0.05 * s * reach;
-            if d <= lateral && best.is_none_or(|x| d < x.0) {
-                best = Some((d, li, k, q0.lerp(q1, t)));
+            let key = if d <= r.tol { (0.0, s) } else { (d, s) };
+            if d <= lateral && best.is_none_or(|x| key < x.0) {
+                best = Some((key, li, k, q0.lerp(q1, t)));
             }
         }
     }

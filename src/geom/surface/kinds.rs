@@ -222,6 +222,42 @@ impl Surface {
         }))
     }
 
+    /// The parameters inside (0, 1) of each direction (u, v) where the surface has a crease,
+    /// from its defining curves' (a polyline profile's vertices): ascending, each once.
+    pub fn creases(&self) -> [Vec<f64>; 2] {
+        // A curve run at parameter 1 − t (a Coons side taken backwards) has its creases mirrored.
+        let of = |c: &CurveRef, backwards: bool| -> Vec<f64> {
+            let t = c.creases();
+            if backwards {
+                t.into_iter().map(|x| 1.0 - x).collect()
+            } else {
+                t
+            }
+        };
+        let mut out = match self {
+            Surface::Ruled(r) => [[of(&r.c1, false), of(&r.c2, false)].concat(), Vec::new()],
+            Surface::Revolve(r) => [of(&r.profile, false), Vec::new()],
+            Surface::Sweep(s) => [of(&s.profile, false), of(&s.guide, false)],
+            Surface::Coons(c) => {
+                // Bottom runs with u, top against it; right with v, left against it.
+                let side = |i: usize, against: bool| of(&c.curves[i], c.reversed[i] != against);
+                [
+                    [side(0, false), side(2, true)].concat(),
+                    [side(1, false), side(3, true)].concat(),
+                ]
+            }
+            Surface::Plane(_) | Surface::Cylinder(_) | Surface::Sphere(_) => {
+                [Vec::new(), Vec::new()]
+            }
+        };
+        for t in &mut out {
+            t.retain(|x| *x > 0.0 && *x < 1.0);
+            t.sort_by(f64::total_cmp);
+            t.dedup();
+        }
+        out
+    }
+
     /// The kind's name, as the language shows it.
     pub fn name(&self) -> &'static str {
         match self {

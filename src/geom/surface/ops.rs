@@ -425,6 +425,12 @@ fn through_meshes(
         None => curves,
     };
     let mut curves = super::contact::regroup_pair(&pa, &pb, curves, (seed_tol, gtol, ctol));
+    // A crossing ends on the region's loop where the surfaces coincide, so tangent there: the
+    // contact traced from that end runs on along the loop (a fold crossing a rectangle along
+    // its edge came back as the whole edge). Cut again.
+    if let Some((r, loops)) = region.as_mut() {
+        curves = outside(r, (&pa, &pb), curves, loops, reach);
+    }
     if !contacts {
         return Ok(curves);
     }

@@ -13,10 +13,15 @@ use super::ParamSurface;
 use crate::geom::mesh::Polyline3;
 use glam::{DMat3, DVec2, DVec3};
 
+/// The step of the difference quotients, in parameters.
+const H: f64 = 1e-6;
+
 /// A parametric surface with what Newton needs: periodicity and a seed search grid.
 pub(crate) struct Patch<'a> {
     s: &'a Surface,
     periodic: [bool; 2],
+    /// Each direction's creases (see [`Surface::creases`]): empty for a smooth surface.
+    creases: [Vec<f64>; 2],
     grid: Vec<(DVec2, DVec3)>,
     scale: f64,
 }
@@ -50,6 +55,7 @@ impl<'a> Patch<'a> {
         Patch {
             s,
             periodic,
+            creases: s.creases(),
             grid,
             scale,
         }
@@ -70,20 +76,57 @@ impl<'a> Patch<'a> {
         self.s.eval(uv.x, uv.y)
     }
 
-    /// Partial derivatives by central differences (one-sided at a domain edge).
+    /// Partial derivatives by central differences (one-sided at a domain edge, and beside a
+    /// crease: see [`Self::deriv`]).
     pub(crate) fn derivs(&self, uv: DVec2) -> (DVec3, DVec3) {
-        const H: f64 = 1e-6;
-        let d = |k: usize| {
-            let (mut a, mut b) = (uv, uv);
-            a[k] -= H;
-            b[k] += H;
-            if !self.periodic[k] {
-                a[k] = a[k].max(0.0);
-                b[k] = b[k].min(1.0);
+        (self.deriv(uv, 0), self.deriv(uv, 1))
+    }
+
+    /// The derivative along parameter `k`. A central difference straddling a crease (a C0
+    /// join inside the patch) blends the derivatives of its two sides, and bends whatever
+    /// Newton finds within a step of it: a region's edge on a fold's side by 2e-9, a ring's
+    /// inner edge by 1.4e-6. There the second-order one-sided difference is taken from the side
+    /// `uv` lies on (the later one when on the crease, as the curves evaluate it). The
+    /// creases are the surface's own, known from its curves, so a smooth surface pays nothing.
+    #[inline]
+    fn deriv(&self, uv: DVec2, k: usize) -> DVec3 {
+        let (mut a, mut b) = (uv, uv);
+        a[k] -= H;
+        b[k] += H;
+        if !self.periodic[k] {
+            a[k] = a[k].max(0.0);
+            b[k] = b[k].min(1.0);
+        }
+        if !self.creases[k].is_empty() {
+            if let Some(d) = self.beside_crease(uv, k, (a[k], b[k])) {
+                return d;
             }
-            (self.eval(b) - self.eval(a)) / (b[k] - a[k])
+        }
+        (self.eval(b) - self.eval(a)) / (b[k] - a[k])
+    }
+
+    /// [`Self::deriv`] where a crease lies strictly inside the stencil `(lo, hi)` along `k`:
+    /// the one-sided difference from `uv`'s side (None: no crease there, or too near the
+    /// domain's edge on that side, where the straddling quotient stands). Kept out of line,
+    /// so the smooth surfaces' path stays as short as it was.
+    #[inline(never)]
+    fn beside_crease(&self, uv: DVec2, k: usize, (lo, hi): (f64, f64)) -> Option<DVec3> {
+        let creases = &self.creases[k];
+        let c = *creases.get(creases.partition_point(|c| *c <= lo))?;
+        if c >= hi {
+            return None;
+        }
+        let side = if uv[k] < c { -1.0 } else { 1.0 };
+        let at = |s: f64| {
+            let mut q = uv;
+            q[k] += side * s;
+            q
         };
-        (d(0), d(1))
+        if !self.periodic[k] && !(0.0..=1.0).contains(&at(2.0 * H)[k]) {
+            return None;
+        }
+        let (p0, p1, p2) = (self.eval(uv), self.eval(at(H)), self.eval(at(2.0 * H)));
+        Some(side * (4.0 * p1 - 3.0 * p0 - p2) / (2.0 * H))
     }
 
     /// Puts a parameter pair back in the domain: wraps periodic directions, clamps the others.
@@ -566,4 +609,106 @@ fn segment_gap(p0: DVec3, p1: DVec3, q0: DVec3, q1: DVec3) -> (f64, DVec3, f64) 
     }
     let (cp, cq) = (p0 + d1 * s, q0 + d2 * t);
     (s, cp, cp.distance(cq))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Patch;
+    use crate::geom::curve::Curve;
+    use crate::geom::surface::{CurveRef, Surface};
+    use crate::geom::ParamCurve;
+    use glam::{DVec2, DVec3};
+    use std::sync::Arc;
+
+    fn v(x: f64, y: f64, z: f64) -> DVec3 {
+        DVec3::new(x, y, z)
+    }
+
+    fn pline(pts: Vec<DVec3>) -> CurveRef {
+        Arc::new(Curve::pline(pts, false, None).unwrap())
+    }
+
+    #[test]
+    fn creases_are_the_joins_where_the_derivative_jumps() {
+        // Three segments of a polyline, each a third of the parameter: a turn at t = 1/3, a
+        // straight join between segments of unequal length at 2/3 (the speed jumps), none
+        // between equal collinear ones.
+        let c = pline(vec![
+            v(0.0, 0.0, 0.0),
+            v(1.0, 0.0, 0.0),
+            v(1.0, 1.0, 0.0),
+            v(1.0, 3.0, 0.0),
+        ]);
+        assert_eq!(c.creases(), vec![1.0 / 3.0, 2.0 / 3.0]);
+        let straight = pline(vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(2.0, 0.0, 0.0)]);
+        assert!(straight.creases().is_empty());
+        // A quadratic B-spline with a double knot at 0.5 (C0 there) and a simple one at 0.25.
+        let knots = vec![0.0, 0.0, 0.0, 0.25, 0.5, 0.5, 1.0, 1.0, 1.0];
+        let ctrl = vec![
+            v(0.0, 0.0, 0.0),
+            v(1.0, 1.0, 0.0),
+            v(2.0, 0.0, 0.0),
+            v(3.0, 2.0, 0.0),
+            v(4.0, 0.0, 0.0),
+            v(5.0, 1.0, 0.0),
+        ];
+        let b = Curve::bspline(ctrl, 2, Some(knots), None).unwrap();
+        assert_eq!(b.creases(), vec![0.5]);
+        let arc = Curve::arc(DVec3::ZERO, 1.0, 0.0, 1.0, None).unwrap();
+        assert!(arc.creases().is_empty());
+    }
+
+    #[test]
+    fn a_coons_side_taken_backwards_has_its_creases_mirrored() {
+        let (a, b, c, d) = (
+            v(0.0, 0.0, 0.0),
+            v(3.0, 0.0, 0.0),
+            v(3.0, 2.0, 0.0),
+            v(0.0, 2.0, 0.0),
+        );
+        // Each side kinks at 2/3 of its own parameter only (a turn, or a straight join of
+        // unequal segments on the left). The bottom is given from b to a, so the patch takes
+        // it backwards: its kink lies at u = 1/3. The top given from d to c and the left from
+        // a to d run with u and v as given (the patch takes them backwards from its own
+        // order around): 2/3.
+        let s = Surface::boundary([
+            pline(vec![b, v(2.0, -0.5, 0.0), v(1.0, -1.0, 0.0), a]),
+            pline(vec![b, c]),
+            pline(vec![d, v(1.0, 2.5, 0.0), v(2.0, 3.0, 0.0), c]),
+            pline(vec![a, v(0.0, 0.5, 0.0), v(0.0, 1.0, 0.0), d]),
+        ])
+        .unwrap();
+        let [u, w] = s.creases();
+        let close = |x: &[f64], y: &[f64]| {
+            x.len() == y.len() && x.iter().zip(y).all(|(p, q)| (p - q).abs() <= 1e-15)
+        };
+        assert!(close(&u, &[1.0 / 3.0, 2.0 / 3.0]), "{u:?}");
+        assert!(close(&w, &[2.0 / 3.0]), "{w:?}");
+    }
+
+    #[test]
+    fn derivatives_beside_a_crease_are_those_of_its_side() {
+        // A fold ruled between two polylines that turn at u = 1/2: z = 0 before, z falling
+        // 3 per unit of y after. Exactly, S_u = 10·(0, 4, 0) before and 10·(0, 6, −3) after
+        // (on the v = 0 side, the ruling from x = 0), S_v = (10, 0, 0) + the two sides' gap.
+        let fold = Surface::ruled(
+            pline(vec![v(0.0, 0.0, 0.0), v(0.0, 4.0, 0.0), v(0.0, 10.0, -3.0)]),
+            pline(vec![
+                v(10.0, 0.0, 0.0),
+                v(10.0, 4.0, 0.0),
+                v(10.0, 10.0, -3.0),
+            ]),
+        );
+        let patch = Patch::new(&fold);
+        for (u, want) in [
+            (0.5 - 3e-7, v(0.0, 8.0, 0.0)),
+            (0.5 - 1e-12, v(0.0, 8.0, 0.0)),
+            (0.5, v(0.0, 12.0, -6.0)),
+            (0.5 + 7e-7, v(0.0, 12.0, -6.0)),
+        ] {
+            let (su, sv) = patch.derivs(DVec2::new(u, 0.3));
+            assert!(su.distance(want) <= 1e-8, "{u}: {su} vs {want}");
+            assert!(sv.distance(v(10.0, 0.0, 0.0)) <= 1e-8, "{u}: {sv}");
+        }
+    }
 }

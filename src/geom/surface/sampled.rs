@@ -56,6 +56,17 @@ impl ParamCurve for SampledCurve {
         let f = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
         self.points[i - 1].lerp(self.points[i], f)
     }
+
+    /// Every inner point where the polyline turns (by chord length the speed is the same on
+    /// every segment, so only the direction can jump).
+    fn creases(&self) -> Vec<f64> {
+        let dir = |i: usize| (self.points[i + 1] - self.points[i]).normalize_or_zero();
+        (1..self.points.len() - 1)
+            .filter(|&i| dir(i - 1).distance(dir(i)) > 1e-9)
+            .map(|i| self.params[i])
+            .filter(|t| *t > 0.0 && *t < 1.0)
+            .collect()
+    }
 }
 
 /// Samples `c` adaptively: split a parameter interval while its midpoint lies farther than
