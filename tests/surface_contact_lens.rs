@@ -199,7 +199,12 @@ fn check(name: &str, r: &[Polyline3]) {
 
 /// The lens and both contacts, in section and both orders with the plate z = 0 (a rectangle
 /// wider than the patch), at seeds 1e-2 and 1e-3, the curves densified within 1e-6; each run
-/// twice for the same bits.
+/// twice for the same bits. The lens's short-cut ends are mesh vertices on y = 0, (1.375, 0, 0)
+/// at seed 1e-2 and (1.15625, 0, 0) at 1e-3: the seeding meshes' loop crosses the tips where
+/// they are thinner than a facet, and `refine::assemble` keeps a chord whose midpoint does not
+/// refine between its ends (it falls onto the other side of the lens), so the closed seed gives
+/// a closed curve cut short rather than two sides run on into the contacts (read from the
+/// code, not instrumented).
 #[test]
 #[ignore = "open defect: the lens comes back short (3.181 at seed 1e-2, 3.765 at 1e-3, for \
             4.277), closed by a chord 0.15 long across its tips; the section at seed 1e-2 and \
