@@ -122,18 +122,18 @@ fn a_revolved_profile_with_a_narrow_flat_on_a_revolved_line() {
     check_band_on(w, &cyl);
 }
 
-/// A profile in the plane z with a wide flat (x from 0 to 1, `m` segments) and, beyond a ridge,
-/// a narrow one (x from 3 to 3 + `wn`, one segment), both on y = 0, between 45° slopes of `m`
-/// segments rising to y = 1: 5m + 1 segments, the narrow flat 1/(5m + 1) of the parameter
-/// range (between the tracer's grid lines 25/32 and 26/32 for m = 80).
-fn wide_and_narrow(wn: f64, m: usize, z: f64) -> Vec<DVec3> {
+/// A profile in the plane z with a wide flat on y = 0 (x from 0 to 1, `m` segments) and,
+/// beyond a ridge, a narrow one `lift` above it (x from 3 to 3 + `wn`, one segment), between
+/// 45° slopes of `m` segments rising to y = 1: 5m + 1 segments, the narrow flat 1/(5m + 1) of
+/// the parameter range (between the tracer's grid lines 25/32 and 26/32 for m = 80).
+fn wide_and_narrow(wn: f64, lift: f64, m: usize, z: f64) -> Vec<DVec3> {
     let corners = [
         v(-1.0, 1.0, z),
         v(0.0, 0.0, z),
         v(1.0, 0.0, z),
         v(2.0, 1.0, z),
-        v(3.0, 0.0, z),
-        v(3.0 + wn, 0.0, z),
+        v(3.0, lift, z),
+        v(3.0 + wn, lift, z),
         v(4.0 + wn, 1.0, z),
     ];
     let mut pts = Vec::new();
@@ -163,13 +163,22 @@ fn off_profile(p: DVec3, profile: &[DVec3]) -> f64 {
 
 #[test]
 fn a_narrow_flat_beside_a_wide_one_on_a_plane_is_found_too() {
-    // The quick look's samples and the tracer's grid nodes lie on the wide flat, none on the
-    // narrow one: both regions come back, each as the rectangle x ∈ [x0, x0 + w], z ∈ [0, 3]
-    // on y = 0 (the slopes leave the plane at 45°, so the edges lie within GEOMTOL·√2 of
-    // x = x0 and x0 + w), in both orders and as the section by the plane y = 0.
+    // The narrow flat on the plane, and 0.9 × GEOMTOL off it (as the levels' tests).
+    assert_wide_and_narrow(0.0);
+    assert_wide_and_narrow(0.9 * GT);
+}
+
+/// The quick look's samples and the tracer's grid nodes lie on the wide flat, none on the
+/// narrow one `lift` off the plane y = 0: both regions come back, each as the rectangle
+/// x ∈ [x0, x0 + w], z ∈ [0, 3] (the slopes leave the flats at 45°, so the edges lie within
+/// (lift + GEOMTOL)·√2 of x = x0 and x0 + w), in both orders and as the section by y = 0.
+fn assert_wide_and_narrow(lift: f64) {
     let (wn, m) = (0.02, 80);
-    let profile = wide_and_narrow(wn, m, 0.0);
-    let curve = |z: f64| Arc::new(Curve::pline(wide_and_narrow(wn, m, z), false, None).unwrap());
+    let profile = wide_and_narrow(wn, lift, m, 0.0);
+    let curve = |z: f64| {
+        let pts = wide_and_narrow(wn, lift, m, z);
+        Arc::new(Curve::pline(pts, false, None).unwrap())
+    };
     let strip = Surface::ruled(curve(0.0), curve(3.0));
     let wall = Surface::plane(vec![
         v(-2.0, 0.0, -1.0),
@@ -178,7 +187,7 @@ fn a_narrow_flat_beside_a_wide_one_on_a_plane_is_found_too() {
         v(-2.0, 0.0, 4.0),
     ])
     .unwrap();
-    let slack = GT * 2f64.sqrt();
+    let slack = (lift + GT) * 2f64.sqrt();
     let flats = [(0.0, 1.0), (3.0, wn)];
     let on = |p: DVec3| {
         let in_flat = |&(x0, w): &(f64, f64)| {
