@@ -6,13 +6,15 @@
 //! leave the flat tangentially, so the edges are also the tangential-parting case.
 
 use lispcad::geom::curve::Curve;
-use lispcad::geom::surface::{surface_section_tol, Surface};
+use lispcad::geom::surface::{surface_intersect_tol, surface_section_tol, Surface};
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{check_loops_reaching as check, check_order, u_profile, M1, M2, R};
+use surface_support::{
+    check_loops, check_loops_reaching as check, check_order, summary, u_profile, M1, M2, R,
+};
 
 const GT: f64 = 1e-9;
 
@@ -118,4 +120,102 @@ fn a_revolved_profile_with_a_narrow_flat_on_a_revolved_line() {
     let line = Arc::new(Curve::line(v(1.0, -1.0, 0.0), v(1.0, 6.0, 0.0)).unwrap());
     let cyl = Surface::revolve(line, DVec3::ZERO, DVec3::Y, TAU).unwrap();
     check_band_on(w, &cyl);
+}
+
+/// A profile in the plane z with a wide flat on y = 0 (x from 0 to 1, `m` segments) and,
+/// beyond a ridge, a narrow one `lift` above it (x from 3 to 3 + `wn`, one segment), between
+/// 45° slopes of `m` segments rising to y = 1: 5m + 1 segments, the narrow flat 1/(5m + 1) of
+/// the parameter range (between the tracer's grid lines 25/32 and 26/32 for m = 80).
+fn wide_and_narrow(wn: f64, lift: f64, m: usize, z: f64) -> Vec<DVec3> {
+    let corners = [
+        v(-1.0, 1.0, z),
+        v(0.0, 0.0, z),
+        v(1.0, 0.0, z),
+        v(2.0, 1.0, z),
+        v(3.0, lift, z),
+        v(3.0 + wn, lift, z),
+        v(4.0 + wn, 1.0, z),
+    ];
+    let mut pts = Vec::new();
+    for (i, pair) in corners.windows(2).enumerate() {
+        let n = if i == 4 { 1 } else { m };
+        pts.extend((0..n).map(|k| pair[0].lerp(pair[1], k as f64 / n as f64)));
+    }
+    pts.push(corners[6]);
+    pts
+}
+
+/// The distance from `p` (in the strip's z range) to the polyline `profile` in x and y.
+fn off_profile(p: DVec3, profile: &[DVec3]) -> f64 {
+    if !(-GT..=3.0 + GT).contains(&p.z) {
+        return f64::INFINITY;
+    }
+    profile
+        .windows(2)
+        .map(|s| {
+            let (a, b) = (s[0], s[1]);
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+            (p.x - a.x - t * dx).hypot(p.y - a.y - t * dy)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn a_narrow_flat_beside_a_wide_one_on_a_plane_is_found_too() {
+    // The narrow flat on the plane, and 0.9 × GEOMTOL off it (as the levels' tests).
+    assert_wide_and_narrow(0.0);
+    assert_wide_and_narrow(0.9 * GT);
+}
+
+/// The quick look's samples and the tracer's grid nodes lie on the wide flat, none on the
+/// narrow one `lift` off the plane y = 0: both regions come back, each as the rectangle
+/// x ∈ [x0, x0 + w], z ∈ [0, 3] (the slopes leave the flats at 45°, so the edges lie within
+/// (lift + GEOMTOL)·√2 of x = x0 and x0 + w), in both orders and as the section by y = 0.
+fn assert_wide_and_narrow(lift: f64) {
+    let (wn, m) = (0.02, 80);
+    let profile = wide_and_narrow(wn, lift, m, 0.0);
+    let curve = |z: f64| {
+        let pts = wide_and_narrow(wn, lift, m, z);
+        Arc::new(Curve::pline(pts, false, None).unwrap())
+    };
+    let strip = Surface::ruled(curve(0.0), curve(3.0));
+    let wall = Surface::plane(vec![
+        v(-2.0, 0.0, -1.0),
+        v(6.0, 0.0, -1.0),
+        v(6.0, 0.0, 4.0),
+        v(-2.0, 0.0, 4.0),
+    ])
+    .unwrap();
+    let slack = (lift + GT) * 2f64.sqrt();
+    let flats = [(0.0, 1.0), (3.0, wn)];
+    let on = |p: DVec3| {
+        let in_flat = |&(x0, w): &(f64, f64)| {
+            let x = p.x - x0;
+            let side = x.abs() <= slack || (x - w).abs() <= slack;
+            let end = p.z.abs() <= GT || (p.z - 3.0).abs() <= GT;
+            (side || end) && (-slack..=w + slack).contains(&x)
+        };
+        p.y.abs() <= GT && off_profile(p, &profile) <= GT && flats.iter().any(in_flat)
+    };
+    let length = 2.0 * (1.0 + 3.0) + 2.0 * (wn + 3.0);
+    let section =
+        |x: &Surface, _: &Surface| surface_section_tol(x, DVec3::ZERO, DVec3::Y, 1e-6, GT).unwrap();
+    let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, GT).unwrap();
+    let mut all = check_loops(meet, &strip, &wall, 2, length, on);
+    all.push(check_order(section, &strip, &wall, 2, length, on));
+    for r in &all {
+        // One loop round each flat, reaching both its sides.
+        for &(x0, w) in &flats {
+            let mine: Vec<_> = r
+                .iter()
+                .filter(|c| c.points.iter().all(|p| (p.x - x0 - 0.5 * w).abs() <= 0.6))
+                .collect();
+            assert_eq!(mine.len(), 1, "flat at {x0}: {}", summary(r));
+            for x in [x0, x0 + w] {
+                let reached = mine[0].points.iter().any(|p| (p.x - x).abs() <= slack);
+                assert!(reached, "flat at {x0}: side x = {x} not reached");
+            }
+        }
+    }
 }

@@ -14,8 +14,16 @@
 //! found by bisection of "lies on the other surface" along a grid edge, so it lies on both
 //! surfaces within the tolerance, then carried back to where the gap beyond it extrapolates to
 //! zero ([`edge`]: where the surfaces part tangentially the threshold lies √(2·tol·R) past the
-//! edge); the loops are then densified within the chord tolerance. A common region narrower
-//! than a quarter of a grid cell (1/128 of the parameter range) is not seen.
+//! edge); the loops are then densified within the chord tolerance.
+//!
+//! A region narrower than a quarter of a grid cell (1/128 of the parameter range) holds no
+//! node; it is looked for ([`seed`]) and gets finer grid lines across it: from the samples
+//! lying on the other surface when some did but no node lies in any region; from the gap's
+//! minima over a 16 × 16 grid when no sample did, and beside the regions the nodes see (a
+//! narrow flat beside a wide one); from the section's curves in a plane section. Still not
+//! seen: a region narrower than [`seed::W_MIN`] of the surface's size either way, one whose
+//! gap minimum is not among that grid's twelve smallest or not reached from them within a
+//! sixteenth of the range, and one within about a quarter cell of a region the nodes see.
 
 mod edge;
 mod outside;
@@ -183,6 +191,8 @@ struct Tracer<'a, 'b> {
 /// known, the region narrower than the quick look's samples, looked for by [`seed`], from
 /// `seeds` when given, points of `s` on `t`). Where the samples met `t` (`seeds`) but no grid
 /// node lies in the region, the region is narrower than the grid's cells: looked for from them.
+/// Where nodes do lie in a region, narrower ones beside it are looked for from the gap's minima
+/// ([`Tracer::refine_beside`]), and the grid classified again when one is found.
 ///
 /// The region's edge is taken where the gap rises half the tolerance above its level: as
 /// far inside the tolerance as the level allows, so that where the surfaces part across a
@@ -220,6 +230,14 @@ fn trace(
         (least, most) = (least.min(l), most.max(m));
         tr.tol = (least + 0.5 * tol).min(within);
         tr.classify();
+    } else if level.is_some() && tr.nodes.contains(&true) {
+        tr.tol = within;
+        if let Some((l, m)) = tr.refine_beside() {
+            (least, most) = (least.min(l), most.max(m));
+            tr.tol = (least + 0.5 * tol).min(within);
+            tr.classify();
+        }
+        tr.tol = (least + 0.5 * tol).min(within);
     }
     let segs = tr.segments();
     let first = tr.nodes.clone();

@@ -44,6 +44,24 @@ impl Tracer<'_, '_> {
     /// followed along its length ([`super::walk`]); the least and most levels of the regions
     /// found, None when none is found.
     pub(super) fn refine_narrow(&mut self, seeds: &[DVec3]) -> Option<(f64, f64)> {
+        let starts = match seeds {
+            [] => self.candidates(),
+            _ => seeds.iter().map(|p| self.patch.project(*p, None)).collect(),
+        };
+        self.refine_from(starts, false)
+    }
+
+    /// [`Self::refine_narrow`] from the gap's minima, once the grid's nodes have seen a region
+    /// (as classified now): a region narrower than a quarter cell beside it (or anywhere else)
+    /// holds no node. Points lying in a region a quarter cell wide are passed over (the grid
+    /// sees that one), and every node stays classified (no band's corridor leaves out the
+    /// nodes of the region seen).
+    pub(super) fn refine_beside(&mut self) -> Option<(f64, f64)> {
+        let starts = self.candidates();
+        self.refine_from(starts, true)
+    }
+
+    fn refine_from(&mut self, starts: Vec<DVec2>, beside: bool) -> Option<(f64, f64)> {
         let mut bands: Vec<(Band, [Vec<Station>; 2])> = Vec::new();
         let (mut level, mut most) = (f64::INFINITY, f64::NEG_INFINITY);
         let seen = |t: &Self, bands: &[(Band, [Vec<Station>; 2])], uv: DVec2| {
@@ -51,16 +69,13 @@ impl Tracer<'_, '_> {
                 .iter()
                 .any(|(b, w)| t.covers(b, uv) || (0..2).any(|k| t.walked(k, &w[k], uv)))
         };
-        let starts = match seeds {
-            [] => self.candidates(),
-            _ => seeds.iter().map(|p| self.patch.project(*p, None)).collect(),
-        };
+        let quarter = DVec2::splat(0.25 / N as f64);
         for uv in starts {
             if seen(self, &bands, uv) {
                 continue;
             }
             let Some(q) = self.descend(uv) else { continue };
-            if seen(self, &bands, q) {
+            if seen(self, &bands, q) || beside && self.in_region_by(q, quarter) {
                 continue;
             }
             if let Some((b, l)) = self.band(q) {
@@ -87,7 +102,7 @@ impl Tracer<'_, '_> {
                 };
             }
         }
-        if !oblique {
+        if !oblique || beside {
             self.spread = [Vec::new(), Vec::new()];
             self.corridors.clear();
         }
