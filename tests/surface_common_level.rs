@@ -16,7 +16,7 @@ use std::f64::consts::FRAC_PI_3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{cylinders, summary, R};
+use surface_support::{cylinders, off_strip as off_profile, summary, R};
 
 const GT: f64 = 1e-9;
 const CT: f64 = 1e-6;
@@ -250,24 +250,6 @@ fn two_flats(w: f64, m: usize, d: [f64; 2], z: f64) -> Vec<DVec3> {
     }
     pts.push(corners[6]);
     pts
-}
-
-/// The distance from `p` to the strip ruled between `profile` at z = 0 and z = 3.
-fn off_profile(p: DVec3, profile: &[DVec3]) -> f64 {
-    let d = profile
-        .windows(2)
-        .map(|s| {
-            let (a, b) = (s[0], s[1]);
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-            (p.x - a.x - t * dx).hypot(p.y - a.y - t * dy)
-        })
-        .fold(f64::INFINITY, f64::min);
-    if (-GT..=3.0 + GT).contains(&p.z) {
-        d
-    } else {
-        f64::INFINITY
-    }
 }
 
 #[test]

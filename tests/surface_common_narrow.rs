@@ -13,7 +13,8 @@ use std::sync::Arc;
 
 mod surface_support;
 use surface_support::{
-    check_loops, check_loops_reaching as check, check_order, summary, u_profile, M1, M2, R,
+    check_loops, check_loops_reaching as check, check_order, off_strip as off_profile, summary,
+    u_profile, M1, M2, R,
 };
 
 const GT: f64 = 1e-9;
@@ -143,22 +144,6 @@ fn wide_and_narrow(wn: f64, lift: f64, m: usize, z: f64) -> Vec<DVec3> {
     }
     pts.push(corners[6]);
     pts
-}
-
-/// The distance from `p` (in the strip's z range) to the polyline `profile` in x and y.
-fn off_profile(p: DVec3, profile: &[DVec3]) -> f64 {
-    if !(-GT..=3.0 + GT).contains(&p.z) {
-        return f64::INFINITY;
-    }
-    profile
-        .windows(2)
-        .map(|s| {
-            let (a, b) = (s[0], s[1]);
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-            (p.x - a.x - t * dx).hypot(p.y - a.y - t * dy)
-        })
-        .fold(f64::INFINITY, f64::min)
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! a one-line summary of a result for assertion messages, `lispcad eval` of one expression, and
 //! the check that two surfaces'
 //! common region comes back as the expected closed loops, the same bits on every run, and the
-//! narrow-flat profile of the common-region tests.
+//! narrow-flat profile of the common-region tests, with the distance to a strip ruled on one.
 #![allow(dead_code)] // each test file uses its own part of this module
 
 use lispcad::geom::curve::Curve;
@@ -232,4 +232,21 @@ pub fn assert_same_bits(name: &str, again: &[Polyline3], first: &[Polyline3]) {
             .all(|(c, e)| c.points == e.points && c.closed == e.closed),
         "{name}: a second run differs"
     );
+}
+
+/// The distance from `p` to the strip ruled between `profile` (in x and y) at z = 0 and z = 3:
+/// in plan to the polyline, infinite beyond those heights by more than GEOMTOL.
+pub fn off_strip(p: DVec3, profile: &[DVec3]) -> f64 {
+    if !(-1e-9..=3.0 + 1e-9).contains(&p.z) {
+        return f64::INFINITY;
+    }
+    profile
+        .windows(2)
+        .map(|s| {
+            let (a, b) = (s[0], s[1]);
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
+            let t = (((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+            (p.x - a.x - t * dx).hypot(p.y - a.y - t * dy)
+        })
+        .fold(f64::INFINITY, f64::min)
 }
