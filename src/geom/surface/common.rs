@@ -369,48 +369,6 @@ impl Tracer<'_, '_> {
             .collect()
     }
 
-    /// The nodes in the region (as now classified) whose connected part (across grid lines and
-    /// seams) holds no node of `first`.
-    fn new_parts(&self, first: &[bool]) -> Vec<bool> {
-        let [nu, nv] = self.cells();
-        let n = self.nodes.len();
-        let mut parent: Vec<usize> = (0..n).collect();
-        fn root(p: &mut [usize], mut x: usize) -> usize {
-            while p[x] != x {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            x
-        }
-        let join = |p: &mut Vec<usize>, a: usize, b: usize| {
-            let (ra, rb) = (root(p, a), root(p, b));
-            p[ra] = rb;
-        };
-        for j in 0..=nv {
-            for i in 0..=nu {
-                let at = j * (nu + 1) + i;
-                if !self.nodes[at] {
-                    continue;
-                }
-                for b in [self.idx(i, j), at + 1, at + nu + 1] {
-                    let beside = b == at + 1 && i == nu || b == at + nu + 1 && j == nv;
-                    if !beside && b != at && self.nodes[b] {
-                        join(&mut parent, at, b);
-                    }
-                }
-            }
-        }
-        let mut old = vec![false; n];
-        // The same grid in both passes: `first` has a flag per node.
-        for x in (0..n).filter(|&x| first[x] && self.nodes[x]) {
-            let r = root(&mut parent, x);
-            old[r] = true;
-        }
-        (0..n)
-            .map(|x| self.nodes[x] && !old[root(&mut parent, x)])
-            .collect()
-    }
-
     fn classify(&mut self) {
         let [nu, nv] = self.cells();
         let mut nodes = vec![false; (nu + 1) * (nv + 1)];
