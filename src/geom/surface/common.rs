@@ -222,22 +222,28 @@ fn trace(
         Some(l) => l,
         None => tr.refine_narrow(seeds)?,
     };
-    tr.tol = (least + 0.5 * tol).min(within);
+    // The edge lies where the gap rises half the tolerance above the region's level.
+    let edge_at = |least: f64| (least + 0.5 * tol).min(within);
+    tr.tol = edge_at(least);
     tr.classify();
-    if level.is_some() && !seeds.is_empty() && !tr.nodes.contains(&true) {
+    if level.is_some() {
+        // Regions narrower than the grid's cells: beside those its nodes see, or from the
+        // samples that met `t` when the nodes see none (none there: no region).
         tr.tol = within;
-        let (l, m) = tr.refine_narrow(seeds)?;
-        (least, most) = (least.min(l), most.max(m));
-        tr.tol = (least + 0.5 * tol).min(within);
-        tr.classify();
-    } else if level.is_some() && tr.nodes.contains(&true) {
-        tr.tol = within;
-        if let Some((l, m)) = tr.refine_beside() {
+        let narrow = if tr.nodes.contains(&true) {
+            tr.refine_beside()
+        } else if seeds.is_empty() {
+            None
+        } else {
+            Some(tr.refine_narrow(seeds)?)
+        };
+        if let Some((l, m)) = narrow {
             (least, most) = (least.min(l), most.max(m));
-            tr.tol = (least + 0.5 * tol).min(within);
+        }
+        tr.tol = edge_at(least);
+        if narrow.is_some() {
             tr.classify();
         }
-        tr.tol = (least + 0.5 * tol).min(within);
     }
     let segs = tr.segments();
     let first = tr.nodes.clone();
