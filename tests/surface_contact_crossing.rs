@@ -54,10 +54,12 @@ fn root(d0: f64, d1: f64, x: f64) -> f64 {
 
 /// On [`sheet_between`]`(d0, d1)`, with d = d(x) at each point: the contact (every point
 /// within d/4 of y = 0, where the sheet is parallel to the plane) and the crossing (within d/4
-/// of y = d), or within 1e-3 of either where d is small — where the gap across is about y³, a
-/// point within 1e-9 of both surfaces can be ∛1e-9 = 1e-3 off: open, from x = 0 to x = 4 to
-/// 1e-9, lengths 4 and √(16 + (d1 − d0)²) to 1e-6, every point within 1e-9 of the plane and of
-/// the sheet.
+/// of y = d), or within 1e-9 of either where d is smaller than that (near a branch point, where
+/// the gap across is about y³, a point within 1e-9 of both surfaces could be ∛1e-9 = 1e-3 off;
+/// the branch point is solved there): open, from x = 0 to x = 4 to 1e-9, lengths 4 and
+/// √(16 + (d1 − d0)²) to 1e-6, every point within 1e-9 of the plane and of the sheet. Where d
+/// passes through zero (inside or at an end), both curves have a point within 2e-9 of where it
+/// does on y = 0: the branch point, where they meet.
 fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     assert_eq!(r.len(), 2, "{name}: {}", summary(r));
     let d = |x: f64| root(d0, d1, x);
@@ -65,13 +67,27 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     let on_line = |c: &Polyline3, k: f64| {
         c.points
             .iter()
-            .all(|p| (p.y - k * d(p.x)).abs() <= (0.25 * d(p.x).abs()).max(1e-3))
+            .all(|p| (p.y - k * d(p.x)).abs() <= (0.25 * d(p.x).abs()).max(1e-9))
     };
     let contact = r.iter().find(|c| on_line(c, 0.0));
     let crossing = r.iter().find(|c| on_line(c, 1.0));
     let (Some(contact), Some(crossing)) = (contact, crossing) else {
         panic!("{name}: {}", summary(r));
     };
+    if d0 * d1 <= 0.0 {
+        let branch = DVec3::new(-d0 * 4.0 / (d1 - d0), 0.0, 0.0);
+        for c in [contact, crossing] {
+            let off = c
+                .points
+                .iter()
+                .map(|p| p.distance(branch))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                off <= 2e-9,
+                "{name}: {off:e} from the branch point {branch}"
+            );
+        }
+    }
     let slant = (16.0 + (d1 - d0) * (d1 - d0)).sqrt();
     for (c, len) in [(contact, 4.0), (crossing, slant)] {
         assert!(!c.closed, "{name}: {}", summary(r));

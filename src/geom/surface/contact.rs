@@ -266,6 +266,7 @@ fn regroup(
     };
     let found = crossings.beside(cut, &steps, &kept);
     kept.extend(found);
+    let mut kept = branch::through_branch_points(a, gap, kept, &mut traced, near, (tol, chord_tol));
     kept.extend(traced);
     kept
 }
