@@ -173,6 +173,29 @@ fn assert_no_region(name: &str, r: &[Polyline3], off: [&dyn Fn(DVec3) -> f64; 2]
     }
 }
 
+/// The tangent contact of arcs of radius R whose lowest point lies at x = `x0`, along z from 0
+/// to 3: one open curve, its ends at z = 0 and z = 3, its length 3 to 1e-6, and every point
+/// within the band where the arcs rise at most `rise` above their lowest point (R − √(R² − s²)
+/// at s from x0). SPEC §4: a tangent line comes back as a curve, and surfaces nearer than the
+/// tolerance meet (a contact 0.6 × GEOMTOL off came back as one lone point).
+fn assert_contact_line(name: &str, c: &Polyline3, x0: f64, rise: f64) {
+    assert!(!c.closed, "{name}: {}", summary(std::slice::from_ref(c)));
+    let n = c.points.len();
+    assert!(n >= 2, "{name}: {}", summary(std::slice::from_ref(c)));
+    let z = [c.points[0].z, c.points[n - 1].z];
+    let ends = (z[0].min(z[1]).abs() <= GT) && ((z[0].max(z[1]) - 3.0).abs() <= GT);
+    assert!(ends, "{name}: ends at z {z:?}");
+    assert!(
+        (c.length() - 3.0).abs() <= 1e-6,
+        "{name}: length {}",
+        c.length()
+    );
+    let band = (R * R - (R - rise).powi(2)).sqrt();
+    for p in &c.points {
+        assert!((p.x - x0).abs() <= band, "{name}: {p} off the contact");
+    }
+}
+
 #[test]
 fn a_tangent_contact_is_no_region_whatever_its_least_gap() {
     // The gap rises from its least (0, 0.3 or 0.9 × GEOMTOL) quadratically across the
@@ -192,6 +215,12 @@ fn a_tangent_contact_is_no_region_whatever_its_least_gap() {
             let name = format!("arcs at level {level}, {order}");
             let on_plane = |p: DVec3| (p.y - level * GT).abs();
             assert_no_region(&name, &r, [&on_arcs, &on_plane]);
+            // The plane crosses the arcs where they rise to it, within the tolerance of
+            // each other all the way: one contact line (the contact tracer tells a crossing
+            // from a contact only where the gap between them passes the tolerance), within
+            // the band where the arcs lie within the tolerance of the plane.
+            assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
+            assert_contact_line(&name, &r[0], 0.0, (1.0 + level) * GT);
         }
     }
     // Cylinders of radius 1 about the line y = 0, z = 1 (x from 0 to 4), on planes z = −level.
@@ -336,7 +365,8 @@ const XC: f64 = 4.0;
 fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
     // The flat coincides with the plane (the regions' level 0); the arcs touch it 0.6 × GEOMTOL
     // off, a gap between the level's threshold and the tolerance, whose band a second pass at
-    // the whole tolerance would classify as well: still one loop, round the flat.
+    // the whole tolerance would classify as well: still one loop, round the flat, and the
+    // contact as its line along z.
     let lift = 0.6 * GT;
     let s = Surface::ruled(flat_and_arcs(lift, 0.0), flat_and_arcs(lift, 3.0));
     let on_profile = |p: DVec3| {
@@ -370,6 +400,9 @@ fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
         }
         let area = area_xz(&loops[0].points);
         assert!((area - 3.0).abs() <= 8.0 * slack, "{name}: area {area}");
+        let open: Vec<&Polyline3> = r.iter().filter(|c| !c.closed).collect();
+        assert_eq!(open.len(), 1, "{name}: {}", summary(&r));
+        assert_contact_line(&name, open[0], XC, GT - lift);
         for p in r.iter().flat_map(|c| &c.points) {
             assert!(p.y.abs() <= GT, "{name}: {p} off the plane");
             assert!(on_profile(*p) <= GT, "{name}: {p} off the strip");

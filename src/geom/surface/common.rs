@@ -31,7 +31,7 @@ mod seed;
 mod target;
 mod walk;
 
-pub(crate) use outside::{outside_common, outside_plane_region};
+pub(crate) use outside::{flat_on_plane, outside_common, outside_plane_region};
 use target::{on_samples, sample_count, Target};
 
 use super::hits::point_in_polygon;

@@ -190,7 +190,17 @@ fn walk(
     tol: f64,
 ) -> (Vec<DVec2>, bool) {
     let h = |uv: DVec2| gap(uv).signed;
-    let p_start = gap(start).point;
+    let g_start = gap(start);
+    let p_start = g_start.point;
+    // Where the surfaces part: half way from the contact's own gap to the tolerance (half the
+    // tolerance for surfaces that touch), so the end is found within it, and a contact held a
+    // fraction of the tolerance apart (0.6 of it: they still meet) is followed all the same.
+    let level = if g_start.dist >= 0.0 {
+        g_start.dist.min(tol)
+    } else {
+        0.0
+    };
+    let parted = 0.5 * (tol + level);
     let (mut uv, mut t) = (start, dir.normalize());
     let mut p_prev = p_start;
     let mut nodes: Vec<DVec2> = Vec::new();
@@ -222,9 +232,8 @@ fn walk(
             }
         }
         let ahead = uv + t * step;
-        // Half the tolerance, so the end, where the surfaces part, is found within it.
         let on = |g: &GapAt, moved: DVec2| {
-            g.dist <= 0.5 * tol && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step
+            g.dist <= parted && moved.dot(t) > 0.0 && moved.length() <= 2.0 * step
         };
         // Once a bisection for the end has made the step shorter than `short`, the step straight
         // along the tangent is on the contact to its curvature times the step squared (about
