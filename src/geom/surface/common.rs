@@ -722,7 +722,9 @@ impl Tracer<'_, '_> {
         } else {
             self.across(mid, d)
         };
-        let Some(m) = m else { return };
+        let Some(m) = m.or_else(|| self.corner_between(a.uv, b.uv)) else {
+            return;
+        };
         let pm = self.eval(m);
         let chord = pb - pa;
         let off = (pm - pa).cross(chord).length() / chord.length();
@@ -736,6 +738,24 @@ impl Tracer<'_, '_> {
             out.push(pm);
             self.densify(mp, b, depth + 1, out);
         }
+    }
+
+    /// Where the chord from `a` to `b` found no boundary point across it, the corner ahead of
+    /// an end lying on the target's extent edge, when there is one (an acute corner of the
+    /// region at that edge, between grid lines: the loop's points on the region's other edge
+    /// close in on it but the chords from the extent edge's last crossing never reach it).
+    fn corner_between(&self, a: DVec2, b: DVec2) -> Option<DVec2> {
+        let d = self.delta(a, b);
+        let len = d.length();
+        if len == 0.0 {
+            return None;
+        }
+        let dir = d / len;
+        let c = self
+            .corner_ahead(a, -dir)
+            .or_else(|| self.corner_ahead(b, dir))?;
+        // Legs of a corner of 30° and more, seen from the chord.
+        (self.delta(a, c).length() + self.delta(c, b).length() <= 4.0 * len).then_some(c)
     }
 
     /// The boundary point across the chord `mid ± d⊥`: the region lies left of the chord's
