@@ -65,9 +65,8 @@ impl Band {
     }
 }
 
-/// Both orders of the intersection of the square and `other`: [`check_loop`] of each, to
-/// `slack[order]`.
-fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
+/// Both orders of the intersection of the square and `other`: [`check_loop`] of each.
+fn check_both(other: &Surface, band: &Band) {
     let sq = unit_square();
     let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
     for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
@@ -76,7 +75,7 @@ fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
         } else {
             "other, square"
         };
-        check_loop(name, &|| meet(x, y), band, (slack[order], 0.05));
+        check_loop(name, &|| meet(x, y), band, 0.05);
     }
 }
 
@@ -86,19 +85,14 @@ fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
 /// points only where they cross the grid's lines (an eighth of the length apart along z).
 fn check_section(other: &Surface, band: &Band) {
     let cut = || surface_section_tol(other, DVec3::ZERO, DVec3::Y, 1e-6, 1e-9).unwrap();
-    check_loop("section", &cut, band, (GT, 0.2));
+    check_loop("section", &cut, band, 0.2);
 }
 
 /// One closed loop from `run`, every point on the plane y = 0 and on the profile surface
-/// within GEOMTOL, within `slack` of the band's outline, every side reached (within `reach`)
-/// at both ends and in the middle, the length the outline's (to 1e-6, or 1e-3 where the slack
-/// is looser), and two more runs giving the same bits.
-fn check_loop(
-    name: &str,
-    run: &dyn Fn() -> Vec<Polyline3>,
-    band: &Band,
-    (slack, reach): (f64, f64),
-) {
+/// within GEOMTOL, within GEOMTOL of the band's outline, every side reached (within `reach`)
+/// at both ends and in the middle, the length the outline's to 1e-6, and two more runs giving
+/// the same bits.
+fn check_loop(name: &str, run: &dyn Fn() -> Vec<Polyline3>, band: &Band, reach: f64) {
     let q = &band.outline;
     let r = run();
     assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
@@ -110,7 +104,7 @@ fn check_loop(
             "{name}: {p} off the other"
         );
         assert!(
-            to_polygon(*p, q) <= slack,
+            to_polygon(*p, q) <= GT,
             "{name}: {p} off the band's outline"
         );
     }
@@ -118,19 +112,16 @@ fn check_loop(
         let (a, b) = (q[i], q[(i + 1) % 4]);
         for f in [0.02, 0.5, 0.98] {
             let x = a.lerp(b, f);
-            let near = |p: &&DVec3| p.distance(x) <= reach && to_segment(**p, a, b) <= slack;
+            let near = |p: &&DVec3| p.distance(x) <= reach && to_segment(**p, a, b) <= GT;
             assert!(
                 r[0].points.iter().any(|p| near(&p)),
                 "{name}: side {i} at {f}"
             );
         }
     }
-    // Where the corner defect shows, the points off the outline zigzag along the long
-    // sides, lengthening the loop by up to a thousandth.
     let (length, want) = (r[0].length(), perimeter(q));
-    let within = if slack > GT { 1e-3 } else { 1e-6 } * want;
     assert!(
-        (length - want).abs() <= within,
+        (length - want).abs() <= 1e-6 * want,
         "{name}: length {length} vs {want}"
     );
     for _ in 0..2 {
@@ -156,7 +147,7 @@ fn a_narrow_flat_running_diagonally_across_the_unit_square() {
         ],
         flat: |z| (C0 + z, C1 + z),
     };
-    check_both(&strip, &band, [GT, GT]);
+    check_both(&strip, &band);
     // The section by y = 0: the whole flat, from z = -1.5 to 2.5.
     let whole = Band {
         outline: [
@@ -190,7 +181,7 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
         ],
         flat: |z| (C0, C0 + w(z)),
     };
-    check_both(&wedge, &band, [GT, GT]);
+    check_both(&wedge, &band);
     // The section by y = 0: the whole flat, from z = -0.2 to 1.2.
     let whole = Band {
         outline: [

@@ -174,6 +174,9 @@ struct Tracer<'a, 'b> {
     periodic: [bool; 2],
     target: &'b Target<'b>,
     tol: f64,
+    /// The region's gap and its rounding: a gap no higher is the region's own (see
+    /// [`edge`]: only above it do the surfaces part).
+    flat: f64,
     chord_tol: f64,
     /// The grid's lines in u and in v, from 0 to 1: N cells each, with finer lines added
     /// around a narrow region ([`seed`]).
@@ -218,6 +221,7 @@ fn trace(
     let size = tr.patch.scale() + tr.eval(DVec2::splat(0.5)).length();
     let within = (tol - ROUNDING * size).max(0.5 * tol);
     tr.tol = within;
+    tr.flat = ROUNDING * size;
     let (mut least, mut most) = match level {
         Some(l) => l,
         None => tr.refine_narrow(seeds)?,
@@ -225,6 +229,7 @@ fn trace(
     // The edge lies where the gap rises half the tolerance above the region's level.
     let edge_at = |least: f64| (least + 0.5 * tol).min(within);
     tr.tol = edge_at(least);
+    tr.flat = least + ROUNDING * size;
     tr.classify();
     if level.is_some() {
         // Regions narrower than the grid's cells: beside those its nodes see, or from the
@@ -241,6 +246,7 @@ fn trace(
             (least, most) = (least.min(l), most.max(m));
         }
         tr.tol = edge_at(least);
+        tr.flat = least + ROUNDING * size;
         if narrow.is_some() {
             tr.classify();
         }
@@ -274,6 +280,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
             periodic,
             target,
             tol,
+            flat: 0.0,
             chord_tol,
             lines: [uniform.clone(), uniform],
             nodes: Vec::new(),
