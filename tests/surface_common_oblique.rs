@@ -9,11 +9,10 @@
 //! Both orders are checked to the same closed forms. In the order (square, other) the tracer
 //! works in the square's domain, where the band is oblique or narrowing; in the other, in the
 //! profile surface's own domain, where the band runs along a parameter line at a steady width.
-//! Where the square's edge cuts the band, boundary points near the corners stay up to
-//! √(2·(tol/2)·R) = 4.5e-5 off the true edge (the edge extrapolation steps off the square
-//! there; densifying from such a point keeps finding points beyond it), so the cases showing
-//! it are checked to [`CORNER`] rather than GEOMTOL: a defect of the edge location near
-//! corners, not of the seed search, left open. Tightening them is setting [`CORNER`] to `GT`.
+//! Where the square's edge cuts the band (in the order (other, square), the target's extent
+//! ending across the tracer's domain), the corners are found along that extent edge, so both
+//! orders are checked to GEOMTOL (before: points up to √(2·(tol/2)·R) = 4.5e-5 off near the
+//! corners, and with a first fix the loop 1.9e-3 short, cutting the acute corner).
 
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_tol, surface_section_tol, Surface};
@@ -23,11 +22,6 @@ mod surface_support;
 use surface_support::{summary, u_profile, unit_square, R};
 
 const GT: f64 = 1e-9;
-
-/// How far off the band's outline a boundary point may lie where the corner defect shows (see
-/// the module's note): the tracer's threshold where the surfaces part tangentially,
-/// √(2·(tol/2)·R) = 4.5e-5 for tol = 1e-9 and R = 2.
-const CORNER: f64 = 5e-5;
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
     DVec3::new(x, y, z)
@@ -71,9 +65,8 @@ impl Band {
     }
 }
 
-/// Both orders of the intersection of the square and `other`: [`check_loop`] of each, to
-/// `slack[order]`.
-fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
+/// Both orders of the intersection of the square and `other`: [`check_loop`] of each.
+fn check_both(other: &Surface, band: &Band) {
     let sq = unit_square();
     let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
     for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
@@ -82,7 +75,7 @@ fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
         } else {
             "other, square"
         };
-        check_loop(name, &|| meet(x, y), band, (slack[order], 0.05));
+        check_loop(name, &|| meet(x, y), band, 0.05);
     }
 }
 
@@ -92,19 +85,14 @@ fn check_both(other: &Surface, band: &Band, slack: [f64; 2]) {
 /// points only where they cross the grid's lines (an eighth of the length apart along z).
 fn check_section(other: &Surface, band: &Band) {
     let cut = || surface_section_tol(other, DVec3::ZERO, DVec3::Y, 1e-6, 1e-9).unwrap();
-    check_loop("section", &cut, band, (GT, 0.2));
+    check_loop("section", &cut, band, 0.2);
 }
 
 /// One closed loop from `run`, every point on the plane y = 0 and on the profile surface
-/// within GEOMTOL, within `slack` of the band's outline, every side reached (within `reach`)
-/// at both ends and in the middle, the length the outline's (to 1e-6, or 1e-3 where the slack
-/// is looser), and two more runs giving the same bits.
-fn check_loop(
-    name: &str,
-    run: &dyn Fn() -> Vec<Polyline3>,
-    band: &Band,
-    (slack, reach): (f64, f64),
-) {
+/// within GEOMTOL, within GEOMTOL of the band's outline, every side reached (within `reach`)
+/// at both ends and in the middle, the length the outline's to 1e-6, and two more runs giving
+/// the same bits.
+fn check_loop(name: &str, run: &dyn Fn() -> Vec<Polyline3>, band: &Band, reach: f64) {
     let q = &band.outline;
     let r = run();
     assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
@@ -116,7 +104,7 @@ fn check_loop(
             "{name}: {p} off the other"
         );
         assert!(
-            to_polygon(*p, q) <= slack,
+            to_polygon(*p, q) <= GT,
             "{name}: {p} off the band's outline"
         );
     }
@@ -124,19 +112,16 @@ fn check_loop(
         let (a, b) = (q[i], q[(i + 1) % 4]);
         for f in [0.02, 0.5, 0.98] {
             let x = a.lerp(b, f);
-            let near = |p: &&DVec3| p.distance(x) <= reach && to_segment(**p, a, b) <= slack;
+            let near = |p: &&DVec3| p.distance(x) <= reach && to_segment(**p, a, b) <= GT;
             assert!(
                 r[0].points.iter().any(|p| near(&p)),
                 "{name}: side {i} at {f}"
             );
         }
     }
-    // Where the corner defect shows, the points off the outline zigzag along the long
-    // sides, lengthening the loop by up to a thousandth.
     let (length, want) = (r[0].length(), perimeter(q));
-    let within = if slack > GT { 1e-3 } else { 1e-6 } * want;
     assert!(
-        (length - want).abs() <= within,
+        (length - want).abs() <= 1e-6 * want,
         "{name}: length {length} vs {want}"
     );
     for _ in 0..2 {
@@ -162,7 +147,7 @@ fn a_narrow_flat_running_diagonally_across_the_unit_square() {
         ],
         flat: |z| (C0 + z, C1 + z),
     };
-    check_both(&strip, &band, [CORNER, CORNER]);
+    check_both(&strip, &band);
     // The section by y = 0: the whole flat, from z = -1.5 to 2.5.
     let whole = Band {
         outline: [
@@ -196,7 +181,7 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
         ],
         flat: |z| (C0, C0 + w(z)),
     };
-    check_both(&wedge, &band, [GT, CORNER]);
+    check_both(&wedge, &band);
     // The section by y = 0: the whole flat, from z = -0.2 to 1.2.
     let whole = Band {
         outline: [

@@ -174,6 +174,9 @@ struct Tracer<'a, 'b> {
     periodic: [bool; 2],
     target: &'b Target<'b>,
     tol: f64,
+    /// The region's gap and its rounding: a gap no higher is the region's own (see
+    /// [`edge`]: only above it do the surfaces part).
+    flat: f64,
     chord_tol: f64,
     /// The grid's lines in u and in v, from 0 to 1: N cells each, with finer lines added
     /// around a narrow region ([`seed`]).
@@ -218,6 +221,7 @@ fn trace(
     let size = tr.patch.scale() + tr.eval(DVec2::splat(0.5)).length();
     let within = (tol - ROUNDING * size).max(0.5 * tol);
     tr.tol = within;
+    tr.flat = ROUNDING * size;
     let (mut least, mut most) = match level {
         Some(l) => l,
         None => tr.refine_narrow(seeds)?,
@@ -225,6 +229,7 @@ fn trace(
     // The edge lies where the gap rises half the tolerance above the region's level.
     let edge_at = |least: f64| (least + 0.5 * tol).min(within);
     tr.tol = edge_at(least);
+    tr.flat = least + ROUNDING * size;
     tr.classify();
     if level.is_some() {
         // Regions narrower than the grid's cells: beside those its nodes see, or from the
@@ -241,6 +246,7 @@ fn trace(
             (least, most) = (least.min(l), most.max(m));
         }
         tr.tol = edge_at(least);
+        tr.flat = least + ROUNDING * size;
         if narrow.is_some() {
             tr.classify();
         }
@@ -274,6 +280,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
             periodic,
             target,
             tol,
+            flat: 0.0,
             chord_tol,
             lines: [uniform.clone(), uniform],
             nodes: Vec::new(),
@@ -722,7 +729,9 @@ impl Tracer<'_, '_> {
         } else {
             self.across(mid, d)
         };
-        let Some(m) = m else { return };
+        let Some(m) = m.or_else(|| self.corner_between(a.uv, b.uv)) else {
+            return;
+        };
         let pm = self.eval(m);
         let chord = pb - pa;
         let off = (pm - pa).cross(chord).length() / chord.length();
@@ -736,6 +745,24 @@ impl Tracer<'_, '_> {
             out.push(pm);
             self.densify(mp, b, depth + 1, out);
         }
+    }
+
+    /// Where the chord from `a` to `b` found no boundary point across it, the corner ahead of
+    /// an end lying on the target's extent edge, when there is one (an acute corner of the
+    /// region at that edge, between grid lines: the loop's points on the region's other edge
+    /// close in on it but the chords from the extent edge's last crossing never reach it).
+    fn corner_between(&self, a: DVec2, b: DVec2) -> Option<DVec2> {
+        let d = self.delta(a, b);
+        let len = d.length();
+        if len == 0.0 {
+            return None;
+        }
+        let dir = d / len;
+        let c = self
+            .corner_ahead(a, -dir)
+            .or_else(|| self.corner_ahead(b, dir))?;
+        // Legs of a corner of 30° and more, seen from the chord.
+        (self.delta(a, c).length() + self.delta(c, b).length() <= 4.0 * len).then_some(c)
     }
 
     /// The boundary point across the chord `mid ± d⊥`: the region lies left of the chord's
