@@ -381,6 +381,22 @@ pub(crate) fn through_branch_points(
             }
         }
     }
+    for c in &mut pieces {
+        let Some(b) = edge_meeting(a, gap, c, &contacts_of(contacts), near, tol) else {
+            continue;
+        };
+        let n = c.points.len();
+        let segs = if b.1.distance(c.points[0]) < b.1.distance(c.points[n - 1]) {
+            0..1
+        } else {
+            n - 2..n - 1
+        };
+        let mid_of = |x: &Node, y: &Node| between(a, gap, x, y, tol);
+        if let Some(q) = splice_at(a, c, segs, b, near, &mid_of, (tol, chord_tol)) {
+            c.points = q;
+            found.push(b);
+        }
+    }
     // Along the contact the plain midpoint in parameters: chords this short are on it to their
     // curvature times their square, and settled across near a branch point they would zigzag.
     let on_contact = |x: &Node, y: &Node| {
@@ -411,6 +427,91 @@ pub(crate) fn through_branch_points(
         }
     }
     pieces
+}
+
+/// The `contacts` that are lines (two points or more).
+fn contacts_of(contacts: &[Polyline3]) -> Vec<&Polyline3> {
+    contacts.iter().filter(|k| k.points.len() >= 2).collect()
+}
+
+/// The branch point on a bounded edge of `a` where an end of the open crossing `c`, on that
+/// edge, meets one of the `contacts` (within `near`): the gap along the edge has a triple root
+/// there, so its second derivative along the edge a simple one, solved by Newton (differences
+/// of fourth order extrapolated to sixth, on stencils along the edge). The ends, found where the
+/// gap across the contact is within the tolerance, are known only to about ∛tol there.
+fn edge_meeting(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    c: &Polyline3,
+    contacts: &[&Polyline3],
+    near: f64,
+    tol: f64,
+) -> Option<Node> {
+    let n = c.points.len();
+    if c.closed || n < 2 || contacts.is_empty() {
+        return None;
+    }
+    [c.points[0], c.points[n - 1]].into_iter().find_map(|p| {
+        if to_contacts(p, contacts) > near {
+            return None;
+        }
+        let uv = a.project(p, None);
+        let k = (0..2).find(|&k| !a.periodic()[k] && (uv[k] <= 1e-9 || uv[k] >= 1.0 - 1e-9))?;
+        let b = edge_branch_point(a, gap, uv, k, tol)?;
+        (b.1.distance(p) <= 16.0 * near && to_contacts(b.1, contacts) <= near).then_some(b)
+    })
+}
+
+/// The root of the gap's second derivative along the edge of `a` where parameter `k` is fixed
+/// (at `uv0`'s), from `uv0`, where the gap there is within `tol`.
+fn edge_branch_point(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    uv0: DVec2,
+    k: usize,
+    tol: f64,
+) -> Option<Node> {
+    let j = 1 - k;
+    let (su, sv) = a.derivs(uv0);
+    let speed = if j == 0 { su } else { sv }.length();
+    if !(speed > 0.0 && speed.is_finite()) {
+        return None;
+    }
+    let h = STEP / speed;
+    let at = |t: f64| {
+        let mut uv = uv0;
+        uv[j] = t;
+        uv
+    };
+    let f = |t: f64| gap(at(t)).signed;
+    let second = |t: f64, s: f64| {
+        let (x, e) = (s * h, |m: f64| f(t + m * s * h));
+        (-e(2.0) + 16.0 * e(1.0) - 30.0 * f(t) + 16.0 * e(-1.0) - e(-2.0)) / (12.0 * x * x)
+    };
+    let periodic = a.periodic()[j];
+    let mut t = uv0[j];
+    for _ in 0..8 {
+        if !periodic && !(5.0 * h..=1.0 - 5.0 * h).contains(&t) {
+            return None;
+        }
+        let g2 = (16.0 * second(t, 1.0) - second(t, 2.0)) / 15.0;
+        let g3 = (second(t + h, 1.0) - second(t - h, 1.0)) / (2.0 * h);
+        if !(g3.abs() > 0.0 && g3.is_finite() && g2.is_finite()) {
+            return None;
+        }
+        let step = g2 / g3;
+        t -= step;
+        if (t - uv0[j]).abs() > 4.0 * h {
+            return None;
+        }
+        if step.abs() <= 1e-6 * h {
+            let mut uv = at(t);
+            a.normalise(&mut uv);
+            let g = gap(uv);
+            return (g.dist <= tol).then_some((uv, g.point));
+        }
+    }
+    None
 }
 
 /// The distance from `p` to the nearest segment of `contacts`.
