@@ -20,7 +20,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_same_bits, section_and_both_orders, summary};
+use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
 
 /// The product of two polynomials (coefficients from the constant term up).
 fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
@@ -162,14 +162,9 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
         assert!(!c.closed, "{name}: {}", summary(r));
         for p in &c.points {
             let (r, th) = polar(p);
-            let (w, dt) = (r - 2.0, d(th));
-            let z = k * w + w * w * (dt * (1.0 - w * w) - w);
-            let dz_dr = k + 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
-            let dz_dth = w * w * (1.0 - w * w) * (d1 - d0) / FRAC_PI_2 / r;
-            let cos = 1.0 / (1.0 + dz_dr * dz_dr + dz_dth * dz_dth).sqrt();
-            let off = (p.z - k * w).abs() / (1.0 + k * k).sqrt();
+            let [off, off_patch] = off_both(p, (d0, d1), k);
             assert!(off <= 1e-9, "{name}: {p} off the plane or cone");
-            assert!((p.z - z).abs() * cos <= 1e-9, "{name}: {p} off the patch");
+            assert!(off_patch <= 1e-9, "{name}: {p} off the patch");
             assert!((1.0..=3.0).contains(&r), "{name}: {p}");
             assert!((-1e-9..=FRAC_PI_2 + 1e-9).contains(&th), "{name}: {p}");
         }
@@ -186,6 +181,24 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
             summary(r)
         );
     }
+    // Densified within 1e-6 of curves on both surfaces: no chord cuts across anything.
+    let off = |p: DVec3| off_both(&p, (d0, d1), k).into_iter().fold(0.0, f64::max);
+    assert_chords_on(name, r, off, 1e-6 + 1e-9);
+}
+
+/// How far `p` is from the plane or cone z = k·w and from the patch (its height difference
+/// times the cosine of its slope), w = r − 2.
+fn off_both(p: &DVec3, (d0, d1): (f64, f64), k: f64) -> [f64; 2] {
+    let (r, th) = (p.x.hypot(p.y), p.y.atan2(p.x));
+    let (w, dt) = (r - 2.0, d0 + (d1 - d0) * th / FRAC_PI_2);
+    let z = k * w + w * w * (dt * (1.0 - w * w) - w);
+    let dz_dr = k + 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
+    let dz_dth = w * w * (1.0 - w * w) * (d1 - d0) / FRAC_PI_2 / r;
+    let cos = 1.0 / (1.0 + dz_dr * dz_dr + dz_dth * dz_dth).sqrt();
+    [
+        (p.z - k * w).abs() / (1.0 + k * k).sqrt(),
+        (p.z - z).abs() * cos,
+    ]
 }
 
 /// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the

@@ -15,7 +15,7 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_same_bits, section_and_both_orders, summary};
+use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
 
 /// The sheet for root `d`, the same at every x.
 fn sheet(d: f64) -> Surface {
@@ -108,6 +108,17 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
         );
         assert!((c.length() - len).abs() <= 1e-6, "{name}: {}", summary(r));
     }
+    // No chord cuts across anything: densified within 1e-6 of curves on both surfaces (the
+    // sheet's height difference times the cosine of its slope).
+    let off = |p: DVec3| {
+        let (zx, zy) = (
+            p.y * p.y * (d1 - d0) / 4.0,
+            2.0 * d(p.x) * p.y - 3.0 * p.y * p.y,
+        );
+        let cos = 1.0 / (1.0 + zx * zx + zy * zy).sqrt();
+        p.z.abs().max((p.z - f(p.x, p.y)).abs() * cos)
+    };
+    assert_chords_on(name, r, off, 1e-6 + 1e-9);
     // Tangent along the contact: the sheet's slope ∂z/∂y = 2dy − 3y² vanishes there.
     for p in &contact.points {
         assert!(

@@ -14,7 +14,7 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_same_bits, section_and_both_orders, summary};
+use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
 
 const K: f64 = 0.5;
 
@@ -122,6 +122,16 @@ fn arc_length(a: f64, b: f64) -> f64 {
     s * h / 3.0
 }
 
+/// How far `p` is from the farther of the plane and the patch (its height difference times the
+/// cosine of the patch's slope, to first order).
+fn off_both(p: DVec3) -> f64 {
+    let (x, y) = (p.x, p.y);
+    let z = y * y + y * bump(x);
+    let (zx, zy) = (y * slope(x), 2.0 * y + bump(x));
+    let cos = 1.0 / (1.0 + zx * zx + zy * zy).sqrt();
+    p.z.abs().max((p.z - z).abs() * cos)
+}
+
 /// Every point within TOL of the plane and of the patch (its height difference times the
 /// cosine of the patch's slope), inside the domain.
 fn on_both(name: &str, c: &Polyline3) {
@@ -199,17 +209,13 @@ fn check(name: &str, r: &[Polyline3]) {
 
 /// The lens and both contacts, in section and both orders with the plate z = 0 (a rectangle
 /// wider than the patch), at seeds 1e-2 and 1e-3, the curves densified within 1e-6; each run
-/// twice for the same bits. The lens's short-cut ends are mesh vertices on y = 0, (1.375, 0, 0)
-/// at seed 1e-2 and (1.15625, 0, 0) at 1e-3: the seeding meshes' loop crosses the tips where
-/// they are thinner than a facet, and `refine::assemble` keeps a chord whose midpoint does not
-/// refine between its ends (it falls onto the other side of the lens), so the closed seed gives
-/// a closed curve cut short rather than two sides run on into the contacts (read from the
-/// code, not instrumented).
+/// twice for the same bits. The seeding meshes' loop crosses the tips where the lens is thinner
+/// than a facet; refined, it kept a chord across each tip 0.15 long whose midpoint was 5.7e-3 off
+/// the patch (3.181 long at seed 1e-2, 3.765 at 1e-3), and the contact seeds beside the tips were
+/// taken for the lens's, so the contacts were lost or came back as a lone point. A closed lens,
+/// not two open sides: it bounds where the patch dips below the plane (y(y + C) < 0), and its
+/// sides meet within the tolerance at both tips; the contacts bound nothing.
 #[test]
-#[ignore = "open defect: the lens comes back short (3.181 at seed 1e-2, 3.765 at 1e-3, for \
-            4.277), closed by a chord 0.15 long across its tips; the section at seed 1e-2 and \
-            both orders at seed 1e-3 lose the contact 3 <= x <= 4, the latter returning a lone \
-            point (2.984375, 0, 0)"]
 fn a_closed_crossing_loop_running_into_contacts_comes_back_with_them() {
     let s = lens();
     let plate = Surface::plane(vec![
@@ -224,6 +230,8 @@ fn a_closed_crossing_loop_running_into_contacts_comes_back_with_them() {
             let name = format!("{name} seed {seed}");
             let r = run();
             check(&name, &r);
+            // Densified within 1e-6 of a curve on both: no chord cuts across a tip.
+            assert_chords_on(&name, &r, off_both, 1e-6 + TOL);
             assert_same_bits(&name, &run(), &r);
         }
     }

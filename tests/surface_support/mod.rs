@@ -250,3 +250,21 @@ pub fn off_strip(p: DVec3, profile: &[DVec3]) -> f64 {
         })
         .fold(f64::INFINITY, f64::min)
 }
+
+/// That the midpoint of every chord of `curves` (closing chords included) is within `within` of
+/// both surfaces, `off` giving its distance to the farther: a polyline densified within CHORDTOL
+/// of a curve on both surfaces is, and a chord cut across something the seeds missed is not.
+pub fn assert_chords_on(name: &str, curves: &[Polyline3], off: impl Fn(DVec3) -> f64, within: f64) {
+    for (i, c) in curves.iter().enumerate() {
+        let n = c.points.len();
+        let segs = if c.closed { n } else { n.saturating_sub(1) };
+        for k in 0..segs {
+            let (p, q) = (c.points[k], c.points[(k + 1) % n]);
+            let d = off(0.5 * (p + q));
+            assert!(
+                d <= within,
+                "{name}: curve {i} chord {k} {p}..{q}: midpoint {d:e} off"
+            );
+        }
+    }
+}

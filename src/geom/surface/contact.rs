@@ -17,6 +17,7 @@
 
 mod branch;
 mod line;
+mod tip;
 
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
@@ -103,6 +104,44 @@ pub(crate) fn tangent_contacts(
         }
     }
     out
+}
+
+/// The refined section `curve` of `a` by the plane through `p0` with unit normal `n`, with the
+/// chords left `loose` by its refinement that are off the surface carried across the tip of the
+/// lens each cuts (see [`tip`]); with the contacts traced from those tips.
+pub(crate) fn mend_section(
+    a: &Patch,
+    (p0, n): (DVec3, DVec3),
+    curve: Polyline3,
+    loose: &[[DVec3; 2]],
+    (tol, chord_tol): (f64, f64),
+) -> (Polyline3, Vec<Polyline3>) {
+    if loose.is_empty() {
+        return (curve, Vec::new());
+    }
+    let gap = |uv: DVec2| plane_gap(a, (p0, n), uv);
+    let off = |p: DVec3| {
+        let on = a.eval(a.project(p, None));
+        on.distance(p).max(n.dot(p - p0).abs())
+    };
+    tip::mend(a, &gap, &off, curve, loose, (tol, chord_tol))
+}
+
+/// [`mend_section`] for the refined intersection `curve` of `a` and `b`.
+pub(crate) fn mend_pair(
+    a: &Patch,
+    b: &Patch,
+    curve: Polyline3,
+    loose: &[[DVec3; 2]],
+    (tol, chord_tol): (f64, f64),
+) -> (Polyline3, Vec<Polyline3>) {
+    if loose.is_empty() {
+        return (curve, Vec::new());
+    }
+    let warm: Cell<Option<DVec2>> = Cell::new(None);
+    let gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
+    let off = |p: DVec3| super::refine::off_pair(a, b, p);
+    tip::mend(a, &gap, &off, curve, loose, (tol, chord_tol))
 }
 
 /// The gap from `a(uv)` to `b`: signed along b's normal at the nearest point (found from

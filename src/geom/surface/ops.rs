@@ -89,9 +89,19 @@ fn section_seeded(
         let seeds = section(&m, plane_point, plane_normal)?;
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
+        let plane = (plane_point, n);
+        // The contacts traced from the tips of lenses the seeds cut across (see `mend_section`).
+        let mut tips: Vec<Polyline3> = Vec::new();
         let curves: Vec<Polyline3> = seeds
             .iter()
-            .map(|c| super::refine::refine_section_curve(&patch, c, plane_point, n, geom_tol, tol))
+            .map(|c| {
+                let (r, loose) =
+                    super::refine::refine_section_loose(&patch, c, plane, geom_tol, tol);
+                let (r, t) =
+                    super::contact::mend_section(&patch, plane, r, &loose, (geom_tol, tol));
+                tips.extend(t);
+                r
+            })
             .filter(|c| !c.points.is_empty())
             .collect();
         let mut curves = super::contact::regroup_section(
@@ -100,6 +110,7 @@ fn section_seeded(
             curves,
             (seed_tol, geom_tol, tol),
         );
+        curves.extend(tips);
         if !contacts {
             return Ok(curves);
         }
@@ -413,10 +424,14 @@ fn through_meshes(
         chord_tol: ctol,
         seed_tol,
     };
+    // The contacts traced from the tips of lenses the seeds cut across (see `mend_pair`).
+    let mut tips: Vec<Polyline3> = Vec::new();
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
-            let mut r = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
+            let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
+            let (mut r, t) = super::contact::mend_pair(&pa, &pb, r, &loose, (gtol, ctol));
+            tips.extend(t);
             super::refine::close_gap(&pa, &pb, &mut r, gtol, ctol);
             r
         })
@@ -427,6 +442,7 @@ fn through_meshes(
         None => curves,
     };
     let mut curves = super::contact::regroup_pair(&pa, &pb, curves, (seed_tol, gtol, ctol));
+    curves.extend(tips);
     // A crossing ends on the region's loop where the surfaces coincide, so tangent there: the
     // contact traced from that end runs on along the loop (a fold crossing a rectangle along
     // its edge came back as the whole edge). Cut again.

@@ -268,47 +268,62 @@ pub(crate) fn assemble<N: Copy>(
     tol: f64,
     chord_tol: f64,
 ) -> Polyline3 {
-    let m = nodes.len();
-    let segs = if closed { m } else { m.saturating_sub(1) };
-    let mut out = Vec::with_capacity(m * 2);
-    for i in 0..m {
-        out.push(pos(&nodes[i]));
-        if i < segs {
-            densify(
-                nodes[i],
-                nodes[(i + 1) % m],
-                pos,
-                mid,
-                tol,
-                chord_tol,
-                0,
-                &mut out,
-            );
-        }
-    }
-    out.dedup_by(|x, y| x.distance(*y) <= tol);
-    Polyline3 {
-        points: out,
-        closed: closed && m >= 3,
-    }
+    assemble_loose(nodes, closed, pos, mid, tol, chord_tol).0
 }
 
-#[allow(clippy::too_many_arguments)]
-fn densify<N: Copy>(
-    n0: N,
-    n1: N,
+/// [`assemble`], with the chords left loose: those whose midpoint did not refine between their
+/// ends (None, or it fell beyond them), so nothing says they are within `chord_tol` of the
+/// curve. A seed curve that cuts across a part of the curve thinner than its cells (the tip of
+/// a lens) leaves such a chord; see `contact::mend_section`.
+pub(crate) fn assemble_loose<N: Copy>(
+    nodes: &[N],
+    closed: bool,
     pos: impl Fn(&N) -> DVec3 + Copy,
     mid: &impl Fn(&N, &N) -> Option<N>,
     tol: f64,
     chord_tol: f64,
+) -> (Polyline3, Vec<[DVec3; 2]>) {
+    let m = nodes.len();
+    let segs = if closed { m } else { m.saturating_sub(1) };
+    let mut out = Dense {
+        points: Vec::with_capacity(m * 2),
+        loose: Vec::new(),
+    };
+    for i in 0..m {
+        out.points.push(pos(&nodes[i]));
+        if i < segs {
+            let ends = (nodes[i], nodes[(i + 1) % m]);
+            densify(ends, pos, mid, (tol, chord_tol), 0, &mut out);
+        }
+    }
+    out.points.dedup_by(|x, y| x.distance(*y) <= tol);
+    let curve = Polyline3 {
+        points: out.points,
+        closed: closed && m >= 3,
+    };
+    (curve, out.loose)
+}
+
+/// The points of a curve being densified, and its loose chords (see [`assemble_loose`]).
+struct Dense {
+    points: Vec<DVec3>,
+    loose: Vec<[DVec3; 2]>,
+}
+
+fn densify<N: Copy>(
+    (n0, n1): (N, N),
+    pos: impl Fn(&N) -> DVec3 + Copy,
+    mid: &impl Fn(&N, &N) -> Option<N>,
+    (tol, chord_tol): (f64, f64),
     depth: u32,
-    out: &mut Vec<DVec3>,
+    out: &mut Dense,
 ) {
     let (p0, p1) = (pos(&n0), pos(&n1));
     if depth >= 16 || p0.distance(p1) <= 2.0 * tol {
         return;
     }
     let Some(m) = mid(&n0, &n1) else {
+        out.loose.push([p0, p1]);
         return;
     };
     let pm = pos(&m);
@@ -317,9 +332,11 @@ fn densify<N: Copy>(
     // A midpoint that wandered off between its ends (onto another branch) is not inserted.
     let along = (pm - p0).dot(chord) / chord.length_squared();
     if off > chord_tol && (0.0..=1.0).contains(&along) {
-        densify(n0, m, pos, mid, tol, chord_tol, depth + 1, out);
-        out.push(pm);
-        densify(m, n1, pos, mid, tol, chord_tol, depth + 1, out);
+        densify((n0, m), pos, mid, (tol, chord_tol), depth + 1, out);
+        out.points.push(pm);
+        densify((m, n1), pos, mid, (tol, chord_tol), depth + 1, out);
+    } else if off > chord_tol {
+        out.loose.push([p0, p1]);
     }
 }
 
@@ -336,15 +353,16 @@ fn pair_mid<'p>(
     }
 }
 
-/// One seeded polyline refined onto both surfaces and densified within `chord_tol`.
-/// Points that do not converge (a seed far from any true intersection) are dropped.
+/// One seeded polyline refined onto both surfaces and densified within `chord_tol`, with its
+/// loose chords (see [`assemble_loose`]). Points that do not converge (a seed far from any true
+/// intersection) are dropped.
 pub(crate) fn refine_pair_curve(
     a: &Patch,
     b: &Patch,
     seed: &Polyline3,
     tol: f64,
     chord_tol: f64,
-) -> Polyline3 {
+) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<Node> = Vec::with_capacity(seed.points.len());
     let mut prev: Option<[DVec2; 2]> = None;
     for &p in &seed.points {
@@ -358,7 +376,7 @@ pub(crate) fn refine_pair_curve(
             nodes.push(n);
         }
     }
-    assemble(
+    assemble_loose(
         &nodes,
         seed.closed,
         |n| n.point,
@@ -368,10 +386,17 @@ pub(crate) fn refine_pair_curve(
     )
 }
 
+/// How far `p` lies from the farther of `a` and `b`.
+pub(crate) fn off_pair(a: &Patch, b: &Patch, p: DVec3) -> f64 {
+    let (ua, ub) = (a.project(p, None), b.project(p, None));
+    a.eval(ua).distance(p).max(b.eval(ub).distance(p))
+}
+
 /// Closes an open refined curve whose ends are within a few of its own segment lengths and
 /// head for each other — the meshes lose the last pieces before a branch point, where the
 /// surfaces touch (two equal cylinders crossing) — when the gap refines onto both surfaces: the
-/// gap is densified like any other segment.
+/// gap is densified like any other segment, and not closed where a chord left loose there is off
+/// the surfaces (the ends are the two sides of something thinner than the seed's cells).
 pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord_tol: f64) {
     let n = c.points.len();
     if c.closed || n < 4 {
@@ -391,19 +416,24 @@ pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord
     if ne.residual > tol || ns.residual > tol {
         return;
     }
-    let mut extra = Vec::new();
+    let mut extra = Dense {
+        points: Vec::new(),
+        loose: Vec::new(),
+    };
     let pos = |n: &Node| n.point;
     densify(
-        ne,
-        ns,
+        (ne, ns),
         pos,
         &pair_mid(a, b, tol),
-        tol,
-        chord_tol,
+        (tol, chord_tol),
         0,
         &mut extra,
     );
-    c.points.extend(extra);
+    let off = |[p, q]: &[DVec3; 2]| off_pair(a, b, 0.5 * (p + q)) > chord_tol + tol;
+    if extra.loose.iter().any(off) {
+        return;
+    }
+    c.points.extend(extra.points);
     c.closed = true;
 }
 
@@ -468,6 +498,17 @@ pub(crate) fn refine_section_curve(
     tol: f64,
     chord_tol: f64,
 ) -> Polyline3 {
+    refine_section_loose(s, seed, (p0, n), tol, chord_tol).0
+}
+
+/// [`refine_section_curve`] with its loose chords (see [`assemble_loose`]).
+pub(crate) fn refine_section_loose(
+    s: &Patch,
+    seed: &Polyline3,
+    (p0, n): (DVec3, DVec3),
+    tol: f64,
+    chord_tol: f64,
+) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<(DVec2, DVec3)> = Vec::with_capacity(seed.points.len());
     let mut prev = None;
     for &p in &seed.points {
@@ -481,7 +522,7 @@ pub(crate) fn refine_section_curve(
         let (uv, r) = newton_plane(s, mid(s, a.0, b.0), p0, n, tol);
         (r <= tol).then(|| (uv, s.eval(uv)))
     };
-    assemble(&nodes, seed.closed, |x| x.1, &mid_of, tol, chord_tol)
+    assemble_loose(&nodes, seed.closed, |x| x.1, &mid_of, tol, chord_tol)
 }
 
 /// Carries a curve/surface hit onto the true surface and the true curve: Newton on
