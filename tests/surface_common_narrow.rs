@@ -204,3 +204,101 @@ fn assert_wide_and_narrow(lift: f64) {
         }
     }
 }
+
+/// A profile in the plane z with two flats on y = 0, x − z·`shear` from 0.1 to 0.35 (wide)
+/// and from 0.535 to 0.555 (narrow), between 45° slopes: a ridge between them, slopes rising
+/// to y = 1 beyond.
+fn two_bands(z: f64, shear: f64) -> Arc<Curve> {
+    let at = |x: f64, y: f64| v(x + z * shear, y, z);
+    let ridge = 0.5 * (0.35 + 0.535);
+    let pts = vec![
+        at(-0.9, 1.0),
+        at(0.1, 0.0),
+        at(0.35, 0.0),
+        at(ridge, ridge - 0.35),
+        at(0.535, 0.0),
+        at(0.555, 0.0),
+        at(1.555, 1.0),
+    ];
+    Arc::new(Curve::pline(pts, false, None).unwrap())
+}
+
+#[test]
+fn a_band_under_a_cell_wide_between_the_nodes_beside_a_wide_one_is_found_too() {
+    // Traced in the unit square's domain the narrow band is 0.64 of a cell wide (0.02), between
+    // the grid's node lines x − z·shear = 17/32 and 18/32 and the samples' (a twelfth apart):
+    // beside the wide band, which the nodes see, it was passed over as a region a quarter cell
+    // wide that the nodes see (one loop). Along z (shear 0) and diagonal (shear 1), each band
+    // comes back as its outline on the square: the band's edges (the slopes leave the plane at
+    // 45°, so within GEOMTOL·√2) and the square's.
+    let sq = surface_support::unit_square();
+    for shear in [0.0, 1.0] {
+        let other = Surface::ruled(two_bands(-1.5, shear), two_bands(2.5, shear));
+        // The bands' outlines on the square: x − z·shear from c0 to c1 cut by 0 ≤ x, z ≤ 1.
+        let outline = |c0: f64, c1: f64| {
+            let top = |c: f64| {
+                if shear > 0.0 {
+                    ((1.0 - c) / shear).min(1.0)
+                } else {
+                    1.0
+                }
+            };
+            let (z0, z1) = (top(c0), top(c1));
+            vec![
+                v(c0, 0.0, 0.0),
+                v(c1, 0.0, 0.0),
+                v(c1 + z1 * shear, 0.0, z1),
+                v((c0 + z0 * shear).min(1.0), 0.0, z0),
+            ]
+        };
+        let bands = [outline(0.1, 0.35), outline(0.535, 0.555)];
+        let perimeter = |q: &[DVec3]| (0..4).map(|i| q[i].distance(q[(i + 1) % 4])).sum::<f64>();
+        let slack = 2.0 * GT * 2f64.sqrt();
+        let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, GT).unwrap();
+        for (order, (x, y)) in [
+            ("square, other", (&sq, &other)),
+            ("other, square", (&other, &sq)),
+        ] {
+            let name = format!("shear {shear}, {order}");
+            let r = meet(x, y);
+            assert_eq!(r.len(), 2, "{name}: {}", summary(&r));
+            surface_support::assert_same_bits(&name, &meet(x, y), &r);
+            for q in &bands {
+                let mine: Vec<_> = r
+                    .iter()
+                    .filter(|c| c.points.iter().all(|p| to_outline(*p, q) <= slack))
+                    .collect();
+                assert_eq!(
+                    mine.len(),
+                    1,
+                    "{name}: band from x = {}: {}",
+                    q[0].x,
+                    summary(&r)
+                );
+                let c = mine[0];
+                assert!(c.closed, "{name}: {}", summary(&r));
+                assert!(
+                    c.points.iter().all(|p| p.y.abs() <= GT),
+                    "{name}: off the square"
+                );
+                let (length, want) = (c.length(), perimeter(q));
+                assert!(
+                    (length - want).abs() <= 1e-6,
+                    "{name}: length {length} for {want}"
+                );
+            }
+        }
+    }
+}
+
+/// The distance from `p` to the closed polygon `q`.
+fn to_outline(p: DVec3, q: &[DVec3]) -> f64 {
+    (0..q.len())
+        .map(|i| {
+            let (a, b) = (q[i], q[(i + 1) % q.len()]);
+            let d = b - a;
+            let t = ((p - a).dot(d) / d.length_squared()).clamp(0.0, 1.0);
+            p.distance(a + d * t)
+        })
+        .fold(f64::INFINITY, f64::min)
+}

@@ -20,10 +20,13 @@
 //! node; it is looked for ([`seed`]) and gets finer grid lines across it: from the samples
 //! lying on the other surface when some did but no node lies in any region; from the gap's
 //! minima over a 16 × 16 grid when no sample did, and beside the regions the nodes see (a
-//! narrow flat beside a wide one); from the section's curves in a plane section. Still not
-//! seen: a region narrower than [`seed::W_MIN`] of the surface's size either way, one whose
-//! gap minimum is not among that grid's twelve smallest or not reached from them within a
-//! sixteenth of the range, and one within about a quarter cell of a region the nodes see.
+//! narrow flat beside a wide one, or one under a cell wide between the nodes); from the
+//! section's curves in a plane section, where the surface meets the plane around a curve's
+//! middle point. Still not seen: a region narrower than [`seed::W_MIN`] of the surface's size
+//! either way, one whose gap minimum is not among that grid's twelve smallest or not reached
+//! from them within a sixteenth of the range, one at least a quarter cell wide sharing a grid
+//! cell with a node of a region the nodes see (taken for that region), and in a section one
+//! no curve's middle point lies in or beside.
 
 mod edge;
 mod outside;
@@ -188,6 +191,8 @@ struct Tracer<'a, 'b> {
     /// is not classified (out of the region).
     spread: [Vec<f64>; 2],
     corridors: Vec<walk::Corridor>,
+    /// Where the nodes saw regions before bands beside them spread lines ([`walk::Seen`]).
+    seen: Option<walk::Seen>,
 }
 
 /// Traces the region of `s` lying on `t`, whose gap over the region is `level` (None: not
@@ -287,6 +292,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
             cross: HashMap::new(),
             spread: [Vec::new(), Vec::new()],
             corridors: Vec::new(),
+            seen: None,
         }
     }
 }

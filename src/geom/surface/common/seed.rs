@@ -15,7 +15,7 @@
 //! A region oblique to the parameter lines, or whose width changes along its length, is
 //! followed from the seed and gets lines wherever it passes ([`super::walk`]).
 
-use super::walk::Station;
+use super::walk::{Seen, Station};
 use super::{Tracer, N};
 use glam::{DVec2, DVec3};
 
@@ -52,10 +52,12 @@ impl Tracer<'_, '_> {
     }
 
     /// [`Self::refine_narrow`] from the gap's minima, once the grid's nodes have seen a region
-    /// (as classified now): a region narrower than a quarter cell beside it (or anywhere else)
-    /// holds no node. Points lying in a region a quarter cell wide are passed over (the grid
-    /// sees that one), and every node stays classified (no band's corridor leaves out the
-    /// nodes of the region seen).
+    /// (as classified now): a region narrower than a cell beside it (or anywhere else) may
+    /// hold no node. Points lying in a region a quarter cell wide with a node of their cell in
+    /// a region are passed over (the grid sees that one; a band 0.64 cells wide between two
+    /// lines of nodes was passed over when the first test alone decided). Where bands found
+    /// spread lines, the nodes on them are classified in the bands' corridors and round the
+    /// nodes the regions seen hold ([`Seen`]).
     pub(super) fn refine_beside(&mut self) -> Option<(f64, f64)> {
         let starts = self.candidates();
         self.refine_from(starts, true)
@@ -75,7 +77,8 @@ impl Tracer<'_, '_> {
                 continue;
             }
             let Some(q) = self.descend(uv) else { continue };
-            if seen(self, &bands, q) || beside && self.in_region_by(q, quarter) {
+            if seen(self, &bands, q) || beside && self.in_region_by(q, quarter) && self.cell_seen(q)
+            {
                 continue;
             }
             if let Some((b, l)) = self.band(q) {
@@ -89,7 +92,9 @@ impl Tracer<'_, '_> {
         }
         // Nodes off the bands' corridors are left out only when every band is oblique (lines
         // spread across it both ways): a band along a parameter line, or a wide region, has no
-        // corridor, and may lie where another band's spread lines cross.
+        // corridor, and may lie where another band's spread lines cross. The regions the nodes
+        // saw (beside) keep the cells round their nodes as theirs.
+        let saw = beside.then(|| Seen::of(self));
         let mut oblique = true;
         for (b, walks) in &bands {
             for (k, e) in b.iter().enumerate() {
@@ -102,9 +107,11 @@ impl Tracer<'_, '_> {
                 };
             }
         }
-        if !oblique || beside {
+        if !oblique {
             self.spread = [Vec::new(), Vec::new()];
             self.corridors.clear();
+        } else {
+            self.seen = saw;
         }
         (!bands.is_empty()).then_some((level, most))
     }
@@ -328,6 +335,20 @@ impl Tracer<'_, '_> {
             d *= 2.0;
         }
         None
+    }
+
+    /// Whether a corner of the grid cell holding `uv` is a node in the region (as classified).
+    fn cell_seen(&self, mut uv: DVec2) -> bool {
+        self.patch.normalise(&mut uv);
+        let [nu, nv] = self.cells();
+        let at = |k: usize, n: usize| {
+            let i = self.lines[k].partition_point(|x| *x <= uv[k]);
+            i.saturating_sub(1).min(n - 1)
+        };
+        let (i, j) = (at(0, nu), at(1, nv));
+        [(i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)]
+            .iter()
+            .any(|&(a, b)| self.node(a, b))
     }
 
     /// Whether `uv` lies within a seed cell of the band's narrow extents.
