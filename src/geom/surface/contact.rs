@@ -206,7 +206,7 @@ pub(crate) fn regroup_section(
 ) -> Vec<Polyline3> {
     let gap = |uv: DVec2| plane_gap(a, (p0, n), uv);
     let tangent = |uv: DVec2| unit_normal(a, uv).cross(n).length() <= PARALLEL;
-    regroup(a, &gap, &tangent, curves, (seed_tol, tol, chord_tol))
+    regroup(a, None, &gap, &tangent, curves, (seed_tol, tol, chord_tol))
 }
 
 /// [`regroup_section`] for the refined intersection `curves` of `a` and `b`.
@@ -222,14 +222,23 @@ pub(crate) fn regroup_pair(
         let ub = b.project(a.eval(uv), None);
         unit_normal(a, uv).cross(unit_normal(b, ub)).length() <= PARALLEL
     };
-    regroup(a, &gap, &tangent, curves, (seed_tol, tol, chord_tol))
+    regroup(
+        a,
+        Some(b),
+        &gap,
+        &tangent,
+        curves,
+        (seed_tol, tol, chord_tol),
+    )
 }
 
 /// The touching `curves` replaced by the contacts traced through them, with the crossings
 /// found alongside those contacts (the meshes, made within `seed_tol`, see a contact and a
-/// crossing closer than their cells as one curve).
+/// crossing closer than their cells as one curve). `other` is the surface the gap is measured
+/// to, where that is one (not a plane): a crossing can end on its edge.
 fn regroup(
     a: &Patch,
+    other: Option<&Patch>,
     gap: &dyn Fn(DVec2) -> GapAt,
     tangent: &dyn Fn(DVec2) -> bool,
     curves: Vec<Polyline3>,
@@ -305,7 +314,8 @@ fn regroup(
     };
     let found = crossings.beside(cut, &steps, &kept);
     kept.extend(found);
-    let mut kept = branch::through_branch_points(a, gap, kept, &mut traced, near, (tol, chord_tol));
+    let mut kept =
+        branch::through_branch_points((a, other), gap, kept, &mut traced, near, (tol, chord_tol));
     kept.extend(traced);
     kept
 }

@@ -352,7 +352,7 @@ fn ray_meets(p: DVec3, t: DVec3, (x, y): (DVec3, DVec3), within: f64) -> Option<
 /// is good to about 1e-9 however the crossing was found: in one piece from the seeding meshes,
 /// or joined by [`run_into`] or `line::join_ends`.
 pub(crate) fn through_branch_points(
-    a: &Patch,
+    (a, other): (&Patch, Option<&Patch>),
     gap: &dyn Fn(DVec2) -> GapAt,
     mut pieces: Vec<Polyline3>,
     contacts: &mut [Polyline3],
@@ -382,7 +382,7 @@ pub(crate) fn through_branch_points(
         }
     }
     for c in &mut pieces {
-        let Some(b) = edge_meeting(a, gap, c, &contacts_of(contacts), near, tol) else {
+        let Some(b) = edge_meeting((a, other), gap, c, &contacts_of(contacts), near, tol) else {
             continue;
         };
         let n = c.points.len();
@@ -434,13 +434,15 @@ fn contacts_of(contacts: &[Polyline3]) -> Vec<&Polyline3> {
     contacts.iter().filter(|k| k.points.len() >= 2).collect()
 }
 
-/// The branch point on a bounded edge of `a` where an end of the open crossing `c`, on that
-/// edge, meets one of the `contacts` (within `near`): the gap along the edge has a triple root
-/// there, so its second derivative along the edge a simple one, solved by Newton (differences
-/// of fourth order extrapolated to sixth, on stencils along the edge). The ends, found where the
-/// gap across the contact is within the tolerance, are known only to about ∛tol there.
+/// The branch point on a bounded edge of `a` (or of `other`, the surface the gap is measured
+/// to, where that is one) where an end of the open crossing `c`, on that edge, meets one of the
+/// `contacts` (within `near`): the gap along the edge has a triple root there, so its second
+/// derivative along the edge a simple one, solved by Newton (differences of fourth order
+/// extrapolated to sixth, on stencils along the edge). The ends, found where the gap across the
+/// contact is within the tolerance, are known only to about ∛tol there. On `other`'s edge (no
+/// parameter edge of `a`) the gap is taken from `other`'s parameters to `a`.
 fn edge_meeting(
-    a: &Patch,
+    (a, other): (&Patch, Option<&Patch>),
     gap: &dyn Fn(DVec2) -> GapAt,
     c: &Polyline3,
     contacts: &[&Polyline3],
@@ -451,13 +453,28 @@ fn edge_meeting(
     if c.closed || n < 2 || contacts.is_empty() {
         return None;
     }
+    let on_edge = |s: &Patch, uv: DVec2| {
+        (0..2).find(|&k| !s.periodic()[k] && (uv[k] <= 1e-9 || uv[k] >= 1.0 - 1e-9))
+    };
     [c.points[0], c.points[n - 1]].into_iter().find_map(|p| {
         if to_contacts(p, contacts) > near {
             return None;
         }
         let uv = a.project(p, None);
-        let k = (0..2).find(|&k| !a.periodic()[k] && (uv[k] <= 1e-9 || uv[k] >= 1.0 - 1e-9))?;
-        let b = edge_branch_point(a, gap, uv, k, tol)?;
+        let b = if let Some(k) = on_edge(a, uv) {
+            edge_branch_point(a, gap, uv, k, tol)?
+        } else {
+            let o = other?;
+            let uo = o.project(p, None);
+            let k = on_edge(o, uo)?;
+            let warm = std::cell::Cell::new(None);
+            let back = |w: DVec2| super::pair_gap(o, a, &warm, w);
+            let (_, q) = edge_branch_point(o, &back, uo, k, tol)?;
+            let mut ua = a.project(q, Some(uv));
+            a.normalise(&mut ua);
+            let g = gap(ua);
+            (g.dist <= tol).then_some((ua, g.point))?
+        };
         (b.1.distance(p) <= 16.0 * near && to_contacts(b.1, contacts) <= near).then_some(b)
     })
 }
