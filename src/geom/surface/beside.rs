@@ -66,19 +66,9 @@ impl<'a> Region<'a> {
     /// lies in (or on the boundary of) the region: its nearest point on the surface does, and
     /// is no farther than `near` (a point beyond the surface's edge is not in the region).
     pub(super) fn holds(&self, p: DVec3, near: f64) -> bool {
-        let mut uv = self.s.project(p, self.hint.get());
-        // A warm start from the last point may slide to a pole (a revolved profile's end on
-        // the axis, where the turn's derivative vanishes) and stop there, far from the nearest
-        // point: a circle inside a ring was taken as off the region, its every point projected
-        // to the pole 0.41 away. Then from the search grid too, the nearer kept.
-        if self.hint.get().is_some() && self.s.eval(uv).distance(p) > self.step {
-            let other = self.s.project(p, None);
-            if self.s.eval(other).distance(p) < self.s.eval(uv).distance(p) {
-                uv = other;
-            }
-        }
+        let (uv, foot) = self.s.project_warm(p, self.hint.get());
         self.hint.set(Some(uv));
-        if self.s.eval(uv).distance(p) > near {
+        if foot.distance(p) > near {
             return false;
         }
         let (su, sv) = self.s.derivs(uv);

@@ -16,6 +16,17 @@ use glam::{DMat3, DVec2, DVec3};
 /// The step of the difference quotients, in parameters.
 const H: f64 = 1e-6;
 
+/// How near the point a warm start must lie to be taken, as a fraction of the surface's size
+/// (farther, the projection starts from the search grid).
+const WARM: f64 = 0.05;
+
+/// How far from the point, as a fraction of the surface's size, a projection from a warm
+/// start may land before [`Patch::project_warm`] checks it from the search grid: far above
+/// any tolerance, so a point on or near the surface pays nothing; small beside the surface,
+/// so a slide into another local minimum or to a pole is caught (as [`super::beside`]'s probe
+/// step).
+const WARM_FAR: f64 = 1e-4;
+
 /// A parametric surface with what Newton needs: periodicity and a seed search grid.
 pub(crate) struct Patch<'a> {
     s: &'a Surface,
@@ -148,7 +159,7 @@ impl<'a> Patch<'a> {
     /// on `(S − p)·S_u = (S − p)·S_v = 0` (Gauss–Newton steps).
     pub fn project(&self, p: DVec3, start: Option<DVec2>) -> DVec2 {
         let mut uv = match start {
-            Some(uv) if self.eval(uv).distance(p) <= 0.05 * self.scale => uv,
+            Some(uv) if self.eval(uv).distance(p) <= WARM * self.scale => uv,
             _ => self
                 .grid
                 .iter()
@@ -175,6 +186,56 @@ impl<'a> Patch<'a> {
             }
         }
         uv
+    }
+
+    /// [`Self::project`] from a warm start that checks it, and the foot: a warm start (the
+    /// last point's parameters, as a tracer keeps them) may slide into another local minimum,
+    /// or to a pole (an edge collapsing to a point, as a revolved profile's end on its axis,
+    /// where Newton stops, clamped, far short of the nearest point: a flat ring's inner edge
+    /// came back as a 4-point loop, and a circle inside the ring was traced as a contact).
+    /// Where it lands farther than [`WARM_FAR`] of the surface's size from `p`, and not on an
+    /// edge bounding the surface (where a point past the surface has its nearest point), the
+    /// projection is taken from the search grid too and the nearer kept.
+    pub(crate) fn project_warm(&self, p: DVec3, start: Option<DVec2>) -> (DVec2, DVec3) {
+        let uv = self.project(p, start);
+        let foot = self.eval(uv);
+        let Some(from) = start else {
+            return (uv, foot);
+        };
+        let d = foot.distance(p);
+        // A start too far to be taken was the search grid's already.
+        if d <= WARM_FAR * self.scale
+            || self.bounds_at(uv)
+            || self.eval(from).distance(p) > WARM * self.scale
+        {
+            return (uv, foot);
+        }
+        let other = self.project(p, None);
+        let foot_other = self.eval(other);
+        if foot_other.distance(p) < d {
+            (other, foot_other)
+        } else {
+            (uv, foot)
+        }
+    }
+
+    /// Whether `uv` lies on an edge of the domain that bounds the surface: not a seam, and
+    /// not a pole (an edge collapsing to a point), where no point past the surface projects.
+    pub(crate) fn bounds_at(&self, uv: DVec2) -> bool {
+        (0..2).any(|k| {
+            !self.periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0) && !self.collapses(k, uv[k])
+        })
+    }
+
+    /// Whether the domain edge where parameter `k` is `c` collapses to a point.
+    fn collapses(&self, k: usize, c: f64) -> bool {
+        let at = |t: f64| {
+            let mut q = DVec2::splat(t);
+            q[k] = c;
+            self.eval(q)
+        };
+        let p0 = at(0.0);
+        (1..=4).all(|i| at(i as f64 / 4.0).distance(p0) <= 1e-12 * self.scale)
     }
 }
 

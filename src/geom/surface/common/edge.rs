@@ -72,18 +72,8 @@ impl Target<'_> {
             }
             Target::Plane(o, n) => Some(n.dot(p - *o).abs()),
             Target::Patch(patch, hint) => {
-                let mut uv = patch.project(p, hint.get());
-                // Stopped at a pole, maybe short of the nearest point: from the search grid too.
-                let periodic = patch.periodic();
-                let at_edge = (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0));
-                if at_edge && !on_boundary(patch, uv) {
-                    let other = patch.project(p, None);
-                    if patch.eval(other).distance(p) < patch.eval(uv).distance(p) {
-                        uv = other;
-                    }
-                }
-                let foot = patch.eval(uv);
-                (!on_boundary(patch, uv) || over_edge(patch, uv, p - foot, tol))
+                let (uv, foot) = patch.project_warm(p, hint.get());
+                (!patch.bounds_at(uv) || over_edge(patch, uv, p - foot, tol))
                     .then(|| foot.distance(p))
             }
         }
@@ -281,16 +271,6 @@ impl Tracer<'_, '_> {
     }
 }
 
-/// Whether `uv` lies on an edge of the patch's domain that bounds the surface: not a seam,
-/// and not a pole (an edge collapsing to a point, as a revolved profile's end on the axis),
-/// where a projection from a warm start may stop, clamped, far short of the nearest point
-/// (a point of a flat ring around the pole, its projection slid to the pole, was taken for
-/// one past the surface's boundary: the ring's inner edge came back as a 4-point loop).
-pub(super) fn on_boundary(patch: &Patch, uv: DVec2) -> bool {
-    let periodic = patch.periodic();
-    (0..2).any(|k| !periodic[k] && (uv[k] == 0.0 || uv[k] == 1.0) && !collapses(patch, k, uv[k]))
-}
-
 /// Whether `r`, the offset of a point from its foot `uv` on the patch's boundary, has no part
 /// along a parameter held at the domain's edge there (to a thousandth of `tol`): the point
 /// lies over the boundary, not beyond it (on the line of a ruled square's edge, off the square
@@ -301,17 +281,6 @@ fn over_edge(patch: &Patch, uv: DVec2, r: DVec3, tol: f64) -> bool {
     [du, dv].iter().enumerate().all(|(k, d)| {
         periodic[k] || (uv[k] != 0.0 && uv[k] != 1.0) || r.dot(*d).abs() <= 1e-3 * tol * d.length()
     })
-}
-
-/// Whether the domain edge where parameter `k` is `c` collapses to a point.
-fn collapses(patch: &Patch, k: usize, c: f64) -> bool {
-    let at = |t: f64| {
-        let mut q = DVec2::splat(t);
-        q[k] = c;
-        patch.eval(q)
-    };
-    let p0 = at(0.0);
-    (1..=4).all(|i| at(i as f64 / 4.0).distance(p0) <= 1e-12 * patch.scale())
 }
 
 /// The zero of `c·(s − s0)^k` through the samples `(s[i], g[i])` for the k ∈ {1, 2, 3} that

@@ -4,7 +4,7 @@
 use super::super::hits::point_in_polygon;
 use super::super::kinds::{Cylinder, PlaneRegion, Sphere, Surface};
 use super::super::refine::Patch;
-use super::{edge, K};
+use super::K;
 use glam::{DVec2, DVec3};
 use std::cell::Cell;
 
@@ -42,19 +42,8 @@ impl<'a> Target<'a> {
             }
             Target::Plane(o, n) => n.dot(p - *o).abs() <= tol,
             Target::Patch(patch, hint) => {
-                // A warm start from the last point is tried first; a miss is checked from the
-                // search grid (the warm start may have slid into another local minimum).
-                let try_from = |start: Option<DVec2>| {
-                    let uv = patch.project(p, start);
-                    (patch.eval(uv).distance(p) <= tol, uv)
-                };
-                // A miss at the surface's boundary is past it; close to it, the nearest point;
-                // only a far miss elsewhere (a pole included) may be another local minimum.
-                let (mut ok, mut uv) = try_from(hint.get());
-                let near = patch.eval(uv).distance(p) <= 1e-3 * patch.scale();
-                if !ok && !near && !edge::on_boundary(patch, uv) && hint.get().is_some() {
-                    (ok, uv) = try_from(None);
-                }
+                let (uv, foot) = patch.project_warm(p, hint.get());
+                let ok = foot.distance(p) <= tol;
                 if ok {
                     hint.set(Some(uv));
                 }
