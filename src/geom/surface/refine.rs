@@ -813,4 +813,28 @@ mod tests {
             assert!(sv.distance(v(10.0, 0.0, 0.0)) <= 1e-8, "{u}: {sv}");
         }
     }
+
+    #[test]
+    fn a_warm_start_that_stops_at_a_pole_is_checked_from_the_search_grid() {
+        // A cone's tip on the z axis, then flat on z = 0 out to r = 3, revolved: the profile's
+        // start is a pole of the patch. A point of the flat, warm-started at the pole: Newton
+        // stops there (the turn's derivative vanishes), 0.22 away.
+        let prof = pline(vec![v(0.0, 0.0, 0.01), v(0.01, 0.0, 0.0), v(3.0, 0.0, 0.0)]);
+        let s = Surface::revolve(prof, DVec3::ZERO, DVec3::Z, std::f64::consts::TAU).unwrap();
+        let patch = Patch::new(&s);
+        let pole = DVec2::new(0.0, 0.5);
+        let p = v(0.2, 0.1, 0.0);
+        assert!(patch.eval(pole).distance(v(0.0, 0.0, 0.01)) <= 1e-12);
+        let slid = patch.project(p, Some(pole));
+        assert!(patch.eval(slid).distance(p) > 0.2, "{slid}");
+        let (uv, foot) = patch.project_warm(p, Some(pole));
+        assert_eq!(foot, patch.eval(uv));
+        assert!(foot.distance(p) <= 1e-12, "{foot}");
+        // Past the outer edge (a bounding edge, not a pole) the warm foot stands: the edge.
+        let q = v(3.3, 0.0, 0.0);
+        let (uv, foot) = patch.project_warm(q, Some(DVec2::new(0.999, 0.0)));
+        assert_eq!(uv.x, 1.0);
+        assert!(foot.distance(v(3.0, 0.0, 0.0)) <= 1e-12, "{foot}");
+        assert!(patch.bounds_at(uv) && !patch.bounds_at(pole));
+    }
 }
