@@ -20,7 +20,9 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
+use surface_support::{
+    assert_chords_on, assert_meet_at, assert_same_bits, section_and_both_orders, summary,
+};
 
 /// The product of two polynomials (coefficients from the constant term up).
 fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
@@ -143,17 +145,7 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
     assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
     let th = -d0 / (d1 - d0) * FRAC_PI_2;
     let branch = DVec3::new(2.0 * th.cos(), 2.0 * th.sin(), 0.0);
-    for c in [contact, crossing] {
-        let off = c
-            .points
-            .iter()
-            .map(|p| p.distance(branch))
-            .fold(f64::INFINITY, f64::min);
-        assert!(
-            off <= meet,
-            "{name}: {off:e} from the branch point {branch}"
-        );
-    }
+    assert_meet_at(name, &[contact, crossing], branch, meet);
     for (c, len) in [(contact, PI), (crossing, crossing_length(d0, d1, k))] {
         assert!(!c.closed, "{name}: {}", summary(r));
         for p in &c.points {

@@ -15,7 +15,9 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
+use surface_support::{
+    assert_chords_on, assert_meet_at, assert_same_bits, section_and_both_orders, summary,
+};
 
 /// The sheet for root `d`, the same at every x.
 fn sheet(d: f64) -> Surface {
@@ -76,17 +78,7 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     };
     if d0 * d1 <= 0.0 {
         let branch = DVec3::new(-d0 * 4.0 / (d1 - d0), 0.0, 0.0);
-        for c in [contact, crossing] {
-            let off = c
-                .points
-                .iter()
-                .map(|p| p.distance(branch))
-                .fold(f64::INFINITY, f64::min);
-            assert!(
-                off <= 2e-9,
-                "{name}: {off:e} from the branch point {branch}"
-            );
-        }
+        assert_meet_at(name, &[contact, crossing], branch, 2e-9);
     }
     let slant = (16.0 + (d1 - d0) * (d1 - d0)).sqrt();
     for (c, len) in [(contact, 4.0), (crossing, slant)] {

@@ -268,3 +268,16 @@ pub fn assert_chords_on(name: &str, curves: &[Polyline3], off: impl Fn(DVec3) ->
         }
     }
 }
+
+/// That each of `curves` has a point within `within` of `at`: where a crossing meets a contact,
+/// both pass through the branch point, not merely near their chords.
+pub fn assert_meet_at(name: &str, curves: &[&Polyline3], at: DVec3, within: f64) {
+    for c in curves {
+        let off = c
+            .points
+            .iter()
+            .map(|p| p.distance(at))
+            .fold(f64::INFINITY, f64::min);
+        assert!(off <= within, "{name}: {off:e} from the branch point {at}");
+    }
+}
