@@ -16,6 +16,7 @@ mod contact;
 mod error;
 mod hits;
 mod kinds;
+mod loose;
 mod ops;
 mod overlap;
 mod planar;

@@ -92,6 +92,8 @@ fn section_seeded(
         let plane = (plane_point, n);
         // The contacts traced from the tips of lenses the seeds cut across (see `mend_section`).
         let mut tips: Vec<Polyline3> = Vec::new();
+        // The chords left loose (for the last check, `loose::settle_section`).
+        let mut all_loose: Vec<[DVec3; 2]> = Vec::new();
         let curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| {
@@ -100,6 +102,7 @@ fn section_seeded(
                 let (r, t) =
                     super::contact::mend_section(&patch, plane, r, &loose, (geom_tol, tol));
                 tips.extend(t);
+                all_loose.extend(loose);
                 r
             })
             .filter(|c| !c.points.is_empty())
@@ -111,6 +114,8 @@ fn section_seeded(
             (seed_tol, geom_tol, tol),
         );
         curves.extend(tips);
+        let mut curves =
+            super::loose::settle_section(&patch, plane, curves, &all_loose, (geom_tol, tol));
         if !contacts {
             return Ok(curves);
         }
@@ -426,12 +431,15 @@ fn through_meshes(
     };
     // The contacts traced from the tips of lenses the seeds cut across (see `mend_pair`).
     let mut tips: Vec<Polyline3> = Vec::new();
+    // The chords left loose (for the last check, `loose::settle_pair`).
+    let mut all_loose: Vec<[DVec3; 2]> = Vec::new();
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
             let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
             let (mut r, t) = super::contact::mend_pair(&pa, &pb, r, &loose, (gtol, ctol));
             tips.extend(t);
+            all_loose.extend(loose);
             super::refine::close_gap(&pa, &pb, &mut r, gtol, ctol);
             r
         })
@@ -449,6 +457,7 @@ fn through_meshes(
     if let Some((r, loops)) = region.as_mut() {
         curves = outside(r, (&pa, &pb), curves, loops, reach);
     }
+    curves = super::loose::settle_pair(&pa, &pb, curves, &all_loose, (gtol, ctol));
     if !contacts {
         return Ok(curves);
     }

@@ -526,7 +526,13 @@ fn leaving<'p>(end: DVec3, mut inner: impl Iterator<Item = &'p DVec3>) -> Option
 }
 
 /// A point of a plane section: Newton on `n·(S(u, v) − p0) = 0` (minimum-norm step).
-fn newton_plane(s: &Patch, mut uv: DVec2, p0: DVec3, n: DVec3, tol: f64) -> (DVec2, f64) {
+pub(crate) fn newton_plane(
+    s: &Patch,
+    mut uv: DVec2,
+    p0: DVec3,
+    n: DVec3,
+    tol: f64,
+) -> (DVec2, f64) {
     let mut r = n.dot(s.eval(uv) - p0);
     for _ in 0..40 {
         if r.abs() <= 0.01 * tol {
