@@ -207,14 +207,9 @@ fn walk(
     let mut frac = 1.0;
     let short = short_step(a, tol);
     while nodes.len() < MAX_NODES {
-        let mut w = uv;
-        a.normalise(&mut w);
-        let (su, sv) = a.derivs(w);
-        let speed = (su * t.x + sv * t.y).length();
-        // Zero or NaN (a degenerate point of the parameterisation): no way on.
-        if speed.is_nan() || speed <= 0.0 {
+        let Some(speed) = speed_along(a, uv, t) else {
             break;
-        }
+        };
         let mut step = frac * len / speed;
         // A bounded parameter reaching its edge: the step ends there, and so does the walk.
         let mut at_edge = false;
@@ -724,13 +719,9 @@ fn march(
     let mut nodes = Vec::new();
     let mut frac = 1.0;
     while nodes.len() < MAX_NODES && t != DVec2::ZERO {
-        let mut w = uv;
-        a.normalise(&mut w);
-        let (su, sv) = a.derivs(w);
-        let speed = (su * t.x + sv * t.y).length();
-        if !(speed > 0.0 && speed.is_finite()) {
+        let Some(speed) = speed_along(a, uv, t) else {
             break;
-        }
+        };
         let mut step = frac * len / speed;
         let mut edge = None;
         for k in 0..2 {
@@ -837,4 +828,14 @@ fn unfold_end(points: &mut Vec<DVec3>) {
     if let Some(k) = fold {
         points.truncate(k);
     }
+}
+
+/// How fast the surface moves in space along the parameter direction `t` at `uv`; None at a
+/// degenerate point of the parameterisation (zero, infinite or NaN), where there is no way on.
+pub(super) fn speed_along(a: &Patch, uv: DVec2, t: DVec2) -> Option<f64> {
+    let mut w = uv;
+    a.normalise(&mut w);
+    let (su, sv) = a.derivs(w);
+    let speed = (su * t.x + sv * t.y).length();
+    (speed > 0.0 && speed.is_finite()).then_some(speed)
 }

@@ -15,7 +15,7 @@
 //! beside a tip are taken for the crossings', which run in there nearly tangent).
 
 use super::branch::contact_curve_near;
-use super::line::{clamp_bounded, delta, settle, GapAt};
+use super::line::{clamp_bounded, delta, settle, speed_along, GapAt};
 use super::{beside, near_any};
 use crate::geom::mesh::Polyline3;
 use crate::geom::surface::refine::{assemble, mid, Patch};
@@ -171,13 +171,9 @@ impl Ridge<'_> {
         let mut nodes = Vec::new();
         let mut frac = 1.0;
         while nodes.len() < MAX_NODES {
-            let mut w = uv;
-            a.normalise(&mut w);
-            let (su, sv) = a.derivs(w);
-            let speed = (su * t.x + sv * t.y).length();
-            if !(speed > 0.0 && speed.is_finite()) {
+            let Some(speed) = speed_along(a, uv, t) else {
                 break;
-            }
+            };
             let step = frac * len / speed;
             let ahead = uv + t * step;
             let cand = settle(a, &|x| self.h(x), ahead, t.perp());
