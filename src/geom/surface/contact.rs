@@ -15,6 +15,7 @@
 //! Where the contact is a curve rather than a point (the gap flat along one direction), it is
 //! followed on the true surfaces and comes back as one polyline ([`line`]).
 
+mod alongside;
 mod branch;
 mod line;
 mod tip;
@@ -350,21 +351,21 @@ impl Crossings<'_> {
         // The scan looks across only every step along a contact: what it finds is carried on
         // likewise.
         for (c, &step) in self.contacts.iter().zip(steps) {
-            let scan = line::Scan {
+            let scan = alongside::Scan {
                 step,
                 apart: seed_gap(seed_tol),
                 dup: self.near,
             };
             let known: Vec<Polyline3> = known.iter().chain(&pieces).cloned().collect();
             let found =
-                line::crossings_alongside(self.a, self.gap, c, &scan, &known, tol, chord_tol);
+                alongside::crossings_alongside(self.a, self.gap, c, &scan, &known, tol, chord_tol);
             let found: Vec<(Polyline3, [bool; 2])> =
                 found.into_iter().map(|f| (f, [false; 2])).collect();
             pieces.extend(found.iter().map(|x| x.0.clone()));
             self.extend(&mut pieces, &found);
         }
         let reach = 2.0 * self.len;
-        let joined = line::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
+        let joined = alongside::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
         branch::run_into(
             self.a,
             self.gap,
@@ -377,7 +378,7 @@ impl Crossings<'_> {
 
     /// Carries on the last `new.len()` of `pieces` (each with the ends where it was cut off a
     /// seed curve), each until it comes beside a contact or another piece: the joints between
-    /// pieces are made afterwards by [`line::join_ends`].
+    /// pieces are made afterwards by [`alongside::join_ends`].
     fn extend(&self, pieces: &mut [Polyline3], new: &[(Polyline3, [bool; 2])]) {
         let (_, tol, chord_tol) = self.tols;
         let first = pieces.len() - new.len();
@@ -387,7 +388,7 @@ impl Crossings<'_> {
                     || (0..pieces.len())
                         .any(|j| j != i && near_any(p, std::slice::from_ref(&pieces[j]), self.near))
             };
-            let longer = line::extend_crossing(
+            let longer = alongside::extend_crossing(
                 self.a,
                 self.gap,
                 (&pieces[i], *cut),

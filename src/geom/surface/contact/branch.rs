@@ -3,7 +3,8 @@
 //! contact is traced from a step off the point, and the crossing, whose march stops beside the
 //! contact, is carried on along its tangent to where it meets it.
 
-use super::line::{between, clamp_bounded, contact_curve, delta, settle, GapAt};
+use super::alongside::between;
+use super::line::{clamp_bounded, contact_curve, delta, settle, GapAt};
 use crate::geom::mesh::Polyline3;
 use crate::geom::surface::refine::assemble;
 use crate::geom::surface::refine::Patch;
@@ -350,7 +351,7 @@ fn ray_meets(p: DVec3, t: DVec3, (x, y): (DVec3, DVec3), within: f64) -> Option<
 /// the contact end to end, or settled across the contact where it flattens to an inflection)
 /// are known only to about ∛tol across, the gap flattening to a triple root; the solved point
 /// is good to about 1e-9 however the crossing was found: in one piece from the seeding meshes,
-/// or joined by [`run_into`] or `line::join_ends`.
+/// or joined by [`run_into`] or `alongside::join_ends`.
 pub(crate) fn through_branch_points(
     (a, other): (&Patch, Option<&Patch>),
     gap: &dyn Fn(DVec2) -> GapAt,
