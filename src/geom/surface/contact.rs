@@ -121,10 +121,7 @@ pub(crate) fn mend_section(
         return (curve, Vec::new());
     }
     let gap = |uv: DVec2| plane_gap(a, (p0, n), uv);
-    let off = |p: DVec3| {
-        let on = a.eval(a.project(p, None));
-        on.distance(p).max(n.dot(p - p0).abs())
-    };
+    let off = |p: DVec3| super::refine::off_section(a, (p0, n), p);
     tip::mend(a, &gap, &off, curve, loose, (tol, chord_tol))
 }
 

@@ -10,7 +10,7 @@
 //! midpoints refined within `chord_tol` when densified, so the pass costs nothing where none was
 //! left loose. Regrouping may move an end (a branch point put in), and such a chord is missed.
 
-use super::refine::{newton_pair, newton_plane, off_pair, Patch};
+use super::refine::{newton_pair, newton_plane, off_pair, off_section, Patch};
 use crate::geom::mesh::Polyline3;
 use glam::DVec3;
 
@@ -24,7 +24,7 @@ pub(crate) struct On<'a> {
     pub onto: &'a dyn Fn(DVec3) -> Option<DVec3>,
 }
 
-/// [`On`] for the intersection of `a` and `b`, to `tol`.
+/// [`settle`] for `curves` on the intersection of `a` and `b`, to `tol`.
 pub(crate) fn settle_pair(
     a: &Patch,
     b: &Patch,
@@ -47,7 +47,8 @@ pub(crate) fn settle_pair(
     settle(curves, loose, &on, (tol, chord_tol))
 }
 
-/// [`On`] for the section of `s` by the plane through `p0` with unit normal `n`, to `tol`.
+/// [`settle`] for `curves` on the section of `s` by the plane through `p0` with unit normal
+/// `n`, to `tol`.
 pub(crate) fn settle_section(
     s: &Patch,
     (p0, n): (DVec3, DVec3),
@@ -58,10 +59,7 @@ pub(crate) fn settle_section(
     if loose.is_empty() {
         return curves;
     }
-    let off = |p: DVec3| {
-        let on = s.eval(s.project(p, None));
-        on.distance(p).max(n.dot(p - p0).abs())
-    };
+    let off = |p: DVec3| off_section(s, (p0, n), p);
     let onto = |p: DVec3| {
         let (uv, r) = newton_plane(s, s.project(p, None), p0, n, tol);
         (r <= tol).then(|| s.eval(uv))

@@ -132,7 +132,6 @@ fn section_seeded(
             .filter_map(|c| c.points.get(c.points.len() / 2).copied())
             .take(MID_SEEDS)
             .collect();
-        let plane = (plane_point, n);
         let flat = |p: &DVec3| super::common::flat_on_plane(&patch, *p, plane, geom_tol);
         if mids.iter().any(flat) {
             if let Some(mut l) = super::common::in_plane(s, plane, &mids, geom_tol, tol) {

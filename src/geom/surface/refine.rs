@@ -228,6 +228,12 @@ pub(crate) fn off_pair(a: &Patch, b: &Patch, p: DVec3) -> f64 {
     a.eval(ua).distance(p).max(b.eval(ub).distance(p))
 }
 
+/// How far `p` lies from the farther of `s` and the plane through `p0` with unit normal `n`.
+pub(crate) fn off_section(s: &Patch, (p0, n): (DVec3, DVec3), p: DVec3) -> f64 {
+    let on = s.eval(s.project(p, None));
+    on.distance(p).max(n.dot(p - p0).abs())
+}
+
 /// Closes an open refined curve whose ends are within a few of its own segment lengths and
 /// head for each other — the meshes lose the last pieces before a branch point, where the
 /// surfaces touch (two equal cylinders crossing) — when the gap refines onto both surfaces: the
