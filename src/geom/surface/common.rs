@@ -33,6 +33,7 @@ mod outline;
 mod outside;
 mod seed;
 mod target;
+mod threshold;
 mod walk;
 
 pub(crate) use outside::{flat_on_plane, outside_common, outside_plane_region};
@@ -322,12 +323,7 @@ impl Tracer<'_, '_> {
 
     /// Whether the point at `uv` lies on the target (off outside the domain).
     fn on(&self, uv: DVec2) -> bool {
-        for k in 0..2 {
-            if !self.periodic[k] && !(0.0..=1.0).contains(&uv[k]) {
-                return false;
-            }
-        }
-        self.target.on(self.eval(uv), self.tol)
+        self.apart(uv) <= self.tol
     }
 
     /// The parameter steps of a probe [`PROBE`] of the surface's size long along u and v at
@@ -573,21 +569,6 @@ impl Tracer<'_, '_> {
             (None, None) => return self.edge(lo, hi),
         };
         lo + d * t.clamp(0.0, 1.0)
-    }
-
-    fn bisect(&self, mut lo: DVec2, mut hi: DVec2) -> DVec2 {
-        for _ in 0..60 {
-            if lo.distance(hi) <= 1e-15 {
-                break;
-            }
-            let m = 0.5 * (lo + hi);
-            if self.on(m) {
-                lo = m;
-            } else {
-                hi = m;
-            }
-        }
-        lo
     }
 }
 

@@ -29,25 +29,42 @@ impl<'a> Target<'a> {
 
     /// Whether `p` lies on the target within `tol` (inside its extent).
     pub(super) fn on(&self, p: DVec3, tol: f64) -> bool {
+        self.apart(p, tol) <= tol
+    }
+
+    /// How far `p` lies from the target: within `tol` exactly where it lies on the target
+    /// ([`Self::on`]); infinite outside the target's extent (by `tol`), where no distance
+    /// grows smoothly to the threshold ([`super::threshold`] then bisects).
+    pub(super) fn apart(&self, p: DVec3, tol: f64) -> f64 {
         match self {
-            Target::Sphere(s) => (p.distance(s.center) - s.radius).abs() <= tol,
+            Target::Sphere(s) => (p.distance(s.center) - s.radius).abs(),
             Target::Cylinder(c) => {
                 let h = (p - c.base).dot(c.axis);
                 let radial = (p - c.base - c.axis * h).length();
-                (radial - c.radius).abs() <= tol && h >= -tol && h <= c.height + tol
+                let inside = h >= -tol && h <= c.height + tol;
+                if inside {
+                    (radial - c.radius).abs()
+                } else {
+                    f64::INFINITY
+                }
             }
             Target::Region(r) => {
-                r.normal.dot(p - r.boundary[0]).abs() <= tol
-                    && point_in_polygon(p, &r.boundary, r.normal, tol).is_in()
+                let d = r.normal.dot(p - r.boundary[0]).abs();
+                // Off the plane already: the polygon test is not needed.
+                if d > tol || point_in_polygon(p, &r.boundary, r.normal, tol).is_in() {
+                    d
+                } else {
+                    f64::INFINITY
+                }
             }
-            Target::Plane(o, n) => n.dot(p - *o).abs() <= tol,
+            Target::Plane(o, n) => n.dot(p - *o).abs(),
             Target::Patch(patch, hint) => {
                 let (uv, foot) = patch.project_warm(p, hint.get());
-                let ok = foot.distance(p) <= tol;
-                if ok {
+                let d = foot.distance(p);
+                if d <= tol {
                     hint.set(Some(uv));
                 }
-                ok
+                d
             }
         }
     }
