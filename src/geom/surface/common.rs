@@ -44,6 +44,7 @@ use super::kinds::Surface;
 use super::refine::Patch;
 use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
+use std::cell::Cell;
 use std::collections::HashMap;
 
 /// Where two surfaces coincide.
@@ -186,6 +187,9 @@ struct Tracer<'a, 'b> {
     corridors: Vec<walk::Corridor>,
     /// Where the nodes saw regions before bands beside them spread lines ([`walk::Seen`]).
     seen: Option<walk::Seen>,
+    /// How far past its threshold the last power-law fit's first sample stood ([`edge`]):
+    /// the next fit's search for its first sample starts there.
+    rise: Cell<Option<f64>>,
 }
 
 /// Traces the region of `s` lying on `t`, whose gap over the region is `level` (None: not
@@ -286,6 +290,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
             spread: [Vec::new(), Vec::new()],
             corridors: Vec::new(),
             seen: None,
+            rise: Cell::new(None),
         }
     }
 }

@@ -240,19 +240,7 @@ impl Tracer<'_, '_> {
         ahead: bool,
     ) -> Option<DVec2> {
         let gap_at = |s: f64| at(s).and_then(|p| self.gap_at(p));
-        // Out from the threshold in doubling steps until the gap stands well above it (the
-        // samples may lie past `hi`: a densifying search brackets the edge closely).
-        let mut d = first;
-        let g1 = loop {
-            let g = gap_at(d)?;
-            if g >= ABOVE * self.tol {
-                break g;
-            }
-            d *= 2.0;
-            if d > REACH {
-                return None;
-            }
-        };
+        let (d, g1) = self.first_sample(&gap_at, first)?;
         let s = [d, 2.0 * d, 4.0 * d];
         let g = [g1, gap_at(s[1])?, gap_at(s[2])?];
         let s0 = match fit_zero(s, g) {
@@ -268,6 +256,63 @@ impl Tracer<'_, '_> {
         }
         let e = at(if ahead { s0.max(0.0) } else { s0.min(0.0) })?;
         self.on(e).then_some(e)
+    }
+}
+
+impl Tracer<'_, '_> {
+    /// The first sample of a fit along the path whose gap is `gap_at`: the nearest of
+    /// `first`·2^m (up to [`REACH`]) where the gap stands [`ABOVE`] the tolerance, so that its
+    /// roundoff is small beside it (the samples may lie past the region's edge search's far
+    /// end: a densifying search brackets the edge closely); None where there is none, or
+    /// where the path leaves the domain or the target's extent first.
+    ///
+    /// The gap rises steadily out from the threshold, so the doublings are not walked from
+    /// `first` (13 projections for a tangent parting) but from where the last fit's first
+    /// sample stood, down while the one before also stands above, or up until one does (2 or
+    /// 3 projections where the edge's shape changes little from one boundary point to the
+    /// next). Where the gap does rise steadily, the sample is the one walking from `first`
+    /// finds.
+    fn first_sample(&self, gap_at: &dyn Fn(f64) -> Option<f64>, first: f64) -> Option<(f64, f64)> {
+        let mut top = 0;
+        while first * 2f64.powi(top + 1) <= REACH {
+            top += 1;
+        }
+        let d = |m: i32| first * 2f64.powi(m);
+        // Whether the m-th doubling's gap stands above the tolerance, or is unknown.
+        let rises = |m: i32| {
+            let g = gap_at(d(m));
+            (g.is_none_or(|g| g >= ABOVE * self.tol), g)
+        };
+        let start = self
+            .rise
+            .get()
+            .map_or(0, |r| (r / first).log2().round() as i32);
+        let mut m = start.clamp(0, top);
+        let (up, mut g) = rises(m);
+        if up {
+            while m > 0 {
+                let (below, gb) = rises(m - 1);
+                if !below {
+                    break;
+                }
+                (m, g) = (m - 1, gb);
+            }
+        } else {
+            loop {
+                m += 1;
+                if m > top {
+                    return None;
+                }
+                let (above, ga) = rises(m);
+                if above {
+                    g = ga;
+                    break;
+                }
+            }
+        }
+        let g = g?;
+        self.rise.set(Some(d(m)));
+        Some((d(m), g))
     }
 }
 
