@@ -5,8 +5,9 @@
 //! `−Jᵀ(JJᵀ + λI)⁻¹r`, damped near tangency), or on `n·(S(u, v) − p) = 0` for a plane section,
 //! until the residual is below the tolerance. A parameter reaching the edge of its domain is held
 //! there (the point then lies on the boundary curve) and a periodic one wraps, so seams and
-//! boundary edges keep their hits. Consecutive points are then densified — midpoints refined the
-//! same way — until the polyline is within the chord tolerance of the curve.
+//! boundary edges keep their hits; an open seed's end on a mesh's boundary is held on that edge
+//! from the start, so the curve ends on it. Consecutive points are then densified — midpoints
+//! refined the same way — until the polyline is within the chord tolerance of the curve.
 
 use crate::geom::mesh::Polyline3;
 use glam::{DMat3, DVec2, DVec3};
@@ -23,8 +24,20 @@ pub(crate) struct Node {
 }
 
 /// Carries `(uv_a, uv_b)` onto the intersection of `a` and `b` by minimum-norm Newton steps.
-pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) -> Node {
-    let mut fixed = [[false; 2]; 2];
+pub(crate) fn newton_pair(a: &Patch, b: &Patch, uv: [DVec2; 2], tol: f64) -> Node {
+    newton_pair_held(a, b, uv, [[false; 2]; 2], tol)
+}
+
+/// [`newton_pair`] with the parameters marked in `hold` kept where they start (on a domain
+/// edge: the curve's end there).
+fn newton_pair_held(
+    a: &Patch,
+    b: &Patch,
+    mut uv: [DVec2; 2],
+    hold: [[bool; 2]; 2],
+    tol: f64,
+) -> Node {
+    let mut fixed = hold;
     let mut best: Option<Node> = None;
     for it in 0..40 {
         let (pa, pb) = (a.eval(uv[0]), b.eval(uv[1]));
@@ -57,7 +70,8 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, mut uv: [DVec2; 2], tol: f64) ->
         }
         let ea = a.normalise(&mut uv[0]);
         let eb = b.normalise(&mut uv[1]);
-        fixed = [ea, eb];
+        let or = |e: [bool; 2], h: [bool; 2]| [e[0] || h[0], e[1] || h[1]];
+        fixed = [or(ea, hold[0]), or(eb, hold[1])];
     }
     best.unwrap_or(Node {
         uv,
@@ -201,12 +215,24 @@ pub(crate) fn refine_pair_curve(
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<Node> = Vec::with_capacity(seed.points.len());
     let mut prev: Option<[DVec2; 2]> = None;
-    for &p in &seed.points {
-        let start = [
+    let last = seed.points.len().saturating_sub(1);
+    for (i, &p) in seed.points.iter().enumerate() {
+        let mut start = [
             a.project(p, prev.map(|u| u[0])),
             b.project(p, prev.map(|u| u[1])),
         ];
-        let n = newton_pair(a, b, start, tol);
+        // An open seed ends where the meshes' curve leaves one of them: on its boundary, where
+        // the true curve ends too. Refined freely, the end slides along the curve off the edge
+        // (by the seed's error over the angle the curve makes with the edge: 9e-6 for a seed
+        // 1.5e-4 off at a 1/59 slope); held there, it ends on it.
+        let mut hold = [[false; 2]; 2];
+        if !seed.closed && (i == 0 || i == last) {
+            hold = [on_edge(a, p, &mut start[0]), on_edge(b, p, &mut start[1])];
+        }
+        let held = (hold != [[false; 2]; 2])
+            .then(|| newton_pair_held(a, b, start, hold, tol))
+            .filter(|h| h.residual <= tol);
+        let n = held.unwrap_or_else(|| newton_pair(a, b, start, tol));
         if n.residual <= tol {
             prev = Some(n.uv);
             nodes.push(n);
@@ -220,6 +246,31 @@ pub(crate) fn refine_pair_curve(
         tol,
         chord_tol,
     )
+}
+
+/// Which parameters of `uv` (the projection of the seed's end `p`) put it on a bounded edge of
+/// `patch` (not a seam or a pole), set exactly onto it. A mesh's boundary vertices lie on the
+/// true boundary, so an end on its boundary is as near the boundary curve as the mesh is to its
+/// surface: its distance to the edge point is taken against twice its distance to the surface
+/// (an end a cell inside is a cell from the edge, and that far from the surface only by the
+/// mesh's sag). The projection itself does not land on the edge where the surface slopes there
+/// (5e-8 inside it for an end 2.6e-5 off a 1/200 slope).
+fn on_edge(patch: &Patch, p: DVec3, uv: &mut DVec2) -> [bool; 2] {
+    let mut held = [false; 2];
+    let off = patch.eval(*uv).distance(p);
+    for k in 0..2 {
+        if patch.periodic()[k] {
+            continue;
+        }
+        let mut q = *uv;
+        q[k] = q[k].round();
+        let near = patch.eval(q).distance(p) <= 2.0 * off + 1e-12 * patch.scale();
+        if near && patch.bounds_at(q) {
+            *uv = q;
+            held[k] = true;
+        }
+    }
+    held
 }
 
 /// How far `p` lies from the farther of `a` and `b`.
@@ -307,11 +358,16 @@ fn leaving<'p>(end: DVec3, mut inner: impl Iterator<Item = &'p DVec3>) -> Option
 }
 
 /// A point of a plane section: Newton on `n·(S(u, v) − p0) = 0` (minimum-norm step).
-pub(crate) fn newton_plane(
+pub(crate) fn newton_plane(s: &Patch, uv: DVec2, p0: DVec3, n: DVec3, tol: f64) -> (DVec2, f64) {
+    newton_plane_held(s, uv, (p0, n), [false; 2], tol)
+}
+
+/// [`newton_plane`] with the parameters marked in `hold` kept where they start.
+fn newton_plane_held(
     s: &Patch,
     mut uv: DVec2,
-    p0: DVec3,
-    n: DVec3,
+    (p0, n): (DVec3, DVec3),
+    hold: [bool; 2],
     tol: f64,
 ) -> (DVec2, f64) {
     let mut r = n.dot(s.eval(uv) - p0);
@@ -320,7 +376,12 @@ pub(crate) fn newton_plane(
             break;
         }
         let (su, sv) = s.derivs(uv);
-        let g = DVec2::new(n.dot(su), n.dot(sv));
+        let mut g = DVec2::new(n.dot(su), n.dot(sv));
+        for k in 0..2 {
+            if hold[k] {
+                g[k] = 0.0;
+            }
+        }
         let g2 = g.length_squared();
         if g2 <= 1e-300 {
             break;
@@ -359,8 +420,18 @@ pub(crate) fn refine_section_loose(
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<(DVec2, DVec3)> = Vec::with_capacity(seed.points.len());
     let mut prev = None;
-    for &p in &seed.points {
-        let (uv, r) = newton_plane(s, s.project(p, prev), p0, n, tol);
+    let last = seed.points.len().saturating_sub(1);
+    for (i, &p) in seed.points.iter().enumerate() {
+        let mut start = s.project(p, prev);
+        // An open seed's end on the boundary: held there (see `refine_pair_curve`).
+        let mut hold = [false; 2];
+        if !seed.closed && (i == 0 || i == last) {
+            hold = on_edge(s, p, &mut start);
+        }
+        let held = (hold != [false; 2])
+            .then(|| newton_plane_held(s, start, (p0, n), hold, tol))
+            .filter(|h| h.1 <= tol);
+        let (uv, r) = held.unwrap_or_else(|| newton_plane(s, start, p0, n, tol));
         if r <= tol {
             prev = Some(uv);
             nodes.push((uv, s.eval(uv)));

@@ -368,7 +368,7 @@ const FINE: f64 = 1e-11;
 /// (beside a contact, whose double zero the search can fall on) or that is not ahead is refused
 /// and the step halved, so the walk ends within a hundredth of the tolerance of an edge or of
 /// where the crossing runs into the contact.
-fn march(
+pub(super) fn march(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     (uv, dir): (DVec2, DVec2),

@@ -13,7 +13,17 @@
 //! of each other and of both surfaces, and the lens closes across its tip. Beyond the tip the
 //! surfaces touch: the contact is traced from there (the seeds of the contact search that lie
 //! beside a tip are taken for the crossings', which run in there nearly tangent).
+//!
+//! A tongue of a crossing leaves such a chord too: where one surface dips just through the
+//! other at a small angle, the crossing can turn back in a loop narrower than the cells beyond
+//! where the seed cuts across it. Its tip is an ordinary point of the crossing, where the
+//! surfaces cross; the ridge there rises along its way (it does not flatten into a contact), and
+//! its walk stalled short of the tip, which was closed by a chord 2.5e-5 short of the arc round
+//! it and taken for a lens tip with a contact beyond. Tried first: the crossing marched on the
+//! true surfaces from one end of the chord round to the other ([`around`]); the ridge is walked
+//! where that march does not come back (along a lens's side it runs on into the contact).
 
+use super::alongside::{between, march};
 use super::branch::contact_curve_near;
 use super::line::{clamp_bounded, delta, settle, speed_along, GapAt};
 use super::{beside, near_any};
@@ -28,9 +38,9 @@ type Node = (DVec2, DVec3);
 const MAX_NODES: usize = 1 << 12;
 
 /// `c` with its chords that were left loose (among `loose`) and are off the surfaces (`off`, the
-/// distance to the farther, beyond `tol + chord_tol` at the chord's midpoint) carried across the
-/// tip of the lens each cuts, and the contacts traced from those tips. A chord that crosses no
-/// lens is left as it is: a seed curve that runs along a contact and then off along a crossing
+/// distance to the farther, beyond `tol + chord_tol` at the chord's midpoint) carried round the
+/// tongue of the crossing or across the tip of the lens each cuts, and the contacts traced from
+/// the lenses' tips. A chord that does neither is left as it is: a seed curve that runs along a contact and then off along a crossing
 /// leaving it has one too, and `regroup` takes such a curve apart (cut there, it came back as a
 /// second copy of the crossing's end).
 pub(crate) fn mend(
@@ -61,6 +71,10 @@ pub(crate) fn mend(
         if !broken.contains(&k) {
             continue;
         }
+        if let Some(fill) = around(a, gap, (pts, c.closed), k, (tol, chord_tol)) {
+            points.extend(fill);
+            continue;
+        }
         let res = across_tip(a, gap, off, (pts, c.closed), k, (tol, chord_tol));
         let Some((fill, tip)) = res else {
             continue;
@@ -77,6 +91,66 @@ pub(crate) fn mend(
         closed: c.closed,
     };
     (c, contacts)
+}
+
+/// How far (in lengths of the chord) the march round a tongue goes from the chord before giving
+/// up: a tongue thinner than the seeding cells all along its length is not followed farther.
+const REACH: f64 = 16.0;
+
+/// The points that replace the chord from `pts[k]` (P) to the next (Q) where it cuts across a
+/// tongue of the crossing thinner than the seeding cells (the crossing turns back beyond the
+/// chord, as a crossing at a small angle does where one surface dips just through the other):
+/// the crossing marched on the true surfaces from P, the way the curve runs into it, round to
+/// where it comes back to Q, densified within `chord_tol`. None where the march does not come
+/// back to Q (a lens, whose sides run into a contact at its tip: see [`across_tip`]), or where
+/// P or Q ends the curve (no way in, or out, to follow).
+fn around(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    (pts, closed): (&[DVec3], bool),
+    k: usize,
+    (tol, chord_tol): (f64, f64),
+) -> Option<Vec<DVec3>> {
+    let n = pts.len();
+    if !closed && (k == 0 || k + 2 >= n) {
+        return None;
+    }
+    let (p, q) = (pts[k], pts[(k + 1) % n]);
+    let (prev, next) = (pts[(k + n - 1) % n], pts[(k + 2) % n]);
+    let up = a.project(p, None);
+    let into = delta(a, a.project(prev, Some(up)), up);
+    let (chord, away) = (p.distance(q), next - q);
+    // A node past Q (beyond the plane across the curve there) is refused near it, so the march
+    // ends on that plane, at Q; and one too far from the chord anywhere.
+    let stop = |x: DVec3| {
+        ((x - q).dot(away) > 0.0 && x.distance(q) <= 0.5 * chord) || x.distance(p) > REACH * chord
+    };
+    // Along the crossing's tangent at P, not the way the curve came in: a seed curve that ran
+    // along a contact comes onto the crossing across it. The way in first; then the other.
+    let t = crossing_tangent(gap, up)?;
+    let t = if t.dot(into) < 0.0 { -t } else { t };
+    let mut nodes = [t, -t].into_iter().find_map(|t| {
+        let mut nodes = vec![(up, p)];
+        nodes.extend(march(a, gap, (up, t), 0.25 * chord, tol, &stop));
+        (nodes.len() >= 2 && nodes[nodes.len() - 1].1.distance(q) <= tol).then_some(nodes)
+    })?;
+    let last = nodes.len() - 1;
+    nodes[last] = (a.project(q, Some(nodes[last].0)), q);
+    let mid_of = |x: &Node, y: &Node| between(a, gap, x, y, tol);
+    let fill = assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol).points;
+    let inner = fill.len().saturating_sub(1);
+    Some(fill[1.min(inner)..inner].to_vec())
+}
+
+/// The unit tangent (in parameters) at `uv` of the zero set of the gap: across its gradient.
+fn crossing_tangent(gap: &dyn Fn(DVec2) -> GapAt, uv: DVec2) -> Option<DVec2> {
+    const D: f64 = 1e-7;
+    let h = |d: DVec2| gap(uv + d).signed;
+    let g = DVec2::new(
+        h(DVec2::X * D) - h(-DVec2::X * D),
+        h(DVec2::Y * D) - h(-DVec2::Y * D),
+    );
+    g.perp().try_normalize()
 }
 
 /// The points that replace the chord from `pts[k]` (P) to the next (Q) across the tip of the
