@@ -107,8 +107,8 @@ fn crossing_length(d0: f64, d1: f64, k: f64) -> f64 {
 }
 
 /// The contact and the crossing of [`patch`]`(d0, d1)` with z = 0: two open curves from θ = 0 to
-/// θ = π/2 (to 1e-9), the contact within max(|W|/4, `meet`) of r = 2 and the crossing of
-/// r = 2 + W(d(θ)), both with a point within `meet` of the branch point r = 2, d(θ) = 0 where
+/// θ = π/2 (to 1e-9), the contact on r = 2 and the crossing on r = 2 + W(d(θ)) (to
+/// [`on_contact`] and [`on_crossing`]), both with a point within `meet` of the branch point r = 2, d(θ) = 0 where
 /// they meet (a point within 1e-9 of both surfaces near it could be ∛1e-9 off either; it is
 /// solved there), lengths π and the quadrature's to 1e-6, every point within 1e-9 of the plane
 /// and of the patch (its height difference times the cosine of the patch's slope).
@@ -122,6 +122,26 @@ fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), meet: f64) {
 /// along that edge does (4.5e-11 seen from the patch's parameters; 6.0e-13 from the plate's,
 /// the gap then taken along the patch's edge from the patch to the plate).
 const MEET: f64 = 2e-9;
+
+/// How far a crossing point may be from the closed form where the crossing is W from the
+/// contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
+/// (about 4e-16 here) over its slope across the crossing (W², the gap across being
+/// w²(d(1 − w²) − w)) with a margin of 5: where the surfaces part more slowly than that no
+/// computation tells the crossing's point, nor ever farther than W/4 (the contact's side).
+/// Seen: up to 1.3e-6 at W = 1.8e-5 (0.14e-3 from the branch point), 1.3e-7 at W = 5.7e-5;
+/// on c948918, 3.3e-5 at W = 5.3e-4 and 5e-8 where W > 3e-2 (points whose gap came within
+/// 0.01·tol were taken for the crossing's, however flat the gap across it).
+fn on_crossing(w: f64) -> f64 {
+    (2e-15 / (w * w)).min(0.25 * w.abs()).max(1e-9)
+}
+
+/// How far a contact point may be from r = 2: 2e-8 (seen: 1.83e-8 at the contact's ends on the
+/// patch's edges, traced from the plate's parameters; 5.5e-9 elsewhere away from the branch
+/// point), nearer the branch point 2e-11/W (the gap across the contact, d·w², flattens with d,
+/// about W: seen 8.1e-8 at W = 9.8e-5, patch ∩ cone), never farther than W/4.
+fn on_contact(w: f64) -> f64 {
+    (2e-11 / w.abs()).min(0.25 * w.abs()).max(2e-8)
+}
 
 /// [`check`] for [`sloped_patch`] against the cone z = k·w (the plane z = 0 for k = 0): the
 /// distance to the cone is |z − k·w|·cos(atan k) (the cone is straight along its generators, and
@@ -143,6 +163,22 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
         panic!("{name}: {}", summary(r));
     };
     assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
+    // On the curves themselves, not only within the tolerance of both surfaces (which, where
+    // they meet at a small angle, leaves a point far off the curve): see ON_CROSSING, ON_CONTACT.
+    for (c, k, allow) in [
+        (crossing, 1.0, on_crossing as fn(f64) -> f64),
+        (contact, 0.0, on_contact),
+    ] {
+        for p in &c.points {
+            let (r, th) = polar(p);
+            let w = root(d(th));
+            let off = (r - 2.0 - k * w).abs();
+            assert!(
+                off <= allow(w).max(meet),
+                "{name}: {p} {off:e} off (W = {w:e})"
+            );
+        }
+    }
     let th = -d0 / (d1 - d0) * FRAC_PI_2;
     let branch = DVec3::new(2.0 * th.cos(), 2.0 * th.sin(), 0.0);
     assert_meet_at(name, &[contact, crossing], branch, meet);

@@ -76,6 +76,24 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     let (Some(contact), Some(crossing)) = (contact, crossing) else {
         panic!("{name}: {}", summary(r));
     };
+    // On the curves themselves, to what the gap's rounding allows (as in surface_contact_branch):
+    // within 1e-9 of y = d (or 2e-8 of y = 0) but where the gap across flattens near a branch
+    // point, its slope there d² (d for the contact), never farther than d/4.
+    for (c, k) in [(crossing, 1.0), (contact, 0.0)] {
+        for p in &c.points {
+            let w = d(p.x);
+            let off = (p.y - k * w).abs();
+            let allow = if k == 1.0 {
+                (2e-15 / (w * w)).min(0.25 * w.abs()).max(1e-9)
+            } else {
+                (2e-11 / w.abs()).min(0.25 * w.abs()).max(2e-8)
+            };
+            assert!(
+                off <= allow.max(2e-9),
+                "{name}: {p} {off:e} off (d = {w:e})"
+            );
+        }
+    }
     if d0 * d1 <= 0.0 {
         let branch = DVec3::new(-d0 * 4.0 / (d1 - d0), 0.0, 0.0);
         assert_meet_at(name, &[contact, crossing], branch, 2e-9);

@@ -291,13 +291,14 @@ fn first_crossing(
 }
 
 /// The zero of the gap on the line `uv + t·w` nearest `uv` (Newton with a difference
-/// derivative), when the surfaces meet there within `tol`. Newton goes on past a value within
-/// 0.01·`tol` while its next step would be longer than [`FINE`]: near a branch point the gap
-/// across the crossing flattens (its slope about the square of the distance to the point), and
-/// a value that small leaves the root up to ∛tol off there. It goes on only while its steps
-/// shrink fourfold or faster, as they do onto a simple root; halving, they are falling onto the
-/// contact's double zero beside it, and the point where the value first came within 0.01·`tol`
-/// is kept.
+/// derivative), when the surfaces meet there within `tol`. A value within 0.01·`tol` is not
+/// the end: near a branch point the gap across the crossing flattens (its slope about the
+/// square of the distance to the point), and a value that small leaves the root up to ∛tol off
+/// there (a value already that small where it starts, too: a chord's midpoint, a step along the
+/// tangent). Where the next step would be longer than [`FINE`], the root is bracketed by a change
+/// of sign (see [`onto_sign_change`]); the contact's double zero beside it has none, and where
+/// none is found (Newton falling onto the contact) the point where the value came within
+/// 0.01·`tol` is kept.
 fn root_along(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
@@ -307,55 +308,90 @@ fn root_along(
 ) -> Option<DVec2> {
     const D: f64 = 1e-7;
     let h = |t: f64| gap(uv + w * t).signed;
+    let slope_at = |t: f64| (h(t + D) - h(t - D)) / (2.0 * D);
     let mut t = 0.0;
-    // The last Newton step's slope, and, once the value is within 0.01·tol, where it came in
-    // and the last step past it.
+    // The last Newton step's slope.
     let mut slope_last: Option<f64> = None;
-    let mut band: Option<(f64, f64)> = None;
-    let mut done = false;
     for _ in 0..30 {
         let v = h(t);
-        if v.abs() <= 0.01 * tol {
-            let Some(s) = slope_last else {
-                done = true;
-                break;
-            };
-            let next = (v / s).abs();
-            // Within FINE, or at the gap's noise.
-            if next <= FINE || v.abs() <= 1e-14 {
-                done = true;
-                break;
-            }
-            match band {
-                Some((t0, prev)) if next > 0.25 * prev => {
-                    t = t0;
-                    done = true;
-                    break;
-                }
-                Some((t0, _)) => band = Some((t0, next)),
-                None => band = Some((t, next)),
-            }
-        }
-        let slope = (h(t + D) - h(t - D)) / (2.0 * D);
+        let slope = slope_last.filter(|_| v.abs() <= 0.01 * tol);
+        let slope = slope.unwrap_or_else(|| slope_at(t));
         if !(slope.abs() > 0.0 && slope.is_finite()) {
-            match band {
-                Some((t0, _)) => {
-                    t = t0;
-                    done = true;
-                    break;
-                }
-                None => return None,
+            if v.abs() <= 0.01 * tol {
+                break;
             }
+            return None;
+        }
+        if v.abs() <= 0.01 * tol {
+            if (v / slope).abs() > FINE {
+                t = onto_sign_change(&h, (t, v), -v / slope);
+            }
+            break;
         }
         t -= (v / slope).clamp(-0.05, 0.05);
         slope_last = Some(slope);
     }
-    if let (false, Some((t0, _))) = (done, band) {
-        t = t0;
-    }
     let mut m = uv + w * t;
     a.normalise(&mut m);
     (gap(m).dist <= tol).then_some(m)
+}
+
+/// From `t0` (where `h` is `v0`, within the tolerance), the root a Newton step `step` points
+/// at, bracketed: the step doubled (up to 64 times its length) until `h` changes sign, then
+/// regula falsi (Illinois) to within [`FINE`]. A crossing is a simple root, where the gap
+/// changes sign; a contact a double one, where it does not: a step falling onto the contact
+/// finds no bracket, and `t0` is kept.
+fn onto_sign_change(h: &dyn Fn(f64) -> f64, (t0, v0): (f64, f64), step: f64) -> f64 {
+    let mut far = None;
+    let mut s = step;
+    for _ in 0..7 {
+        let v = h(t0 + s);
+        if v == 0.0 {
+            return t0 + s;
+        }
+        if v.signum() != v0.signum() && v.is_finite() {
+            far = Some((t0 + s, v));
+            break;
+        }
+        s *= 2.0;
+    }
+    let Some(mut hi) = far else {
+        return t0;
+    };
+    let mut lo = (t0, v0);
+    // Which end the last step replaced: the other's value is halved when it stays twice
+    // running (Illinois), so the bracket closes from both sides.
+    let mut kept = 0;
+    for _ in 0..60 {
+        if (hi.0 - lo.0).abs() <= FINE {
+            break;
+        }
+        let t = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
+        let v = h(t);
+        if v == 0.0 || !v.is_finite() {
+            return if v == 0.0 { t } else { lo.0 };
+        }
+        let side = if v.signum() == lo.1.signum() { 1 } else { 2 };
+        if side == kept {
+            // The other end stayed put twice running.
+            if side == 1 {
+                hi.1 *= 0.5;
+            } else {
+                lo.1 *= 0.5;
+            }
+        }
+        if side == 1 {
+            lo = (t, v);
+        } else {
+            hi = (t, v);
+        }
+        kept = side;
+    }
+    if lo.1.abs() <= hi.1.abs() {
+        lo.0
+    } else {
+        hi.0
+    }
 }
 
 /// How far (in parameters) [`root_along`]'s Newton is taken past a value within 0.01·tol: about
