@@ -123,8 +123,8 @@ fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), meet: f64) {
 /// the gap then taken along the patch's edge from the patch to the plate).
 const MEET: f64 = 2e-9;
 
-/// How far a crossing point may be from the closed form where the crossing is W from the
-/// contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
+/// How far a crossing point may be from the closed form (its difference in r times the cosine
+/// of the crossing's slope to the circle) where the crossing is W from the contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
 /// (about 4e-16 here) over its slope across the crossing (W², the gap across being
 /// w²(d(1 − w²) − w)) with a margin of 5: where the surfaces part more slowly than that no
 /// computation tells the crossing's point, nor ever farther than W/4 (the contact's side).
@@ -165,6 +165,13 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
     assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
     // On the curves themselves, not only within the tolerance of both surfaces (which, where
     // they meet at a small angle, leaves a point far off the curve): see ON_CROSSING, ON_CONTACT.
+    // The crossing's slope: r′(θ)/r, its distance from a point the difference in r times cos.
+    let dd = (d1 - d0) / FRAC_PI_2;
+    let cos = |th: f64, k: f64| {
+        let (d, w) = (d(th), root(d(th)));
+        let slope = k * (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd / (2.0 + w);
+        1.0 / (1.0 + slope * slope).sqrt()
+    };
     for (c, k, allow) in [
         (crossing, 1.0, on_crossing as fn(f64) -> f64),
         (contact, 0.0, on_contact),
@@ -172,7 +179,7 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
         for p in &c.points {
             let (r, th) = polar(p);
             let w = root(d(th));
-            let off = (r - 2.0 - k * w).abs();
+            let off = (r - 2.0 - k * w).abs() * cos(th, k);
             assert!(
                 off <= allow(w).max(meet),
                 "{name}: {p} {off:e} off (W = {w:e})"
@@ -334,5 +341,30 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone() {
         let r = run();
         check_sloped(name, &r, (d0, d1), k, MEET);
         assert_same_bits(name, &run(), &r);
+    }
+}
+
+/// A crossing through a curved contact at a branch point near the patch's edge θ = 0 but not
+/// on it: 5e-3 and 1.5e-2 along the contact from the edge, d running steeply (by 16 over the
+/// quarter turn) so that the crossing's stub between the edge and the branch point parts from
+/// the contact by far more than the tolerance (its gap to the plane there reaches 4|d0|³/27,
+/// 2.5e-6 for the nearer). Neither way of solving the branch point reached it on c948918: the
+/// Hessian's stencils need about 2e-2 of room (`branch_point`), and the edge's own (`edge_meeting`)
+/// only serves a branch point on the edge.
+///
+/// Open: with the stencils narrowed to fit (`branch_point`), the branch point is solved (a point
+/// of both curves within 1e-12 of it) in the section and in patch ∩ plate, but not in plate ∩
+/// patch (1.9e-7 away); and in patch ∩ plate and plate ∩ patch the crossing has points
+/// 3.5e-4..5e-4 from the branch point up to 5.8e-5 off it in r (about 1.1e-5 across), within
+/// 1e-9 of both surfaces. The section passes at both seeds.
+#[test]
+#[ignore = "open: near-edge branch point not solved from the plate, crossing points 1e-5 off near it"]
+fn a_crossing_through_a_curved_contact_near_an_edge_comes_back_whole_with_it() {
+    for s in [5e-3, 1.5e-2] {
+        let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
+        for seed in [1e-2, 1e-3] {
+            both_curves_come_back((d0, d0 + 16.0), seed, false);
+            both_curves_come_back((d0, d0 + 16.0), seed, true);
+        }
     }
 }

@@ -96,9 +96,12 @@ fn newton_pair_held(
 
 /// Whether Newton, its residual now `r` (within 0.01·`tol`), is to go on: where its `last` step
 /// (length in space, residual before it) says the next would be longer than 0.01·`tol` (the
-/// step scales with the residual, the slope about the same), or where there was no step to say.
+/// step scales with the residual, the slope about the same) and the residual fell sixteenfold
+/// (onto a simple root; onto a tangent contact's double zero it falls fourfold, and the point
+/// is already within the tolerance of both). Not where there was no step to say: a start that
+/// close (a midpoint between two points of a contact, mostly) is taken as it is, as before.
 fn goes_on(last: Option<(f64, f64)>, r: f64, tol: f64) -> bool {
-    last.is_none_or(|(len, r0)| len * r > 0.01 * tol * r0)
+    last.is_some_and(|(len, r0)| 16.0 * r <= r0 && len * r > 0.01 * tol * r0)
 }
 
 /// Whether a step of length `len` past a residual within 0.01·`tol` is taken: while it is longer

@@ -340,20 +340,23 @@ fn root_along(
 /// at, bracketed: the step doubled (up to 64 times its length) until `h` changes sign, then
 /// regula falsi (Illinois) to within [`FINE`]. A crossing is a simple root, where the gap
 /// changes sign; a contact a double one, where it does not: a step falling onto the contact
-/// finds no bracket, and `t0` is kept.
+/// finds no bracket, and the crossing is looked for the other way (beside a branch point `t0`
+/// can lie between the two); where neither way has one, `t0` is kept.
 fn onto_sign_change(h: &dyn Fn(f64) -> f64, (t0, v0): (f64, f64), step: f64) -> f64 {
     let mut far = None;
-    let mut s = step;
-    for _ in 0..7 {
-        let v = h(t0 + s);
-        if v == 0.0 {
-            return t0 + s;
+    'sides: for side in [1.0, -1.0] {
+        let mut s = side * step;
+        for _ in 0..7 {
+            let v = h(t0 + s);
+            if v == 0.0 {
+                return t0 + s;
+            }
+            if v.signum() != v0.signum() && v.is_finite() {
+                far = Some((t0 + s, v));
+                break 'sides;
+            }
+            s *= 2.0;
         }
-        if v.signum() != v0.signum() && v.is_finite() {
-            far = Some((t0 + s, v));
-            break;
-        }
-        s *= 2.0;
     }
     let Some(mut hi) = far else {
         return t0;

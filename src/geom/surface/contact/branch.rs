@@ -205,8 +205,9 @@ const STEP: f64 = 4e-3;
 /// on the Hessian's three components by fourth-order differences, the Jacobian (the third
 /// derivatives, regular where the crossing is transverse) by differences of those. Found so,
 /// the point does not depend on where the crossing's last points are, which are known only to
-/// about ∛tol across near it. None near a bounded edge (the stencil would leave the surface),
-/// or when it does not converge, leaves `r`, or the surfaces do not meet there within `tol`.
+/// about ∛tol across near it. Within 2.4e-2 of a bounded edge the stencils are narrowed across
+/// it to fit (their noise grows as the square of that); None within 1.5e-3 of one, or when it
+/// does not converge, leaves `r`, or the surfaces do not meet there within `tol`.
 fn branch_point(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
@@ -221,8 +222,20 @@ fn branch_point(
     if !(lu > 0.0 && lv > 0.0 && lu.is_finite() && lv.is_finite()) {
         return None;
     }
-    // Coordinates in which a unit is about STEP in space each way.
-    let unit = DVec2::new(STEP / lu, STEP / lv);
+    // Coordinates in which a unit is about STEP in space each way, or, across a bounded edge
+    // nearer than the stencils reach (six units: four for the wider one, one for the
+    // Jacobian's, one to move), shorter, to fit: down to a sixteenth (1.5e-3 in space from the
+    // edge), nearer than which the branch point is the edge's (see `edge_meeting`).
+    let mut unit = DVec2::new(STEP / lu, STEP / lv);
+    for k in 0..2 {
+        let room = w[k].min(1.0 - w[k]) / 6.0;
+        if !a.periodic()[k] && room < unit[k] {
+            if room < unit[k] / 16.0 {
+                return None;
+            }
+            unit[k] = room;
+        }
+    }
     let f = |x: DVec2| gap(uv0 + x * unit).signed;
     // On a stencil of `s` units: fourth order.
     let hess_on = |x: DVec2, s: f64| {
