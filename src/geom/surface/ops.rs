@@ -97,8 +97,12 @@ fn section_seeded(
         let curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| {
-                let (r, loose) =
-                    super::refine::refine_section_loose(&patch, c, plane, geom_tol, tol);
+                let (r, loose) = super::refine::refine_section_loose(
+                    &patch,
+                    c,
+                    plane,
+                    (geom_tol, tol, seed_tol),
+                );
                 let (r, t) =
                     super::contact::mend_section(&patch, plane, r, &loose, (geom_tol, tol));
                 tips.extend(t);
@@ -435,7 +439,7 @@ fn through_meshes(
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
-            let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, gtol, ctol);
+            let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, (gtol, ctol, seed_tol));
             let (mut r, t) = super::contact::mend_pair(&pa, &pb, r, &loose, (gtol, ctol));
             tips.extend(t);
             all_loose.extend(loose);

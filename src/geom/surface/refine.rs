@@ -237,13 +237,13 @@ fn pair_mid<'p>(
 
 /// One seeded polyline refined onto both surfaces and densified within `chord_tol`, with its
 /// loose chords (see [`assemble_loose`]). Points that do not converge (a seed far from any true
-/// intersection) are dropped.
+/// intersection) are dropped. `seed_tol` bounds how far the seeding meshes' boundary chords lie
+/// from the surfaces' edges.
 pub(crate) fn refine_pair_curve(
     a: &Patch,
     b: &Patch,
     seed: &Polyline3,
-    tol: f64,
-    chord_tol: f64,
+    (tol, chord_tol, seed_tol): (f64, f64, f64),
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<Node> = Vec::with_capacity(seed.points.len());
     let mut prev: Option<[DVec2; 2]> = None;
@@ -259,7 +259,10 @@ pub(crate) fn refine_pair_curve(
         // 1.5e-4 off at a 1/59 slope); held there, it ends on it.
         let mut hold = [[false; 2]; 2];
         if !seed.closed && (i == 0 || i == last) {
-            hold = [on_edge(a, p, &mut start[0]), on_edge(b, p, &mut start[1])];
+            hold = [
+                on_edge(a, p, &mut start[0], seed_tol),
+                on_edge(b, p, &mut start[1], seed_tol),
+            ];
         }
         let held = (hold != [[false; 2]; 2])
             .then(|| newton_pair_held(a, b, start, hold, tol))
@@ -283,11 +286,14 @@ pub(crate) fn refine_pair_curve(
 /// Which parameters of `uv` (the projection of the seed's end `p`) put it on a bounded edge of
 /// `patch` (not a seam or a pole), set exactly onto it. A mesh's boundary vertices lie on the
 /// true boundary, so an end on its boundary is as near the boundary curve as the mesh is to its
-/// surface: its distance to the edge point is taken against twice its distance to the surface
-/// (an end a cell inside is a cell from the edge, and that far from the surface only by the
+/// surface, or as its boundary chord sags from a curved edge (within `seed_tol`, the mesh's
+/// tolerance; where the edge bends in the surface's own plane the chord lies on the surface,
+/// 2.5e-3 inside the edge at seed 1e-2, and only this tells). Its distance to the edge point is
+/// taken against twice its distance to the surface plus `seed_tol` (an end a cell inside is a
+/// cell from the edge, at least ~2.8 `seed_tol`, and that far from the surface only by the
 /// mesh's sag). The projection itself does not land on the edge where the surface slopes there
 /// (5e-8 inside it for an end 2.6e-5 off a 1/200 slope).
-fn on_edge(patch: &Patch, p: DVec3, uv: &mut DVec2) -> [bool; 2] {
+fn on_edge(patch: &Patch, p: DVec3, uv: &mut DVec2, seed_tol: f64) -> [bool; 2] {
     let mut held = [false; 2];
     let off = patch.eval(*uv).distance(p);
     for k in 0..2 {
@@ -296,7 +302,7 @@ fn on_edge(patch: &Patch, p: DVec3, uv: &mut DVec2) -> [bool; 2] {
         }
         let mut q = *uv;
         q[k] = q[k].round();
-        let near = patch.eval(q).distance(p) <= 2.0 * off + 1e-12 * patch.scale();
+        let near = patch.eval(q).distance(p) <= 2.0 * off + seed_tol + 1e-12 * patch.scale();
         if near && patch.bounds_at(q) {
             *uv = q;
             held[k] = true;
@@ -444,7 +450,8 @@ fn newton_plane_held(
     (uv, r.abs())
 }
 
-/// One seeded plane-section polyline refined onto the surface and densified.
+/// One seeded plane-section polyline refined onto the surface and densified, its seed not from
+/// a mesh (no boundary chord to hold on an edge beyond the surface's own distance).
 pub(crate) fn refine_section_curve(
     s: &Patch,
     seed: &Polyline3,
@@ -453,16 +460,16 @@ pub(crate) fn refine_section_curve(
     tol: f64,
     chord_tol: f64,
 ) -> Polyline3 {
-    refine_section_loose(s, seed, (p0, n), tol, chord_tol).0
+    refine_section_loose(s, seed, (p0, n), (tol, chord_tol, 0.0)).0
 }
 
-/// [`refine_section_curve`] with its loose chords (see [`assemble_loose`]).
+/// [`refine_section_curve`] with its loose chords (see [`assemble_loose`]), the seed from a mesh
+/// made within `seed_tol` (see [`on_edge`]).
 pub(crate) fn refine_section_loose(
     s: &Patch,
     seed: &Polyline3,
     (p0, n): (DVec3, DVec3),
-    tol: f64,
-    chord_tol: f64,
+    (tol, chord_tol, seed_tol): (f64, f64, f64),
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<(DVec2, DVec3)> = Vec::with_capacity(seed.points.len());
     let mut prev = None;
@@ -472,7 +479,7 @@ pub(crate) fn refine_section_loose(
         // An open seed's end on the boundary: held there (see `refine_pair_curve`).
         let mut hold = [false; 2];
         if !seed.closed && (i == 0 || i == last) {
-            hold = on_edge(s, p, &mut start);
+            hold = on_edge(s, p, &mut start, seed_tol);
         }
         let held = (hold != [false; 2])
             .then(|| newton_plane_held(s, start, (p0, n), hold, tol))
