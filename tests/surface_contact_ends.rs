@@ -7,7 +7,7 @@ use lispcad::geom::surface::{surface_intersect_seeded, Surface};
 use lispcad::geom::DVec3;
 
 mod surface_support;
-use surface_support::{cylinders, summary};
+use surface_support::{assert_chords_on, cylinders, summary};
 
 #[test]
 fn a_contact_line_ends_at_the_other_surfaces_boundary_to_geomtol() {
@@ -48,6 +48,18 @@ fn a_contact_line_ends_at_the_other_surfaces_boundary_to_geomtol() {
                 }
                 let l = c.length();
                 assert!((l - 2.0).abs() <= 2e-9, "{name} {tilt}: {l}");
+                // Every chord's midpoint on the cylinder and on the plate (within its extent in
+                // x: the contact runs along x), to CHORDTOL 1e-6 + GEOMTOL.
+                let off = |p: DVec3| {
+                    let rho = (p.y * p.y + (p.z - 1.0) * (p.z - 1.0)).sqrt();
+                    let beyond = if (1.0..=3.0).contains(&p.x) {
+                        0.0
+                    } else {
+                        f64::INFINITY
+                    };
+                    m.dot(p - ruling).abs().max((rho - 1.0).abs()).max(beyond)
+                };
+                assert_chords_on(&format!("{name} {tilt}"), &r, off, 1e-6 + 1e-9);
                 for _ in 0..2 {
                     let again = surface_intersect_seeded(x, y, 1e-2, 1e-6, 1e-9).unwrap();
                     assert!(again.len() == r.len());

@@ -12,7 +12,7 @@ use std::f64::consts::PI;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{cylinders, summary};
+use surface_support::{assert_chords_on, cylinders, summary};
 
 /// The square region of half-size `h` about `c` spanned by the unit vectors `e1`, `e2`.
 fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
@@ -45,6 +45,25 @@ fn assert_ruling(name: &str, r: &[Polyline3], ruling: DVec3, n: DVec3) {
         assert!((rho - 1.0).abs() <= 1e-9, "{name}: {p} off the cylinder");
     }
     assert!((c.length() - 4.0).abs() <= 1e-9, "{name}: {}", c.length());
+    // Every chord's midpoint on both (CHORDTOL 1e-6 + GEOMTOL), infinite off the cylinder's
+    // length.
+    let off = |p: DVec3| {
+        let rho = (p.y * p.y + (p.z - 1.0) * (p.z - 1.0)).sqrt();
+        let beyond = if (0.0..=4.0).contains(&p.x) {
+            0.0
+        } else {
+            f64::INFINITY
+        };
+        n.dot(p - ruling).abs().max((rho - 1.0).abs()).max(beyond)
+    };
+    assert_chords_on(name, r, off, 1e-6 + 1e-9);
+}
+
+/// The distance from `p` to the farther of the torus [`torus`] and the plane z = `z`.
+fn off_torus_and_level(p: DVec3, z: f64) -> f64 {
+    let rho = p.truncate().length();
+    let tube = ((rho - 3.0).powi(2) + p.z * p.z).sqrt() - 1.0;
+    tube.abs().max((p.z - z).abs())
 }
 
 #[test]
@@ -90,6 +109,8 @@ fn a_torus_under_a_plane_region_gives_its_top_circle_closed() {
     // Inscribed within 1e-6 of the circle: its length to 1e-6.
     let l = r[0].length();
     assert!((l - 6.0 * PI).abs() <= 1e-6 * 6.0 * PI, "{l}");
+    let off = |p: DVec3| off_torus_and_level(p, 1.0);
+    assert_chords_on("torus top", &r, off, 1e-6 + 1e-9);
     // Lifted 1e-3: nothing.
     let lifted = region(DVec3::new(0.0, 0.0, 1.001), DVec3::X, DVec3::Y, 5.0);
     assert!(surface_intersect_seeded(&t, &lifted, 1e-2, 1e-6, 1e-9)

@@ -15,6 +15,35 @@ fn section(s: &Surface, p: DVec3, n: DVec3) -> Vec<Polyline3> {
     surface_section_tol(s, p, n, 1e-7, 1e-9).unwrap()
 }
 
+/// That the midpoint of every chord of `r` is within CHORDTOL + GEOMTOL (1e-7 + 1e-9 here) of
+/// both the plane through `p0` with unit normal `n` and the surface (`off_surface`, a closed
+/// form).
+fn assert_chords_on(
+    name: &str,
+    r: &[Polyline3],
+    (p0, n): (DVec3, DVec3),
+    off_surface: impl Fn(DVec3) -> f64,
+) {
+    for c in r {
+        let k = c.points.len();
+        let segs = if c.closed { k } else { k.saturating_sub(1) };
+        for i in 0..segs {
+            let m = 0.5 * (c.points[i] + c.points[(i + 1) % k]);
+            let d = n.dot(m - p0).abs().max(off_surface(m));
+            assert!(
+                d <= 1e-7 + 1e-9,
+                "{name}: chord {i}'s midpoint {m} {d:e} off"
+            );
+        }
+    }
+}
+
+/// The distance from `p` to the torus [`torus`].
+fn off_torus(p: DVec3) -> f64 {
+    let rho = p.truncate().length();
+    (((rho - 3.0).powi(2) + p.z * p.z).sqrt() - 1.0).abs()
+}
+
 fn one_point(r: &[Polyline3]) -> DVec3 {
     assert_eq!(r.len(), 1, "{r:?}");
     assert_eq!(r[0].points.len(), 1, "{r:?}");
@@ -55,6 +84,8 @@ fn a_plane_tangent_to_a_cylinder_gives_the_ruling() {
     let ends_ok = (a.distance(e0) <= 1e-12 && b.distance(e1) <= 1e-12)
         || (a.distance(e1) <= 1e-12 && b.distance(e0) <= 1e-12);
     assert!(ends_ok, "{a} {b}");
+    let off = |p: DVec3| (p - axis * p.dot(axis)).length() - 1.0;
+    assert_chords_on("ruling", &r, (DVec3::X, DVec3::X), |p| off(p).abs());
     assert!(section(&s, DVec3::X * 1.001, DVec3::X).is_empty());
 }
 
@@ -71,6 +102,7 @@ fn the_top_plane_of_a_torus_gives_its_top_circle() {
         }
         let l = r[0].length();
         assert!((l - 6.0 * PI).abs() <= 1e-6 * 6.0 * PI, "{l}");
+        assert_chords_on("top circle", &r, (DVec3::Z * z, DVec3::Z), off_torus);
     }
     assert!(section(&t, DVec3::new(0.0, 0.0, 1.001), DVec3::Z).is_empty());
 }
@@ -108,5 +140,6 @@ fn a_plane_touching_a_torus_beside_its_axis_gives_the_point_the_mesh_misses() {
             let rho = q.truncate().length();
             assert!((((rho - 3.0).powi(2) + q.z * q.z).sqrt() - 1.0).abs() <= 1e-12);
         }
+        assert_chords_on("small loop", &r, (p0 - n * 1e-3, n), off_torus);
     }
 }

@@ -90,10 +90,11 @@ fn section_seeded(
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
         let plane = (plane_point, n);
+        // Every chord returned is checked (`loose::settle_section`) but those densifying vouched
+        // for meanwhile.
+        let _ledger = super::loose::Ledger::open();
         // The contacts traced from the tips of lenses the seeds cut across (see `mend_section`).
         let mut tips: Vec<Polyline3> = Vec::new();
-        // The chords left loose (for the last check, `loose::settle_section`).
-        let mut all_loose: Vec<[DVec3; 2]> = Vec::new();
         let curves: Vec<Polyline3> = seeds
             .iter()
             .map(|c| {
@@ -106,7 +107,6 @@ fn section_seeded(
                 let (r, t) =
                     super::contact::mend_section(&patch, plane, r, &loose, (geom_tol, tol));
                 tips.extend(t);
-                all_loose.extend(loose);
                 r
             })
             .filter(|c| !c.points.is_empty())
@@ -118,15 +118,15 @@ fn section_seeded(
             (seed_tol, geom_tol, tol),
         );
         curves.extend(tips);
-        let mut curves =
-            super::loose::settle_section(&patch, plane, curves, &all_loose, (geom_tol, tol));
+        let settle = |c| super::loose::settle_section(&patch, plane, c, (geom_tol, tol));
+        let mut curves = settle(curves);
         if !contacts {
             return Ok(curves);
         }
         let touch = (plane_point, n);
         let tols = (seed_tol, tol);
         let contacts = super::contact::plane_contacts(&patch, &m, touch, &curves, tols, geom_tol);
-        curves.extend(contacts);
+        curves.extend(settle(contacts));
         // A region lying in the plane narrower than the samples and the seed grid (a short
         // flat between creases) shows as a crossing or contact along it: looked for from the
         // curves. Only where the surface is tangent to the plane at one of their middle points:
@@ -139,9 +139,9 @@ fn section_seeded(
         let flat = |p: &DVec3| super::common::flat_on_plane(&patch, *p, plane, geom_tol);
         if mids.iter().any(flat) {
             if let Some(mut l) = super::common::in_plane(s, plane, &mids, geom_tol, tol) {
-                l.extend(super::common::outside_plane_region(
+                l.extend(settle(super::common::outside_plane_region(
                     s, plane, curves, geom_tol,
-                ));
+                )));
                 return Ok(l);
             }
         }
@@ -432,17 +432,17 @@ fn through_meshes(
         chord_tol: ctol,
         seed_tol,
     };
+    // Every chord returned is checked (`loose::settle_pair`) but those densifying vouched for
+    // meanwhile.
+    let _ledger = super::loose::Ledger::open();
     // The contacts traced from the tips of lenses the seeds cut across (see `mend_pair`).
     let mut tips: Vec<Polyline3> = Vec::new();
-    // The chords left loose (for the last check, `loose::settle_pair`).
-    let mut all_loose: Vec<[DVec3; 2]> = Vec::new();
     let curves: Vec<Polyline3> = seeds
         .iter()
         .map(|c| {
             let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, (gtol, ctol, seed_tol));
             let (mut r, t) = super::contact::mend_pair(&pa, &pb, r, &loose, (gtol, ctol));
             tips.extend(t);
-            all_loose.extend(loose);
             super::refine::close_gap(&pa, &pb, &mut r, gtol, ctol);
             r
         })
@@ -460,7 +460,8 @@ fn through_meshes(
     if let Some((r, loops)) = region.as_mut() {
         curves = outside(r, (&pa, &pb), curves, loops, reach);
     }
-    curves = super::loose::settle_pair(&pa, &pb, curves, &all_loose, (gtol, ctol));
+    let settle = |c| super::loose::settle_pair(&pa, &pb, c, (gtol, ctol));
+    curves = settle(curves);
     if !contacts {
         return Ok(curves);
     }
@@ -489,7 +490,7 @@ fn through_meshes(
         Some((r, loops)) => outside(r, (&pa, &pb), touch, loops, reach),
         None => touch,
     };
-    curves.extend(touch);
+    curves.extend(settle(touch));
     Ok(curves)
 }
 

@@ -169,38 +169,95 @@ pub(crate) fn assemble_loose<N: Copy>(
     let segs = if closed { m } else { m.saturating_sub(1) };
     let mut out = Dense {
         points: Vec::with_capacity(m * 2),
+        nodes: Vec::with_capacity(m * 2),
         loose: Vec::new(),
     };
     for i in 0..m {
         out.points.push(pos(&nodes[i]));
+        out.nodes.push(nodes[i]);
         if i < segs {
             let ends = (nodes[i], nodes[(i + 1) % m]);
             densify(ends, pos, mid, (tol, chord_tol), 0, &mut out);
         }
     }
-    out.points.dedup_by(|x, y| x.distance(*y) <= tol);
-    let curve = Polyline3 {
-        points: out.points,
-        closed: closed && m >= 3,
-    };
-    (curve, out.loose)
+    let closed = closed && m >= 3;
+    let points = dedup(&out, closed, (pos, mid), (tol, chord_tol));
+    (Polyline3 { points, closed }, out.loose)
 }
 
-/// The points of a curve being densified, and its loose chords (see [`assemble_loose`]).
-struct Dense {
+/// The points of `d` less those within `tol` of the last one kept (refined twice over, as
+/// from seed points either side of a seam); a chord that now spans a dropped point is checked
+/// again, so that densifying vouches for it too (see [`densify`]).
+fn dedup<N: Copy>(
+    d: &Dense<N>,
+    closed: bool,
+    (pos, mid): (impl Fn(&N) -> DVec3 + Copy, &impl Fn(&N, &N) -> Option<N>),
+    (tol, chord_tol): (f64, f64),
+) -> Vec<DVec3> {
+    // The indices kept, each with whether points after it were dropped.
+    let mut keep: Vec<(usize, bool)> = Vec::with_capacity(d.points.len());
+    for (i, p) in d.points.iter().enumerate() {
+        match keep.last_mut() {
+            Some((j, dropped)) if d.points[*j].distance(*p) <= tol => *dropped = true,
+            _ => keep.push((i, false)),
+        }
+    }
+    let k = keep.len();
+    for (x, &(i, dropped)) in keep.iter().enumerate() {
+        let next = if x + 1 < k {
+            Some(keep[x + 1].0)
+        } else {
+            closed.then_some(keep[0].0)
+        };
+        if let (true, Some(j)) = (dropped, next) {
+            let (n0, n1) = (d.nodes[i], d.nodes[j]);
+            let (p0, p1) = (pos(&n0), pos(&n1));
+            if mid(&n0, &n1).is_some_and(|m| sure((p0, p1), pos(&m), chord_tol)) {
+                super::loose::vouch(p0, p1);
+            }
+        }
+    }
+    keep.into_iter().map(|(i, _)| d.points[i]).collect()
+}
+
+/// Whether the chord `p0p1`, whose midpoint refined onto the curve is `pm`, stands for the
+/// curve within `chord_tol`: short enough that its ends (points of the curve) hold it there, or
+/// the curve passes within `chord_tol` of it about its middle. A midpoint that lands near an
+/// end (a parameterisation far from even there) says little of the chord's own.
+fn sure((p0, p1): (DVec3, DVec3), pm: DVec3, chord_tol: f64) -> bool {
+    if super::loose::short(p0, p1, chord_tol) {
+        return true;
+    }
+    let chord = p1 - p0;
+    let off = (pm - p0).cross(chord).length() / chord.length();
+    let along = (pm - p0).dot(chord) / chord.length_squared();
+    off <= chord_tol && (0.25..=0.75).contains(&along)
+}
+
+/// The points of a curve being densified, the nodes they are at, and its loose chords (see
+/// [`assemble_loose`]).
+struct Dense<N> {
     points: Vec<DVec3>,
+    nodes: Vec<N>,
     loose: Vec<[DVec3; 2]>,
 }
 
+/// Puts the points between the nodes `n0` and `n1` (not themselves) that bring every chord
+/// within `chord_tol` of the curve, where their midpoints refine between their ends: the
+/// chords it can say so of are vouched for (see `loose::vouch`), the others are left to
+/// `loose::settle` (those whose midpoint did not refine between their ends are also `loose`).
 fn densify<N: Copy>(
     (n0, n1): (N, N),
     pos: impl Fn(&N) -> DVec3 + Copy,
     mid: &impl Fn(&N, &N) -> Option<N>,
     (tol, chord_tol): (f64, f64),
     depth: u32,
-    out: &mut Dense,
+    out: &mut Dense<N>,
 ) {
     let (p0, p1) = (pos(&n0), pos(&n1));
+    if super::loose::short(p0, p1, chord_tol) {
+        super::loose::vouch(p0, p1);
+    }
     if depth >= 16 || p0.distance(p1) <= 2.0 * tol {
         return;
     }
@@ -216,9 +273,12 @@ fn densify<N: Copy>(
     if off > chord_tol && (0.0..=1.0).contains(&along) {
         densify((n0, m), pos, mid, (tol, chord_tol), depth + 1, out);
         out.points.push(pm);
+        out.nodes.push(m);
         densify((m, n1), pos, mid, (tol, chord_tol), depth + 1, out);
     } else if off > chord_tol {
         out.loose.push([p0, p1]);
+    } else if !super::loose::short(p0, p1, chord_tol) && sure((p0, p1), pm, chord_tol) {
+        super::loose::vouch(p0, p1);
     }
 }
 
@@ -349,6 +409,7 @@ pub(crate) fn close_gap(a: &Patch, b: &Patch, c: &mut Polyline3, tol: f64, chord
     }
     let mut extra = Dense {
         points: Vec::new(),
+        nodes: Vec::new(),
         loose: Vec::new(),
     };
     let pos = |n: &Node| n.point;
