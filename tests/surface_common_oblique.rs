@@ -14,9 +14,11 @@
 //! orders are checked to GEOMTOL (before: points up to √(2·(tol/2)·R) = 4.5e-5 off near the
 //! corners, and with a first fix the loop 1.9e-3 short, cutting the acute corner).
 
+use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_tol, surface_section_tol, Surface};
 use lispcad::geom::DVec3;
+use std::sync::Arc;
 
 mod surface_support;
 use surface_support::{summary, u_profile, unit_square, R};
@@ -67,9 +69,13 @@ impl Band {
 
 /// Both orders of the intersection of the square and `other`: [`check_loop`] of each.
 fn check_both(other: &Surface, band: &Band) {
-    let sq = unit_square();
+    check_both_with(&unit_square(), other, band);
+}
+
+/// [`check_both`] with the square `sq` in the plane y = 0.
+fn check_both_with(sq: &Surface, other: &Surface, band: &Band) {
     let meet = |x: &Surface, y: &Surface| surface_intersect_tol(x, y, 1e-6, 1e-9).unwrap();
-    for (order, (x, y)) in [(&sq, other), (other, &sq)].into_iter().enumerate() {
+    for (order, (x, y)) in [(sq, other), (other, sq)].into_iter().enumerate() {
         let name = if order == 0 {
             "square, other"
         } else {
@@ -193,4 +199,57 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
         flat: band.flat,
     };
     check_section(&wedge, &whole);
+}
+
+/// The diagonal band of the first test on a square whose bottom edge is tilted (falling 0.1
+/// along x) to cross z = 0, a grid line of the profile surface's domain (v = 12/32), at
+/// x* = C0 − `behind`, just outside the band: the band's corner on that edge then lies about
+/// 0.9·`behind` from that crossing, along the square's edge.
+///
+/// Open defects (issue 13, item 5 of the closing note of 2026-11-27; the same figures on
+/// `c948918` and after the threshold change):
+/// - behind = 1e-6, order (other, square): the crossing's gap is 2.5e-13, under the rounding
+///   the tracer in the profile surface's domain tells from the region's own gap (1e-13 of its
+///   size, 9.5e-13), so `edge::parting` says the surfaces do not part there and the corner is
+///   not looked for: the loop has the crossing (0.0349990, 0, 0), 9.19e-7 from the corner,
+///   and not the corner (its nearest point 9.19e-7 away); 1.5e-6 long.
+/// - behind = 3e-6, order (other, square): the gap there (2.25e-12) passes the rounding and
+///   the corner is slid for, but a point comes back 3.2e-5 off the outline and the loop is
+///   4.6e-5 long.
+/// - Both, order (square, other), where the tilted square's parameter lines run oblique to
+///   its sides: a point (0.99902, 0, 0.94402) 3.3e-8 outside the band's side x − z = C1,
+///   1e-3 from the square's right edge (1.1e-9 with behind = 1e-3, where the other order
+///   is right to GEOMTOL).
+#[test]
+#[ignore = "open defects: a region corner just behind a grid line's crossing of the target's extent edge is missed or misplaced (9.2e-7, 3.2e-5), a point 3.3e-8 off near the tilted square's right edge (see the doc comment)"]
+fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square() {
+    const C0: f64 = 0.035;
+    const C1: f64 = 0.055;
+    const M: f64 = -0.1;
+    let prof = |z: f64| u_profile(C1 - C0, move |s, t| v(C0 + z + s, t, z), true);
+    let strip = Surface::ruled(prof(-1.5), prof(2.5));
+    let line = |a: DVec3, b: DVec3| Arc::new(Curve::line(a, b).unwrap());
+    for behind in [1e-6, 3e-6] {
+        let x_star = C0 - behind;
+        let bottom = |x: f64| M * (x - x_star);
+        let sq = Surface::ruled(
+            line(v(0.0, 0.0, bottom(0.0)), v(1.0, 0.0, bottom(1.0))),
+            line(v(0.0, 0.0, 1.0), v(1.0, 0.0, 1.0)),
+        );
+        // Where the bottom edge z = M(x − x*) meets the band's side x − z = c.
+        let corner = |c: f64| {
+            let x = (c - M * x_star) / (1.0 - M);
+            v(x, 0.0, x - c)
+        };
+        let band = Band {
+            outline: [
+                corner(C0),
+                corner(C1),
+                v(1.0, 0.0, 1.0 - C1),
+                v(1.0, 0.0, 1.0 - C0),
+            ],
+            flat: |z| (C0 + z, C1 + z),
+        };
+        check_both_with(&sq, &strip, &band);
+    }
 }

@@ -21,6 +21,9 @@ use glam::DVec2;
 /// tolerance; large enough to stop above the band the gap's rounding blurs.
 const SHARP: f64 = 1e-3;
 
+/// The last two points of a kind, the later last.
+type Last = [Option<(f64, f64)>; 2];
+
 /// Most evaluations of the gap (a third of the steps bisect, so at most three times
 /// bisection's 50 or so).
 const MOST: usize = 160;
@@ -89,14 +92,14 @@ pub(super) fn last_on(
     if !on(lo.1) {
         return lo.0;
     }
-    // The points that rose from the flat, and those off the target, in the order found.
-    let mut risen: Vec<(f64, f64)> = Vec::with_capacity(MOST);
-    let mut off: Vec<(f64, f64)> = Vec::with_capacity(MOST);
-    let note = |(x, g): (f64, f64), risen: &mut Vec<(f64, f64)>, off: &mut Vec<(f64, f64)>| {
+    // The last two points that rose from the flat, and the last two off the target (on the
+    // stack: no allocation per boundary point).
+    let (mut risen, mut off) = ([None; 2], [None; 2]);
+    let note = |(x, g): (f64, f64), risen: &mut Last, off: &mut Last| {
         if g.is_finite() && g > flat {
-            risen.push((x, g));
+            *risen = [risen[1], Some((x, g))];
             if !on(g) {
-                off.push((x, g));
+                *off = [off[1], Some((x, g))];
             }
         }
     };
@@ -112,9 +115,9 @@ pub(super) fn last_on(
         let mut x = a + 0.5 * width;
         let mut by_root = false;
         if slow < 2 {
-            let pts = if overshot { &off } else { &risen };
+            let pts = if overshot { off } else { risen };
             let shape = |g: f64| if overshot { g } else { g.sqrt() };
-            if let [.., (p, gp), (q, gq)] = pts[..] {
+            if let [Some((p, gp)), Some((q, gq))] = pts {
                 let (hp, hq, h0) = (shape(gp), shape(gq), shape(tol));
                 let s = q - (hq - h0) * (q - p) / (hq - hp);
                 if s.is_finite() {
