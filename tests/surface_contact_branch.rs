@@ -357,8 +357,20 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone() {
 /// patch (1.9e-7 away); and in patch ∩ plate and plate ∩ patch the crossing has points
 /// 3.5e-4..5e-4 from the branch point up to 5.8e-5 off it in r (about 1.1e-5 across), within
 /// 1e-9 of both surfaces. The section passes at both seeds.
+///
+/// The first such point (patch ∩ plate, s = 5e-3, seed 1e-2: r = 2.000331818, 1.7e-5 off at
+/// W = 4.25e-4, gap 9.9e-12) is made before regroup: it is in the curve `refine_pair_curve`
+/// returns, unchanged by every later stage (contact tracing, cut, extend, alongside, join_ends,
+/// run_into, through_branch_points, the loose pass). It is a chord's midpoint from `densify`
+/// (`pair_mid` → `newton_pair`): Newton crawled there for 27 iterations (its last step 6.7e-7,
+/// the residual 1.03e-11 → 9.9e-12), between the crossing and the contact where the surfaces
+/// part as a near triple root, and stopped on the first residual within 0.01·tol, as `goes_on`
+/// wants a sixteenfold fall. Relaxing `goes_on`/`shrinks` (5-fold, 0.4) did not move that
+/// point and broke `a_crossing_into_a_curved_contact_at_an_edge_seen_from_the_plane`. Why the
+/// branch point is not solved in plate ∩ patch was not traced. The test also failed on c948918
+/// (the branch point reached by neither solver there, as above).
 #[test]
-#[ignore = "open: near-edge branch point not solved from the plate, crossing points 1e-5 off near it"]
+#[ignore = "open: near-edge branch point not solved from the plate; densify's pair_mid Newton crawls to a point 1.7e-5 off the crossing (gap 1e-11) near it"]
 fn a_crossing_through_a_curved_contact_near_an_edge_comes_back_whole_with_it() {
     for s in [5e-3, 1.5e-2] {
         let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
