@@ -6,7 +6,8 @@
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{
-    surface_intersect, surface_intersect_seeded, surface_section_seeded, CurveRef, Surface,
+    surface_intersect, surface_intersect_seeded, surface_intersect_tol, surface_section_seeded,
+    CurveRef, Surface,
 };
 use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
@@ -60,6 +61,58 @@ fn two_equal_cylinders_crossing_give_two_closed_ellipses() {
             "{l} vs {exact}"
         );
     }
+}
+
+/// The same cylinders at the user's CHORDTOL, which `surface_intersect_tol` also takes as the
+/// seeding meshes' tolerance: every value must give the two ellipses, each whole and closed
+/// (its points on one of the planes y = ±z), not four half-ellipses ending at the branch points
+/// (±1, 0, 0), nor two loops each turning there onto the other ellipse. Before ops::join_through,
+/// 0.02, 0.0045, 0.003, 0.002, 0.001 gave four open halves, each from (−1, 0, 0) to (1, 0, 0)
+/// (the meshes' vertices lie on the branch points, the seed chains stop there and nothing joined
+/// the pieces); now they give the two ellipses. Still open: at 0.01, 0.007, 0.005 the seed
+/// chains run on through the branch point (1, 0, 0) onto the other ellipse and close_gap closes
+/// them across (−1, 0, 0): two closed curves of the right length (the four halves are
+/// congruent, so `two_equal_cylinders_crossing_give_two_closed_ellipses` passes), each half on
+/// y = z and half on y = −z.
+#[test]
+#[ignore = "open defect: at CHORDTOL 0.01, 0.007, 0.005 each closed curve turns at the branch \
+            points onto the other ellipse (see the doc comment)"]
+fn two_equal_cylinders_give_two_closed_ellipses_at_any_chordtol() {
+    let a = Surface::cylinder(DVec3::new(0.0, 0.0, -3.0), DVec3::Z, 1.0, 6.0).unwrap();
+    let b = Surface::cylinder(DVec3::new(0.0, -3.0, 0.0), DVec3::Y, 1.0, 6.0).unwrap();
+    let exact = ellipse_perimeter(2f64.sqrt(), 1.0);
+    let mut bad = Vec::new();
+    for t in [0.02, 0.01, 0.007, 0.005, 0.0045, 0.003, 0.002, 0.001] {
+        let curves = surface_intersect_tol(&a, &b, t, 1e-9).unwrap();
+        // On one plane away from the branch points: beside them, points within 1e-9 of both
+        // cylinders may stray ~1e-9/|y| off the planes (both pass through the point).
+        let whole = |cv: &Polyline3| {
+            let plane = |s: f64| {
+                cv.points
+                    .iter()
+                    .all(|p| p.x.abs() > 0.99 || (p.y - s * p.z).abs() <= 1e-7)
+            };
+            cv.closed && (plane(1.0) || plane(-1.0))
+        };
+        if curves.len() != 2 || !curves.iter().all(whole) {
+            bad.push((t, curves.len(), curves.iter().filter(|c| c.closed).count()));
+            continue;
+        }
+        for cv in &curves {
+            for p in &cv.points {
+                assert!((rho(*p) - 1.0).abs() <= 1e-9, "{t}: {p}");
+                assert!((p.x.hypot(p.z) - 1.0).abs() <= 1e-9, "{t}: {p}");
+            }
+            // Chords within CHORDTOL t of an ellipse whose least radius of curvature is
+            // b²/a = 1/√2: short by at most ~t/(3R) < t/2 relative.
+            let l = length(cv);
+            assert!(
+                l <= exact + 1e-9 && exact - l < 0.5 * t * exact,
+                "{t}: {l} vs {exact}"
+            );
+        }
+    }
+    assert!(bad.is_empty(), "(CHORDTOL, pieces, closed): {bad:?}");
 }
 
 #[test]

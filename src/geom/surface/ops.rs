@@ -118,6 +118,7 @@ fn section_seeded(
             (seed_tol, geom_tol, tol),
         );
         curves.extend(tips);
+        let curves = join_through(curves, geom_tol);
         let settle = |c| super::loose::settle_section(&patch, plane, c, (geom_tol, tol));
         let mut curves = settle(curves);
         if !contacts {
@@ -460,6 +461,7 @@ fn through_meshes(
     if let Some((r, loops)) = region.as_mut() {
         curves = outside(r, (&pa, &pb), curves, loops, reach);
     }
+    let mut curves = join_through(curves, gtol);
     let settle = |c| super::loose::settle_pair(&pa, &pb, c, (gtol, ctol));
     curves = settle(curves);
     if !contacts {
@@ -676,4 +678,97 @@ pub fn curve_on_surface(
         }
     }
     Ok(true)
+}
+
+/// Open curves joined where one ends on the point another begins (within `tol`, either way
+/// round) and runs straight on through it, the most nearly straight joint first; a curve then
+/// closed where its own ends meet so. The seeds split a crossing at a branch point, where
+/// the other crossing passes (two equal cylinders: four half-ellipses from the meshes at most
+/// seed tolerances, two closed ellipses at a few), and each piece is carried onto the point;
+/// nothing joined them, so the same surfaces gave two curves or four by the user's CHORDTOL.
+/// Within 15° only: the crossings through a branch point meet at an angle.
+fn join_through(mut curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
+    const STRAIGHT: f64 = 0.966;
+    // The unit direction a curve runs in at its end (`last`) or start, from the nearest point
+    // apart from that one.
+    let dir = |c: &Polyline3, last: bool| -> Option<DVec3> {
+        let p = &c.points;
+        let n = p.len();
+        if last {
+            let e = p[n - 1];
+            p.iter()
+                .rev()
+                .skip(1)
+                .find(|q| q.distance(e) > tol)
+                .and_then(|q| (e - *q).try_normalize())
+        } else {
+            let s = p[0];
+            p.iter()
+                .skip(1)
+                .find(|q| q.distance(s) > tol)
+                .and_then(|q| (*q - s).try_normalize())
+        }
+    };
+    loop {
+        let open: Vec<usize> = (0..curves.len())
+            .filter(|&i| !curves[i].closed && curves[i].points.len() >= 2)
+            .collect();
+        // (straightness, i, i reversed, j, j reversed): i's end (start if reversed) to j's start.
+        let mut best: Option<(f64, usize, bool, usize, bool)> = None;
+        for &i in &open {
+            for &j in &open {
+                for (ri, rj) in [(false, false), (false, true), (true, false), (true, true)] {
+                    if i == j && (ri || rj || curves[i].points.len() < 4) {
+                        continue;
+                    }
+                    let (ci, cj) = (&curves[i], &curves[j]);
+                    let e = if ri {
+                        ci.points[0]
+                    } else {
+                        ci.points[ci.points.len() - 1]
+                    };
+                    let s = if rj {
+                        cj.points[cj.points.len() - 1]
+                    } else {
+                        cj.points[0]
+                    };
+                    if e.distance(s) > tol {
+                        continue;
+                    }
+                    let (Some(de), Some(ds)) = (dir(ci, !ri), dir(cj, rj)) else {
+                        continue;
+                    };
+                    let (de, ds) = (if ri { -de } else { de }, if rj { -ds } else { ds });
+                    let k = de.dot(ds);
+                    if k >= STRAIGHT && best.is_none_or(|b| k > b.0) {
+                        best = Some((k, i, ri, j, rj));
+                    }
+                }
+            }
+        }
+        let Some((_, i, ri, j, rj)) = best else {
+            return curves;
+        };
+        if i == j {
+            // Its own end on its start: closed, ending on its first point as closed curves do.
+            let c = &mut curves[i];
+            let s = c.points[0];
+            if let Some(l) = c.points.last_mut() {
+                *l = s;
+            }
+            c.closed = true;
+            continue;
+        }
+        let mut head = std::mem::take(&mut curves[i].points);
+        let mut tail = std::mem::take(&mut curves[j].points);
+        if ri {
+            head.reverse();
+        }
+        if rj {
+            tail.reverse();
+        }
+        head.extend(tail.into_iter().skip(1));
+        curves[i].points = head;
+        curves.remove(j);
+    }
 }
