@@ -229,8 +229,21 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
 ///   1e-3 from the square's right edge (1.1e-9 with behind = 1e-3, where the other order
 ///   is right to GEOMTOL).
 #[test]
+fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square_traced_in_the_strip() {
+    corner_behind(false);
+}
+
+/// [`a_region_corner_just_behind_where_a_grid_line_leaves_the_square_traced_in_the_strip`]
+/// in both orders; see the doc comment above for the order (square, other) still open.
+#[test]
 #[ignore = "open defects: a region corner just behind a grid line's crossing of the target's extent edge is missed or misplaced (9.2e-7, 3.2e-5), a point 3.3e-8 off near the tilted square's right edge (see the doc comment)"]
 fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square() {
+    corner_behind(true);
+}
+
+/// The band of the tests above on the tilted square, in the order (other, square) only, or
+/// in `both` orders.
+fn corner_behind(both: bool) {
     const C0: f64 = 0.035;
     const C1: f64 = 0.055;
     const M: f64 = -0.1;
@@ -258,6 +271,11 @@ fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square() {
             ],
             flat: |z| (C0 + z, C1 + z),
         };
-        check_both_with(&sq, &strip, &band);
+        if both {
+            check_both_with(&sq, &strip, &band);
+        } else {
+            let meet = || surface_intersect_tol(&strip, &sq, 1e-6, 1e-9).unwrap();
+            check_loop("other, square", &meet, &band, 0.05);
+        }
     }
 }
