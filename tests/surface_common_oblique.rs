@@ -212,17 +212,32 @@ fn a_narrow_flat_narrowing_across_the_unit_square() {
 ///   the tracer in the profile surface's domain tells from the region's own gap (1e-13 of its
 ///   size, 9.5e-13), so `edge::parting` says the surfaces do not part there and the corner is
 ///   not looked for: the loop has the crossing (0.0349990, 0, 0), 9.19e-7 from the corner,
-///   and not the corner (its nearest point 9.19e-7 away); 1.5e-6 long.
+///   and not the corner (its nearest point 9.19e-7 away); 1.5e-6 long. Fixed (second
+///   round): `t` lay 2.1e-9 past the extent edge, so `parting` read no gap; and `slide`'s
+///   reach along the extent edge was too short for its shallow crossing (1 in 10.5).
 /// - behind = 3e-6, order (other, square): the gap there (2.25e-12) passes the rounding and
-///   the corner is slid for, but a point comes back 3.2e-5 off the outline and the loop is
-///   4.6e-5 long.
+///   the corner is slid for, but a point came back 3.2e-5 off the outline and the loop was
+///   4.6e-5 long. Fixed with the first (the slide's reach).
 /// - Both, order (square, other), where the tilted square's parameter lines run oblique to
 ///   its sides: a point (0.99902, 0, 0.94402) 3.3e-8 outside the band's side x − z = C1,
 ///   1e-3 from the square's right edge (1.1e-9 with behind = 1e-3, where the other order
 ///   is right to GEOMTOL).
 #[test]
-#[ignore = "open defects: a region corner just behind a grid line's crossing of the target's extent edge is missed or misplaced (9.2e-7, 3.2e-5), a point 3.3e-8 off near the tilted square's right edge (see the doc comment)"]
+fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square_traced_in_the_strip() {
+    corner_behind(false);
+}
+
+/// [`a_region_corner_just_behind_where_a_grid_line_leaves_the_square_traced_in_the_strip`]
+/// in both orders; see the doc comment above for the order (square, other) still open.
+#[test]
+#[ignore = "open defect: order (square, other), a point 3.3e-8 off near the tilted square's right edge (see the doc comment)"]
 fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square() {
+    corner_behind(true);
+}
+
+/// The band of the tests above on the tilted square, in the order (other, square) only, or
+/// in `both` orders.
+fn corner_behind(both: bool) {
     const C0: f64 = 0.035;
     const C1: f64 = 0.055;
     const M: f64 = -0.1;
@@ -250,6 +265,11 @@ fn a_region_corner_just_behind_where_a_grid_line_leaves_the_square() {
             ],
             flat: |z| (C0 + z, C1 + z),
         };
-        check_both_with(&sq, &strip, &band);
+        if both {
+            check_both_with(&sq, &strip, &band);
+        } else {
+            let meet = || surface_intersect_tol(&strip, &sq, 1e-6, 1e-9).unwrap();
+            check_loop("other, square", &meet, &band, 0.05);
+        }
     }
 }

@@ -174,6 +174,8 @@ struct Tracer<'a, 'b> {
     /// The region's gap and its rounding: a gap no higher is the region's own (see
     /// [`edge`]: only above it do the surfaces part).
     flat: f64,
+    /// The part of `flat` that is rounding (above the region's level).
+    rounding: f64,
     chord_tol: f64,
     /// The grid's lines in u and in v, from 0 to 1: N cells each, with finer lines added
     /// around a narrow region ([`seed`]).
@@ -224,6 +226,7 @@ fn trace(
     let within = (tol - ROUNDING * size).max(0.5 * tol);
     tr.tol = within;
     tr.flat = ROUNDING * size;
+    tr.rounding = ROUNDING * size;
     let (mut least, mut most) = match level {
         Some(l) => l,
         None => tr.refine_narrow(seeds)?,
@@ -283,6 +286,7 @@ impl<'a, 'b> Tracer<'a, 'b> {
             target,
             tol,
             flat: 0.0,
+            rounding: 0.0,
             chord_tol,
             lines: [uniform.clone(), uniform],
             nodes: Vec::new(),

@@ -115,7 +115,8 @@ impl Tracer<'_, '_> {
             return Some(e);
         }
         let parting = self.parting(t, dir);
-        if parting && (self.gap_at(t).is_none() || self.gap_at(t + dir * 1e-9).is_none()) {
+        let on_extent = self.gap_at(t).is_none() || self.gap_at(t + dir * 1e-9).is_none();
+        if on_extent && (parting || self.barely_parting(t, dir)) {
             if let Some(c) = self.corner(t, dir, 1e-6) {
                 return Some(c);
             }
@@ -136,6 +137,20 @@ impl Tracer<'_, '_> {
     fn parting(&self, t: DVec2, dir: DVec2) -> bool {
         let g = self.gap_at(t).or_else(|| self.gap_at(t - dir * 1e-9));
         g.is_some_and(|g| g > self.flat)
+    }
+
+    /// Whether the surfaces part at a threshold point `t` on the target's extent edge by less
+    /// than [`Self::parting`] tells but more than a double's rounding could make of the
+    /// region's own gap: a hundredth of the tracer's rounding above the region's level. There
+    /// the region's corner may lie behind `t` along the extent edge by up to √(2·R·rounding)
+    /// (9e-7 for the oblique band), off the outline by more than GEOMTOL if not looked for.
+    /// A region running flat onto the extent edge has its own gap there, to a double's
+    /// rounding, so the costly slide is still not made for it. The gap is read 1e-8 back:
+    /// the bisected `t` may lie some 2e-9 past the extent edge (the oblique band's did).
+    fn barely_parting(&self, t: DVec2, dir: DVec2) -> bool {
+        let g = self.gap_at(t).or_else(|| self.gap_at(t - dir * 1e-8));
+        let level = self.flat - self.rounding;
+        g.is_some_and(|g| g > level + 1e-2 * self.rounding)
     }
 
     /// The turned lines' zeros of [`Self::extrapolated`], taken to the line along `dir`.
@@ -187,7 +202,9 @@ impl Tracer<'_, '_> {
         let base = self.extent_cross(t, dir, reach)?;
         let across = dir.perp();
         [across, -across].into_iter().find_map(|w| {
-            let at = |s: f64| self.extent_cross(base + w * s, dir, reach + 4.0 * s.abs());
+            // The extent edge may cross the line at a shallow angle (1 in 10.5 for the tilted
+            // square seen from the strip's domain), far along `dir` for a small step across.
+            let at = |s: f64| self.extent_cross(base + w * s, dir, reach + 16.0 * s.abs());
             FIRST
                 .iter()
                 .find_map(|&first| self.zero_on(&at, 0.0, first, ahead))
