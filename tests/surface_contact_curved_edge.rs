@@ -16,7 +16,7 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
+use surface_support::{assert_chords_on, each_run_against_the_plate, summary};
 
 const T: f64 = 0.5;
 const C: f64 = 0.3;
@@ -102,21 +102,7 @@ fn check(name: &str, p: f64, r: &[Polyline3]) {
 
 fn run_all(p: f64) {
     let s = patch(p);
-    let plate = Surface::plane(vec![
-        DVec3::new(-1.0, -2.0, 0.0),
-        DVec3::new(5.0, -2.0, 0.0),
-        DVec3::new(5.0, 2.0, 0.0),
-        DVec3::new(-1.0, 2.0, 0.0),
-    ])
-    .unwrap();
-    for seed in [1e-2, 1e-3] {
-        for (name, run) in section_and_both_orders("patch", &s, &plate, seed, 1e-6) {
-            let name = format!("{name} p {p} seed {seed}");
-            let r = run();
-            check(&name, p, &r);
-            assert_same_bits(&name, &run(), &r);
-        }
-    }
+    each_run_against_the_plate("patch", &s, |name, r| check(&format!("{name} p {p}"), p, r));
 }
 
 /// The left side bends into the patch: the mesh's boundary chords lie outside it, so the

@@ -12,7 +12,7 @@ use lispcad::geom::DVec3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, assert_same_bits, section_and_both_orders, summary};
+use surface_support::{assert_chords_on, each_run_against_the_plate, summary};
 
 const E: f64 = 0.02;
 const A: f64 = 0.04;
@@ -183,19 +183,5 @@ fn check(name: &str, r: &[Polyline3]) {
 #[test]
 fn a_line_contact_beside_a_crossing_off_the_edge() {
     let s = patch();
-    let plate = Surface::plane(vec![
-        DVec3::new(-1.0, -2.0, 0.0),
-        DVec3::new(5.0, -2.0, 0.0),
-        DVec3::new(5.0, 2.0, 0.0),
-        DVec3::new(-1.0, 2.0, 0.0),
-    ])
-    .unwrap();
-    for seed in [1e-2, 1e-3] {
-        for (name, run) in section_and_both_orders("dip", &s, &plate, seed, 1e-6) {
-            let name = format!("{name} seed {seed}");
-            let r = run();
-            check(&name, &r);
-            assert_same_bits(&name, &run(), &r);
-        }
-    }
+    each_run_against_the_plate("dip", &s, check);
 }

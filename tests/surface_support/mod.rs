@@ -222,6 +222,27 @@ pub fn section_and_both_orders<'a>(
     ]
 }
 
+/// Every run of [`section_and_both_orders`] against the plate −1 ≤ x ≤ 5, −2 ≤ y ≤ 2 at z = 0,
+/// seeds 1e-2 and 1e-3, curves densified within 1e-6: each result handed to `check` with its
+/// run's name, then run again and required to be the same bits.
+pub fn each_run_against_the_plate(name: &str, s: &Surface, check: impl Fn(&str, &[Polyline3])) {
+    let plate = Surface::plane(vec![
+        DVec3::new(-1.0, -2.0, 0.0),
+        DVec3::new(5.0, -2.0, 0.0),
+        DVec3::new(5.0, 2.0, 0.0),
+        DVec3::new(-1.0, 2.0, 0.0),
+    ])
+    .unwrap();
+    for seed in [1e-2, 1e-3] {
+        for (run_name, run) in section_and_both_orders(name, s, &plate, seed, 1e-6) {
+            let run_name = format!("{run_name} seed {seed}");
+            let r = run();
+            check(&run_name, &r);
+            assert_same_bits(&run_name, &run(), &r);
+        }
+    }
+}
+
 /// That a second run of an intersection gave the same curves, bit for bit.
 pub fn assert_same_bits(name: &str, again: &[Polyline3], first: &[Polyline3]) {
     assert_eq!(again.len(), first.len(), "{name}: {}", summary(again));
