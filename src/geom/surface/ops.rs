@@ -689,24 +689,20 @@ pub fn curve_on_surface(
 /// Within 15° only: the crossings through a branch point meet at an angle.
 fn join_through(mut curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
     const STRAIGHT: f64 = 0.966;
-    // The unit direction a curve runs in at its end (`last`) or start, from the nearest point
-    // apart from that one.
-    let dir = |c: &Polyline3, last: bool| -> Option<DVec3> {
-        let p = &c.points;
-        let n = p.len();
+    // A curve's end (`last`) or start, and the direction it leaves there.
+    let end = |c: &Polyline3, last: bool| {
         if last {
-            let e = p[n - 1];
-            p.iter()
-                .rev()
-                .skip(1)
-                .find(|q| q.distance(e) > tol)
-                .and_then(|q| (e - *q).try_normalize())
+            c.points[c.points.len() - 1]
         } else {
-            let s = p[0];
-            p.iter()
-                .skip(1)
-                .find(|q| q.distance(s) > tol)
-                .and_then(|q| (*q - s).try_normalize())
+            c.points[0]
+        }
+    };
+    let out = |c: &Polyline3, last: bool| {
+        let p = &c.points;
+        if last {
+            super::refine::leaving(p[p.len() - 1], p.iter().rev().skip(1), tol)
+        } else {
+            super::refine::leaving(p[0], p.iter().skip(1), tol)
         }
     };
     loop {
@@ -722,24 +718,14 @@ fn join_through(mut curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
                         continue;
                     }
                     let (ci, cj) = (&curves[i], &curves[j]);
-                    let e = if ri {
-                        ci.points[0]
-                    } else {
-                        ci.points[ci.points.len() - 1]
-                    };
-                    let s = if rj {
-                        cj.points[cj.points.len() - 1]
-                    } else {
-                        cj.points[0]
-                    };
-                    if e.distance(s) > tol {
+                    if end(ci, !ri).distance(end(cj, rj)) > tol {
                         continue;
                     }
-                    let (Some(de), Some(ds)) = (dir(ci, !ri), dir(cj, rj)) else {
+                    // i leaves forward where j leaves backward: straight on where they oppose.
+                    let (Some(de), Some(ds)) = (out(ci, !ri), out(cj, rj)) else {
                         continue;
                     };
-                    let (de, ds) = (if ri { -de } else { de }, if rj { -ds } else { ds });
-                    let k = de.dot(ds);
+                    let k = -de.dot(ds);
                     if k >= STRAIGHT && best.is_none_or(|b| k > b.0) {
                         best = Some((k, i, ri, j, rj));
                     }

@@ -329,8 +329,8 @@ fn ends_meet(p: &[DVec3]) -> bool {
         return true;
     };
     let (Some(out_e), Some(out_s)) = (
-        leaving(e, p.iter().rev().skip(1)),
-        leaving(s, p.iter().skip(1)),
+        leaving(e, p.iter().rev().skip(1), 0.0),
+        leaving(s, p.iter().skip(1), 0.0),
     ) else {
         return false;
     };
@@ -338,10 +338,14 @@ fn ends_meet(p: &[DVec3]) -> bool {
 }
 
 /// The direction a curve leaves at `end`, from the first of the `inner` points (walking in from
-/// that end) apart from it.
-fn leaving<'p>(end: DVec3, mut inner: impl Iterator<Item = &'p DVec3>) -> Option<DVec3> {
+/// that end) farther than `apart` from it.
+pub(crate) fn leaving<'p>(
+    end: DVec3,
+    mut inner: impl Iterator<Item = &'p DVec3>,
+    apart: f64,
+) -> Option<DVec3> {
     inner
-        .find(|q| **q != end)
+        .find(|q| q.distance(end) > apart)
         .and_then(|q| (end - *q).try_normalize())
 }
 
