@@ -324,28 +324,53 @@ pub(crate) fn weld_tolerance_grid(
 ) -> (Vec<DVec3>, Vec<u32>) {
     // The grid is only looked up, never iterated, so the hasher cannot change the result; the
     // default SipHash was a third of a refined surface intersection's welding time.
-    use rustc_hash::FxHashMap as HashMap;
+    use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
+    const NONE: u32 = u32::MAX;
     let cell = |p: DVec3| -> [i64; 3] {
         let q = (p / tol).floor();
         [q.x as i64, q.y as i64, q.z as i64]
     };
-    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::default();
+    // Blocks of 16³ cells that hold a kept vertex: a vertex whose neighbouring cells lie in
+    // empty blocks (nearly all, as a mesh's spacing is far above `tol`) skips the 27 lookups.
+    // Integer cells, so the filter decides exactly what the lookups would.
+    let block = |c: [i64; 3]| c.map(|x| x >> 4);
+    let mut blocks: HashSet<[i64; 3]> = HashSet::default();
+    // A cell's kept vertices as a chain in the order they were kept (first, last, `next`): the
+    // search meets them in that order, with no list allocated per cell.
+    let mut grid: HashMap<[i64; 3], (u32, u32)> = HashMap::default();
+    let mut next: Vec<u32> = Vec::new();
     let mut kept: Vec<DVec3> = Vec::new();
     let mut remap = vec![0u32; vertices.len()];
     let tol2 = tol * tol;
     for (i, &p) in vertices.iter().enumerate() {
         let c = cell(p);
+        let (lo, hi) = (
+            block(c.map(|x| x.wrapping_sub(1))),
+            block(c.map(|x| x.wrapping_add(1))),
+        );
+        let near = (lo[0]..=hi[0])
+            .any(|x| (lo[1]..=hi[1]).any(|y| (lo[2]..=hi[2]).any(|z| blocks.contains(&[x, y, z]))));
         let mut found = None;
         'search: for dx in -1..=1 {
+            if !near {
+                break;
+            }
             for dy in -1..=1 {
                 for dz in -1..=1 {
-                    if let Some(list) = grid.get(&[c[0] + dx, c[1] + dy, c[2] + dz]) {
-                        for &k in list {
-                            if kept[k as usize].distance_squared(p) <= tol2 {
-                                found = Some(k);
-                                break 'search;
-                            }
+                    let Some(&(first, _)) = grid.get(&[
+                        c[0].wrapping_add(dx),
+                        c[1].wrapping_add(dy),
+                        c[2].wrapping_add(dz),
+                    ]) else {
+                        continue;
+                    };
+                    let mut k = first;
+                    while k != NONE {
+                        if kept[k as usize].distance_squared(p) <= tol2 {
+                            found = Some(k);
+                            break 'search;
                         }
+                        k = next[k as usize];
                     }
                 }
             }
@@ -355,7 +380,13 @@ pub(crate) fn weld_tolerance_grid(
             None => {
                 let k = kept.len() as u32;
                 kept.push(p);
-                grid.entry(c).or_default().push(k);
+                next.push(NONE);
+                blocks.insert(block(c));
+                let chain = grid.entry(c).or_insert((k, k));
+                if chain.1 != k {
+                    next[chain.1 as usize] = k;
+                    chain.1 = k;
+                }
                 k
             }
         };

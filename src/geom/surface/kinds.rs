@@ -4,7 +4,7 @@ use super::error::{check_point, check_positive, check_unit, SurfaceError};
 use super::sweep::{rotation_minimizing_frames, Frame};
 use super::{CurveRef, ParamSurface};
 use crate::geom::frame::arbitrary_axis;
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 use std::f64::consts::TAU;
 
 /// Ruled surface (直纹面): `P(u, v) = (1 − v)·c1(u) + v·c2(u)`.
@@ -40,6 +40,26 @@ pub struct Sweep {
 pub struct Coons {
     pub curves: [CurveRef; 4],
     reversed: [bool; 4],
+    /// p00, p10, p11, p01: every point of the patch needs them.
+    corners: [DVec3; 4],
+}
+
+impl Coons {
+    /// Boundary curve i at t, in the patch's direction around it.
+    pub(crate) fn edge(&self, i: usize, t: f64) -> DVec3 {
+        let t = if self.reversed[i] { 1.0 - t } else { t };
+        self.curves[i].eval(t)
+    }
+
+    pub(crate) fn corners(&self) -> [DVec3; 4] {
+        self.corners
+    }
+}
+
+impl Sweep {
+    pub(crate) fn frames(&self) -> &[Frame] {
+        &self.frames
+    }
 }
 
 /// A planar region bounded by a closed polygon.
@@ -170,7 +190,18 @@ impl Surface {
                 )));
             }
         }
-        Ok(Surface::Coons(Coons { curves, reversed }))
+        let mut c = Coons {
+            curves,
+            reversed,
+            corners: [DVec3::ZERO; 4],
+        };
+        c.corners = [
+            c.edge(0, 0.0),
+            c.edge(0, 1.0),
+            c.edge(2, 0.0),
+            c.edge(2, 1.0),
+        ];
+        Ok(Surface::Coons(c))
     }
 
     /// A planar region bounded by the closed polygon `boundary` (closing point optional).
@@ -288,38 +319,16 @@ impl Cylinder {
 impl ParamSurface for Surface {
     fn eval(&self, u: f64, v: f64) -> DVec3 {
         match self {
-            Surface::Ruled(r) => r.c1.eval(u).lerp(r.c2.eval(u), v),
-            Surface::Revolve(r) => {
-                let p = r.profile.eval(u) - r.axis_point;
-                r.axis_point + DQuat::from_axis_angle(r.axis_dir, v * r.angle) * p
-            }
-            Surface::Sweep(s) => {
-                let f0 = &s.frames[0];
-                let d = s.profile.eval(u) - s.guide.eval(0.0);
-                let local = DVec3::new(d.dot(f0.t), d.dot(f0.r), d.dot(f0.s));
-                let f = super::sweep::frame_at(&s.frames, v);
-                s.guide.eval(v) + f.t * local.x + f.r * local.y + f.s * local.z
-            }
-            Surface::Coons(c) => {
-                let e = |i: usize, t: f64| {
-                    let t = if c.reversed[i] { 1.0 - t } else { t };
-                    c.curves[i].eval(t)
-                };
-                // Bottom c0(u), right c1(v), top c2 runs backwards in u, left c3 backwards in v.
-                let bottom = e(0, u);
-                let right = e(1, v);
-                let top = e(2, 1.0 - u);
-                let left = e(3, 1.0 - v);
-                let p00 = e(0, 0.0);
-                let p10 = e(0, 1.0);
-                let p11 = e(2, 0.0);
-                let p01 = e(2, 1.0);
-                (1.0 - v) * bottom + v * top + (1.0 - u) * left + u * right
-                    - ((1.0 - u) * (1.0 - v) * p00
-                        + u * (1.0 - v) * p10
-                        + (1.0 - u) * v * p01
-                        + u * v * p11)
-            }
+            Surface::Plane(_) | Surface::Sphere(_) => self.eval_whole(u, v),
+            _ => self.combine(&self.u_part(u), &self.v_part(v)),
+        }
+    }
+}
+
+impl Surface {
+    /// The point at (u, v) of the kinds whose parameters do not separate.
+    pub(crate) fn eval_whole(&self, u: f64, v: f64) -> DVec3 {
+        match self {
             Surface::Plane(p) => {
                 // Not parametric over the unit square; map (u, v) into the boundary's box.
                 let (x, y) = arbitrary_axis(p.normal);
@@ -334,17 +343,13 @@ impl ParamSurface for Surface {
                 }
                 o + x * (x0 + u * (x1 - x0)) + y * (y0 + v * (y1 - y0))
             }
-            Surface::Cylinder(c) => {
-                let (x, y) = c.frame();
-                let a = TAU * u;
-                c.base + c.radius * (a.cos() * x + a.sin() * y) + c.axis * (v * c.height)
-            }
             Surface::Sphere(s) => {
                 let lon = TAU * u;
                 let lat = std::f64::consts::PI * (v - 0.5);
                 s.center
                     + s.radius * DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin())
             }
+            _ => self.eval(u, v),
         }
     }
 }

@@ -23,6 +23,7 @@ mod planar;
 mod quadrics;
 mod refine;
 mod sampled;
+mod separable;
 mod sweep;
 mod tessellate;
 

@@ -4,6 +4,7 @@ use super::error::{check_positive, SurfaceError};
 use super::kinds::Surface;
 use super::planar::triangulate_polygon;
 use super::sampled::sample_curve;
+use super::separable::{UPart, VPart};
 use super::ParamSurface;
 use crate::geom::mesh::{icosphere, Mesh};
 use crate::geom::ParamCurve;
@@ -60,14 +61,35 @@ fn main_diagonal(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> bool {
     a.distance_squared(d) <= b.distance_squared(c)
 }
 
+/// Grid parameters in u and v, and the grid points (row by row in v).
+type Grid = (Vec<f64>, Vec<f64>, Vec<DVec3>);
+
+/// Centroid parameters of a cell's triangles along u (corners' (u0, u1) as (a, b) in the
+/// triangles' corner order, see `refine_grid`) and along v.
+const U_CENTROIDS: [[usize; 3]; 3] = [[0, 1, 1], [0, 1, 0], [1, 1, 0]];
+const V_CENTROIDS: [[usize; 3]; 2] = [[0, 0, 1], [0, 1, 1]];
+
+/// The parts a cell's checks evaluate at along one direction, per interval [a, b]: at the
+/// midpoint, and at each centroid coordinate computed as the barycentric sum over the
+/// triangle's corners in their order (w = 1/3), so the same bits. A point is evaluated once
+/// however many cells or triangles share it.
+fn interval_parts<P>(ts: &[f64], centroids: &[[usize; 3]], part: impl Fn(f64) -> P) -> Vec<Vec<P>> {
+    let t = 1.0 / 3.0;
+    let mut out: Vec<Vec<P>> = (0..=centroids.len()).map(|_| Vec::new()).collect();
+    for w in ts.windows(2) {
+        out[0].push(part(0.5 * w[0] + 0.5 * w[1]));
+        for (k, c) in centroids.iter().enumerate() {
+            out[k + 1].push(part(t * w[c[0]] + t * w[c[1]] + t * w[c[2]]));
+        }
+    }
+    out
+}
+
 /// Refines the grid until every triangle is within `tol` of the surface at its centroid and
 /// edge midpoints (the mesh point against the surface point of the same parameters, an upper
 /// bound of the distance to the surface): iso-curves alone miss the twist of a ruled or Coons
 /// patch, whose iso-lines are straight. A failing sample splits the parameter intervals it
-/// depends on.
-/// Grid parameters in u and v, and the grid points (row by row in v).
-type Grid = (Vec<f64>, Vec<f64>, Vec<DVec3>);
-
+/// depends on: an edge's midpoint the interval the edge spans, a centroid or diagonal both.
 fn refine_grid(
     s: &Surface,
     mut us: Vec<f64>,
@@ -80,72 +102,69 @@ fn refine_grid(
         if needed > MAX_TRIANGLES {
             return Err(over_budget(tol, needed));
         }
-        let mut verts = Vec::with_capacity(nu * nv);
-        for &v in &vs {
-            for &u in &us {
-                verts.push(s.eval(u, v));
-            }
+        let (gu, gv): (Vec<UPart>, Vec<VPart>) = (
+            us.iter().map(|&u| s.u_part(u)).collect(),
+            vs.iter().map(|&v| s.v_part(v)).collect(),
+        );
+        let verts: Vec<DVec3> = (0..nv)
+            .flat_map(|j| (0..nu).map(move |i| (i, j)))
+            .map(|(i, j)| s.combine(&gu[i], &gv[j]))
+            .collect();
+        // Before any check: a midpoint between finite corners would hide it.
+        if let Some(i) = verts.iter().position(|p| !p.is_finite()) {
+            return Err(SurfaceError::Invalid(format!(
+                "surface evaluates to a non-finite point at grid vertex {i}"
+            )));
         }
+        let pu = interval_parts(&us, &U_CENTROIDS, |u| s.u_part(u));
+        let pv = interval_parts(&vs, &V_CENTROIDS, |v| s.v_part(v));
+        let at = |i: usize, j: usize| verts[j * nu + i];
         let mut max_err: f64 = 0.0;
         let mut split_u = vec![false; nu - 1];
         let mut split_v = vec![false; nv - 1];
+        let mut check = |a: &UPart, b: &VPart, m: DVec3| {
+            let e = s.combine(a, b).distance(m);
+            max_err = max_err.max(e);
+            e > tol
+        };
+        // Edge midpoints: an edge along u at every row, along v at every column.
+        for (j, row) in gv.iter().enumerate() {
+            for i in 0..nu - 1 {
+                let m = 0.5 * at(i, j) + 0.5 * at(i + 1, j);
+                split_u[i] |= check(&pu[0][i], row, m);
+            }
+        }
+        for j in 0..nv - 1 {
+            for (i, column) in gu.iter().enumerate() {
+                let m = 0.5 * at(i, j) + 0.5 * at(i, j + 1);
+                split_v[j] |= check(column, &pv[0][j], m);
+            }
+        }
+        // Each cell's diagonal and its triangles' centroids (corners 0..3: bit 0 the u side,
+        // bit 1 the v side; the centroid's parameters as `interval_parts` orders them).
+        let t = 1.0 / 3.0;
         for j in 0..nv - 1 {
             for i in 0..nu - 1 {
-                let (u0, u1, v0, v1) = (us[i], us[i + 1], vs[j], vs[j + 1]);
-                let p = |di: usize, dj: usize| verts[(j + dj) * nu + i + di];
-                let corner = [p(0, 0), p(1, 0), p(0, 1), p(1, 1)];
-                let param = |k: usize| {
+                let c = [at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)];
+                let centroid = |k: [usize; 3]| t * c[k[0]] + t * c[k[1]] + t * c[k[2]];
+                let (diagonal, first, second) = if main_diagonal(c[0], c[1], c[2], c[3]) {
                     (
-                        if k & 1 == 0 { u0 } else { u1 },
-                        if k & 2 == 0 { v0 } else { v1 },
+                        0.5 * c[0] + 0.5 * c[3],
+                        (&pu[1][i], &pv[1][j], centroid([0, 1, 3])),
+                        (&pu[2][i], &pv[2][j], centroid([0, 3, 2])),
+                    )
+                } else {
+                    (
+                        0.5 * c[1] + 0.5 * c[2],
+                        (&pu[2][i], &pv[1][j], centroid([0, 1, 2])),
+                        (&pu[3][i], &pv[2][j], centroid([1, 3, 2])),
                     )
                 };
-                // The two triangles as corner indices (bit 0: u side, bit 1: v side).
-                let tris: [[usize; 3]; 2] =
-                    if main_diagonal(corner[0], corner[1], corner[2], corner[3]) {
-                        [[0, 1, 3], [0, 3, 2]]
-                    } else {
-                        [[0, 1, 2], [1, 3, 2]]
-                    };
-                let mut bad = (false, false);
-                let mut worst: f64 = 0.0;
-                for t in tris {
-                    // Centroid, then the three edge midpoints.
-                    let samples: [([f64; 3], bool, bool); 4] = [
-                        ([1.0 / 3.0; 3], true, true),
-                        ([0.5, 0.5, 0.0], true, true),
-                        ([0.0, 0.5, 0.5], true, true),
-                        ([0.5, 0.0, 0.5], true, true),
-                    ];
-                    for (k, (w, mut su, mut sv)) in samples.into_iter().enumerate() {
-                        if k > 0 {
-                            // An edge midpoint depends on the directions the edge spans.
-                            let (e0, e1) = match k {
-                                1 => (t[0], t[1]),
-                                2 => (t[1], t[2]),
-                                _ => (t[2], t[0]),
-                            };
-                            su = (e0 ^ e1) & 1 != 0;
-                            sv = (e0 ^ e1) & 2 != 0;
-                        }
-                        let (mut u, mut v, mut m) = (0.0, 0.0, DVec3::ZERO);
-                        for (c, &wk) in t.iter().zip(&w) {
-                            let (cu, cv) = param(*c);
-                            u += wk * cu;
-                            v += wk * cv;
-                            m += wk * corner[*c];
-                        }
-                        let e = s.eval(u, v).distance(m);
-                        worst = worst.max(e);
-                        if e > tol {
-                            bad.0 |= su;
-                            bad.1 |= sv;
-                        }
-                    }
-                }
-                split_u[i] |= bad.0;
-                split_v[j] |= bad.1;
-                max_err = max_err.max(worst);
+                let mut bad = check(&pu[0][i], &pv[0][j], diagonal);
+                bad |= check(first.0, first.1, first.2);
+                bad |= check(second.0, second.1, second.2);
+                split_u[i] |= bad;
+                split_v[j] |= bad;
             }
         }
         // The error falls at best like the square of the spacing, so the triangles needed grow
@@ -224,11 +243,6 @@ pub fn mesh_surface(s: &Surface, chord_tol: f64) -> Result<Mesh, SurfaceError> {
     }
     let (us, vs, verts) = refine_grid(s, us, vs, tol)?;
     let (nu, nv) = (us.len(), vs.len());
-    if let Some(i) = verts.iter().position(|p| !p.is_finite()) {
-        return Err(SurfaceError::Invalid(format!(
-            "surface evaluates to a non-finite point at grid vertex {i}"
-        )));
-    }
     let mut idx = Vec::with_capacity((nu - 1) * (nv - 1) * 6);
     for j in 0..nv - 1 {
         for i in 0..nu - 1 {
