@@ -15,6 +15,7 @@ mod cone;
 mod contact;
 mod error;
 mod hits;
+mod join;
 mod kinds;
 mod loose;
 mod ops;

@@ -118,7 +118,7 @@ fn section_seeded(
             (seed_tol, geom_tol, tol),
         );
         curves.extend(tips);
-        let curves = join_through(curves, geom_tol);
+        let curves = super::join::through_branches(curves, geom_tol);
         let settle = |c| super::loose::settle_section(&patch, plane, c, (geom_tol, tol));
         let mut curves = settle(curves);
         if !contacts {
@@ -461,7 +461,7 @@ fn through_meshes(
     if let Some((r, loops)) = region.as_mut() {
         curves = outside(r, (&pa, &pb), curves, loops, reach);
     }
-    let mut curves = join_through(curves, gtol);
+    let mut curves = super::join::through_branches(curves, gtol);
     let settle = |c| super::loose::settle_pair(&pa, &pb, c, (gtol, ctol));
     curves = settle(curves);
     if !contacts {
@@ -678,83 +678,4 @@ pub fn curve_on_surface(
         }
     }
     Ok(true)
-}
-
-/// Open curves joined where one ends on the point another begins (within `tol`, either way
-/// round) and runs straight on through it, the most nearly straight joint first; a curve then
-/// closed where its own ends meet so. The seeds split a crossing at a branch point, where
-/// the other crossing passes (two equal cylinders: four half-ellipses from the meshes at most
-/// seed tolerances, two closed ellipses at a few), and each piece is carried onto the point;
-/// nothing joined them, so the same surfaces gave two curves or four by the user's CHORDTOL.
-/// Within 15° only: the crossings through a branch point meet at an angle.
-fn join_through(mut curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
-    const STRAIGHT: f64 = 0.966;
-    // A curve's end (`last`) or start, and the direction it leaves there.
-    let end = |c: &Polyline3, last: bool| {
-        if last {
-            c.points[c.points.len() - 1]
-        } else {
-            c.points[0]
-        }
-    };
-    let out = |c: &Polyline3, last: bool| {
-        let p = &c.points;
-        if last {
-            super::refine::leaving(p[p.len() - 1], p.iter().rev().skip(1), tol)
-        } else {
-            super::refine::leaving(p[0], p.iter().skip(1), tol)
-        }
-    };
-    loop {
-        let open: Vec<usize> = (0..curves.len())
-            .filter(|&i| !curves[i].closed && curves[i].points.len() >= 2)
-            .collect();
-        // (straightness, i, i reversed, j, j reversed): i's end (start if reversed) to j's start.
-        let mut best: Option<(f64, usize, bool, usize, bool)> = None;
-        for &i in &open {
-            for &j in &open {
-                for (ri, rj) in [(false, false), (false, true), (true, false), (true, true)] {
-                    if i == j && (ri || rj || curves[i].points.len() < 4) {
-                        continue;
-                    }
-                    let (ci, cj) = (&curves[i], &curves[j]);
-                    if end(ci, !ri).distance(end(cj, rj)) > tol {
-                        continue;
-                    }
-                    // i leaves forward where j leaves backward: straight on where they oppose.
-                    let (Some(de), Some(ds)) = (out(ci, !ri), out(cj, rj)) else {
-                        continue;
-                    };
-                    let k = -de.dot(ds);
-                    if k >= STRAIGHT && best.is_none_or(|b| k > b.0) {
-                        best = Some((k, i, ri, j, rj));
-                    }
-                }
-            }
-        }
-        let Some((_, i, ri, j, rj)) = best else {
-            return curves;
-        };
-        if i == j {
-            // Its own end on its start: closed, ending on its first point as closed curves do.
-            let c = &mut curves[i];
-            let s = c.points[0];
-            if let Some(l) = c.points.last_mut() {
-                *l = s;
-            }
-            c.closed = true;
-            continue;
-        }
-        let mut head = std::mem::take(&mut curves[i].points);
-        let mut tail = std::mem::take(&mut curves[j].points);
-        if ri {
-            head.reverse();
-        }
-        if rj {
-            tail.reverse();
-        }
-        head.extend(tail.into_iter().skip(1));
-        curves[i].points = head;
-        curves.remove(j);
-    }
 }
