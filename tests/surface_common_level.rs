@@ -16,7 +16,9 @@ use std::f64::consts::FRAC_PI_3;
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{cylinders, off_strip as off_profile, summary, R};
+use surface_support::{
+    at_chordtols, cylinders, off_strip as off_profile, summary, Ask, CHORDTOLS, R,
+};
 
 const GT: f64 = 1e-9;
 const CT: f64 = 1e-6;
@@ -133,6 +135,26 @@ fn results(s: &Surface, y0: f64) -> Vec<(String, Vec<Polyline3>)> {
     ]
 }
 
+/// [`results`]' three asks of `s` against the plane `wall` (y = y0), as the builtins make them,
+/// for [`at_chordtols`].
+fn asks<'a>(s: &'a Surface, wall: &'a Surface, y0: f64) -> Vec<(String, Ask<'a>)> {
+    vec![
+        ("strip, plane".into(), Ask::Meet(s, wall)),
+        ("plane, strip".into(), Ask::Meet(wall, s)),
+        ("section".into(), Ask::Section(s, v(0.0, y0, 0.0), DVec3::Y)),
+    ]
+}
+
+/// `check` of every result of [`results`] (at CHORDTOL 1e-6, same bits twice), then of each
+/// of [`asks`] at every user CHORDTOL of [`CHORDTOLS`].
+fn at_every_chordtol(s: &Surface, y0: f64, check: impl Fn(&str, &[Polyline3])) {
+    for (order, r) in results(s, y0) {
+        check(&order, &r);
+    }
+    let wall = wall(y0);
+    at_chordtols(&asks(s, &wall, y0), &CHORDTOLS, |name, _, r| check(name, r));
+}
+
 #[test]
 fn a_flat_held_a_fraction_of_the_tolerance_off_a_plane_is_their_common_region() {
     // A wide flat (a third of the profile) and a narrow one (1/161 of it: no sample of the
@@ -142,10 +164,10 @@ fn a_flat_held_a_fraction_of_the_tolerance_off_a_plane_is_their_common_region() 
         for level in [0.0, 0.3, 0.9] {
             let y0 = level * GT;
             let slack = (y0 + GT) * 2f64.sqrt();
-            for (order, r) in results(&s, y0) {
+            at_every_chordtol(&s, y0, |order, r| {
                 let name = format!("w {w}, level {level}, {order}");
-                assert_flat_region(&name, &r, w, y0, slack);
-            }
+                assert_flat_region(&name, r, w, y0, slack);
+            });
         }
     }
 }
@@ -211,17 +233,17 @@ fn a_tangent_contact_is_no_region_whatever_its_least_gap() {
         }
     };
     for level in [0.0, 0.3, 0.9] {
-        for (order, r) in results(&strip, level * GT) {
+        at_every_chordtol(&strip, level * GT, |order, r| {
             let name = format!("arcs at level {level}, {order}");
             let on_plane = |p: DVec3| (p.y - level * GT).abs();
-            assert_no_region(&name, &r, [&on_arcs, &on_plane]);
+            assert_no_region(&name, r, [&on_arcs, &on_plane]);
             // The plane crosses the arcs where they rise to it, within the tolerance of
             // each other all the way: one contact line (the contact tracer tells a crossing
             // from a contact only where the gap between them passes the tolerance), within
             // the band where the arcs lie within the tolerance of the plane.
-            assert_eq!(r.len(), 1, "{name}: {}", summary(&r));
+            assert_eq!(r.len(), 1, "{name}: {}", summary(r));
             assert_contact_line(&name, &r[0], 0.0, (1.0 + level) * GT);
-        }
+        });
     }
     // Cylinders of radius 1 about the line y = 0, z = 1 (x from 0 to 4), on planes z = −level.
     for (kind, c) in cylinders() {
@@ -242,15 +264,22 @@ fn a_tangent_contact_is_no_region_whatever_its_least_gap() {
                     f64::INFINITY
                 }
             };
+            let check = |order: &str, r: &[Polyline3]| {
+                let name = format!("{kind} at level {level}, {order}");
+                let on_plane = |p: DVec3| (p.z - z0).abs();
+                assert_no_region(&name, r, [&on_cyl, &on_plane]);
+            };
             for (order, r) in [
                 ("cylinder, plane", surface_intersect_tol(&c, &plane, CT, GT)),
                 ("plane, cylinder", surface_intersect_tol(&plane, &c, CT, GT)),
             ] {
-                let name = format!("{kind} at level {level}, {order}");
-                let r = r.unwrap();
-                let on_plane = |p: DVec3| (p.z - z0).abs();
-                assert_no_region(&name, &r, [&on_cyl, &on_plane]);
+                check(order, &r.unwrap());
             }
+            let asks = [
+                ("cylinder, plane".into(), Ask::Meet(&c, &plane)),
+                ("plane, cylinder".into(), Ask::Meet(&plane, &c)),
+            ];
+            at_chordtols(&asks, &CHORDTOLS, |name, _, r| check(name, r));
         }
     }
 }
@@ -305,17 +334,17 @@ fn assert_two_flats(w: f64, m: usize) {
             };
             let s = Surface::ruled(curve(0.0), curve(3.0));
             let slack = 2.0 * GT * 2f64.sqrt();
-            for (order, r) in results(&s, 0.0) {
+            at_every_chordtol(&s, 0.0, |order, r| {
                 let name = format!("w {w}, flats at {d:?}, {order}");
-                assert_eq!(r.len(), 2, "{name}: {}", summary(&r));
+                assert_eq!(r.len(), 2, "{name}: {}", summary(r));
                 for x0 in [0.0, w + 2.0] {
                     let loops: Vec<_> = r
                         .iter()
                         .filter(|c| c.points.iter().all(|p| (p.x - x0 - 0.5 * w).abs() < 1.0))
                         .collect();
-                    assert_eq!(loops.len(), 1, "{name}: flat at {x0}: {}", summary(&r));
+                    assert_eq!(loops.len(), 1, "{name}: flat at {x0}: {}", summary(r));
                     let c = loops[0];
-                    assert!(c.closed, "{name}: {}", summary(&r));
+                    assert!(c.closed, "{name}: {}", summary(r));
                     for p in &c.points {
                         assert!(p.y.abs() <= GT, "{name}: {p} off the plane");
                         assert!(off_profile(*p, &profile) <= GT, "{name}: {p} off the strip");
@@ -334,7 +363,7 @@ fn assert_two_flats(w: f64, m: usize) {
                     );
                     assert!((area - 3.0 * w).abs() <= 8.0 * slack, "{name}: area {area}");
                 }
-            }
+            });
         }
     }
 }
@@ -361,12 +390,11 @@ fn flat_and_arcs(lift: f64, z: f64) -> Arc<Curve> {
 /// Where [`flat_and_arcs`]' arcs come lowest.
 const XC: f64 = 4.0;
 
-#[test]
-fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
-    // The flat coincides with the plane (the regions' level 0); the arcs touch it 0.6 × GEOMTOL
-    // off, a gap between the level's threshold and the tolerance, whose band a second pass at
-    // the whole tolerance would classify as well: still one loop, round the flat, and the
-    // contact as its line along z.
+/// The flat coincides with the plane (the regions' level 0); the arcs touch it 0.6 × GEOMTOL off,
+/// a gap between the level's threshold and the tolerance, whose band a second pass at the whole
+/// tolerance would classify as well: still one loop, round the flat, and the contact as its line
+/// along z. `run` is handed the strip and the check, which takes a result's name and curves.
+fn beside_a_coinciding_flat(run: impl FnOnce(&Surface, &dyn Fn(&str, &[Polyline3]))) {
     let lift = 0.6 * GT;
     let s = Surface::ruled(flat_and_arcs(lift, 0.0), flat_and_arcs(lift, 3.0));
     let on_profile = |p: DVec3| {
@@ -387,10 +415,10 @@ fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
             f64::INFINITY
         }
     };
-    for (order, r) in results(&s, 0.0) {
+    let check = |order: &str, r: &[Polyline3]| {
         let name = format!("flat and arcs, {order}");
         let loops: Vec<&Polyline3> = r.iter().filter(|c| c.closed).collect();
-        assert_eq!(loops.len(), 1, "{name}: {}", summary(&r));
+        assert_eq!(loops.len(), 1, "{name}: {}", summary(r));
         let slack = GT * 2f64.sqrt();
         for p in &loops[0].points {
             assert!(
@@ -401,11 +429,38 @@ fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
         let area = area_xz(&loops[0].points);
         assert!((area - 3.0).abs() <= 8.0 * slack, "{name}: area {area}");
         let open: Vec<&Polyline3> = r.iter().filter(|c| !c.closed).collect();
-        assert_eq!(open.len(), 1, "{name}: {}", summary(&r));
+        assert_eq!(open.len(), 1, "{name}: {}", summary(r));
         assert_contact_line(&name, open[0], XC, GT - lift);
         for p in r.iter().flat_map(|c| &c.points) {
             assert!(p.y.abs() <= GT, "{name}: {p} off the plane");
             assert!(on_profile(*p) <= GT, "{name}: {p} off the strip");
         }
-    }
+    };
+    run(&s, &check);
+}
+
+#[test]
+fn a_tangent_contact_beside_a_coinciding_flat_is_no_second_region() {
+    beside_a_coinciding_flat(|s, check| {
+        for (order, r) in results(s, 0.0) {
+            check(&order, &r);
+        }
+    });
+}
+
+/// [`a_tangent_contact_beside_a_coinciding_flat_is_no_second_region`] at the user's CHORDTOL.
+/// Open defect: the section by y = 0 at CHORDTOL 0.05, 0.03, 0.004, 0.003, 0.001 loses the
+/// contact (the loop alone comes back): no seed curve, and the contact search from the mesh's
+/// vertices finds a line on the flat (dropped inside the region) but none at the arcs' bottom.
+/// Both orders of intersect pass at every CHORDTOL.
+#[test]
+#[ignore = "open defect: the section loses the contact beside the flat at CHORDTOL 0.05, 0.03, \
+            0.004, 0.003, 0.001 (see the doc comment)"]
+fn a_tangent_contact_beside_a_coinciding_flat_at_the_users_chordtol() {
+    beside_a_coinciding_flat(|s, check| {
+        let wall = wall(0.0);
+        at_chordtols(&asks(s, &wall, 0.0), &CHORDTOLS, |name, _, r| {
+            check(name, r)
+        });
+    });
 }

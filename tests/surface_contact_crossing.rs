@@ -16,7 +16,8 @@ use std::sync::Arc;
 
 mod surface_support;
 use surface_support::{
-    assert_chords_on, assert_meet_at, assert_same_bits, section_and_both_orders, summary,
+    assert_chords_on, assert_meet_at, assert_same_bits, both_orders, failures,
+    section_and_both_orders, summary, Ask, CHORDTOLS,
 };
 
 /// The sheet for root `d`, the same at every x.
@@ -62,7 +63,8 @@ fn root(d0: f64, d1: f64, x: f64) -> f64 {
 /// √(16 + (d1 − d0)²) to 1e-6, every point within 1e-9 of the plane and of the sheet. Where d
 /// passes through zero (inside or at an end), both curves have a point within 2e-9 of where it
 /// does on y = 0: the branch point, where they meet.
-fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
+/// Every chord's midpoint within `chord` + 1e-9 of both surfaces.
+fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), chord: f64) {
     assert_eq!(r.len(), 2, "{name}: {}", summary(r));
     let d = |x: f64| root(d0, d1, x);
     let f = |x: f64, y: f64| y * y * (d(x) - y);
@@ -74,7 +76,7 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
     let contact = r.iter().find(|c| on_line(c, 0.0));
     let crossing = r.iter().find(|c| on_line(c, 1.0));
     let (Some(contact), Some(crossing)) = (contact, crossing) else {
-        panic!("{name}: {}", summary(r));
+        panic!("{name}: no contact and crossing: {}", summary(r));
     };
     // On the curves themselves, to what the gap's rounding allows (as in surface_contact_branch):
     // within 1e-9 of y = d (or 2e-8 of y = 0) but where the gap across flattens near a branch
@@ -113,12 +115,17 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
         let (a, b) = (a.min(b), a.max(b));
         assert!(
             a.abs() <= 1e-9 && (b - 4.0).abs() <= 1e-9,
-            "{name}: {}",
+            "{name}: ends short: {}",
             summary(r)
         );
-        assert!((c.length() - len).abs() <= 1e-6, "{name}: {}", summary(r));
+        assert!(
+            (c.length() - len).abs() <= 1e-6,
+            "{name}: length {} vs {len}: {}",
+            c.length(),
+            summary(r)
+        );
     }
-    // No chord cuts across anything: densified within 1e-6 of curves on both surfaces (the
+    // No chord cuts across anything: densified within `chord` of curves on both surfaces (the
     // sheet's height difference times the cosine of its slope).
     let off = |p: DVec3| {
         let (zx, zy) = (
@@ -128,7 +135,7 @@ fn check_between(name: &str, r: &[Polyline3], (d0, d1): (f64, f64)) {
         let cos = 1.0 / (1.0 + zx * zx + zy * zy).sqrt();
         p.z.abs().max((p.z - f(p.x, p.y)).abs() * cos)
     };
-    assert_chords_on(name, r, off, 1e-6 + 1e-9);
+    assert_chords_on(name, r, off, chord + 1e-9);
     // Tangent along the contact: the sheet's slope ∂z/∂y = 2dy − 3y² vanishes there.
     for p in &contact.points {
         assert!(
@@ -163,7 +170,7 @@ fn both_curves_come_back_between((d0, d1): (f64, f64), seed: f64, chord: f64) {
     for (name, run) in &runs {
         let r = run();
         let name = format!("{name} d = {d0}..{d1} seed {seed} chord {chord}");
-        check_between(&name, &r, (d0, d1));
+        check_between(&name, &r, (d0, d1), chord);
         for _ in 0..2 {
             let again = run();
             assert_same_bits(&name, &again, &r);
@@ -273,4 +280,109 @@ fn a_crossing_running_into_a_contact_at_an_edge_comes_back_with_it() {
     ] {
         both_curves_come_back_between((d0, d1), seed, 1e-6);
     }
+}
+
+/// Every sheet of the tests above at the user's CHORDTOL (`surface-section` by z = 0 and
+/// `surface-intersect` in both orders, the seeding meshes made within CHORDTOL, as the builtins
+/// do), checked as above with chords within CHORDTOL: each sheet's roots with the CHORDTOLs to
+/// run it at. Every failure is listed.
+fn at_the_users_chordtol(cases: &[((f64, f64), Vec<f64>)]) {
+    let plate = plate();
+    let mut failed = Vec::new();
+    let mut runs = 0;
+    for ((d0, d1), tols) in cases {
+        let (s, (d0, d1)) = (sheet_between(*d0, *d1), (*d0, *d1));
+        let mut asks = both_orders(("sheet", &s), ("plate", &plate));
+        asks.push(("section".into(), Ask::Section(&s, DVec3::ZERO, DVec3::Z)));
+        let asks: Vec<_> = asks
+            .into_iter()
+            .map(|(n, a)| (format!("{n} d = {d0}..{d1}"), a))
+            .collect();
+        runs += asks.len() * tols.len();
+        failed.extend(failures(&asks, tols, |name, t, r| {
+            check_between(name, r, (d0, d1), t)
+        }));
+    }
+    let n = failed.len();
+    assert!(n == 0, "{n} of {runs} failed:\n{}", failed.join("\n"));
+}
+
+/// The sheets' open defects at the user's CHORDTOL: roots, and the CHORDTOLs at which all or
+/// some of the three runs fail (see
+/// [`crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
+const OPEN: [((f64, f64), &[f64]); 8] = [
+    ((0.5, 0.5), &[0.05, 0.03, 0.02]),
+    ((0.2, 0.2), &[0.003, 0.002]),
+    ((0.01, 0.5), &COARSE),
+    ((0.5, 0.01), &COARSE),
+    ((0.03, 0.3), &[0.03, 0.02, 0.015]),
+    ((-0.1, 0.3), &[0.05]),
+    ((0.0, 0.3), &[0.05]),
+    ((0.3, 0.0), &[0.05]),
+];
+
+/// The CHORDTOLs from 0.05 to 0.005 of [`CHORDTOLS`].
+const COARSE: [f64; 9] = [0.05, 0.03, 0.02, 0.015, 0.012, 0.01, 0.008, 0.007, 0.005];
+
+/// Each sheet with roots `roots` at every CHORDTOL but those of its open defects.
+fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
+    let open = |d: (f64, f64)| OPEN.iter().find(|o| o.0 == d).map_or(&[][..], |o| o.1);
+    roots
+        .iter()
+        .map(|&d| {
+            let tols = CHORDTOLS.iter().filter(|t| !open(d).contains(t));
+            (d, tols.copied().collect())
+        })
+        .collect()
+}
+
+/// Before `meeting` left a crossing's end on a bounded edge where it is (branch.rs), a crossing
+/// running alongside a contact to the edge x = 0, closer to it than 2·CHORDTOL (the contact
+/// module's nearness), was carried along the edge to the contact's end: d = 0.01 failed at
+/// CHORDTOL 0.05 to 0.003 and d = 0.03 at 0.05 to 0.008, each crossing 0.02 or 0.06 too long.
+#[test]
+fn crossings_beside_contacts_at_the_users_chordtol() {
+    at_the_users_chordtol(&but_open(&[
+        (0.01, 0.01),
+        (0.03, 0.03),
+        (0.1, 0.1),
+        (0.2, 0.2),
+        (0.5, 0.5),
+    ]));
+}
+
+#[test]
+fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
+    at_the_users_chordtol(&but_open(&[
+        (0.01, 0.5),
+        (0.5, 0.01),
+        (0.003, 0.1),
+        (0.03, 0.3),
+    ]));
+}
+
+#[test]
+fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
+    at_the_users_chordtol(&but_open(&[(-0.1, 0.3), (0.0, 0.3), (0.3, 0.0)]));
+}
+
+/// Open defects at the user's CHORDTOL (the runs listed in [`OPEN`]; each sheet passes at the
+/// other CHORDTOLs):
+/// - d = 0.01..0.5, 0.5..0.01 at CHORDTOL 0.05 to 0.005, d = 0.03..0.3 at 0.03 to 0.015: the
+///   crossing, marched from where the meshes see it, stops where it comes within the contact
+///   module's nearness (`contact::beside`: 2·CHORDTOL + 4·√(GEOMTOL·size)) of the contact, at
+///   x ≈ 0.08 for 0.01..0.5 at CHORDTOL 0.01, and is joined from there to the contact's end
+///   (0, 0, 0): its piece from x = 0 to there is lost. That nearness scales with CHORDTOL (a
+///   traced contact's chords lie up to CHORDTOL off it), so at a coarse CHORDTOL two curves
+///   closer than 2·CHORDTOL are taken for one.
+/// - d = 0.5 at CHORDTOL 0.05, 0.03, 0.02, and the edge cases 0..0.3, 0.3..0 at 0.05: the
+///   section loses the contact (the crossing alone comes back).
+/// - d = 0.2 at CHORDTOL 0.003 and 0.002, all three runs: the contact is lost.
+/// - d = −0.1..0.3 at CHORDTOL 0.05 (sheet ∩ plate and the section): the crossing comes back
+///   4.0125 long instead of √16.16 (not traced).
+#[test]
+#[ignore = "open defects at coarse CHORDTOLs (see the doc comment)"]
+fn crossings_beside_contacts_at_the_users_chordtol_open_defects() {
+    let open: Vec<_> = OPEN.iter().map(|(d, t)| (*d, t.to_vec())).collect();
+    at_the_users_chordtol(&open);
 }

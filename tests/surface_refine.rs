@@ -13,6 +13,12 @@ use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
+mod surface_support;
+use surface_support::{
+    assert_chords_on, assert_covers, assert_inscribed_length, at_chordtols, both_orders,
+    curve_length, samples, summary, Ask, CHORDTOLS,
+};
+
 fn c(x: Curve) -> CurveRef {
     Arc::new(x)
 }
@@ -378,4 +384,242 @@ fn surfaces_touching_without_crossing_meet_in_points() {
     assert!(surface_intersect_seeded(&cyl, &torus(), 0.01, 1e-6, 1e-9)
         .unwrap()
         .is_empty());
+}
+
+// At the user's CHORDTOL: `(surface-intersect a b)` and `(surface-section s p n)` seed from
+// meshes made within CHORDTOL, so each closed-form case is run at every CHORDTOL of
+// surface_support::CHORDTOLS, checked as above but with chords within that CHORDTOL: points on
+// both surfaces to 1e-9, every chord's midpoint within CHORDTOL + 1e-9 of both, the true curve
+// covered (sampled, each sample within CHORDTOL of a chord) and the length inscribed.
+
+/// The cone z = 2ρ with its apex at the origin, up to z = 4.
+fn cone() -> Surface {
+    Surface::revolve(
+        c(Curve::line(DVec3::ZERO, DVec3::new(2.0, 0.0, 4.0)).unwrap()),
+        DVec3::ZERO,
+        DVec3::Z,
+        TAU,
+    )
+    .unwrap()
+}
+
+#[test]
+fn cone_and_cylinder_meet_in_one_closed_curve_at_the_users_chordtol() {
+    let (cone, cyl) = (
+        cone(),
+        Surface::cylinder(DVec3::new(0.5, 0.0, -1.0), DVec3::Z, 1.0, 6.0).unwrap(),
+    );
+    // On the cylinder (0.5 + cos θ, sin θ), z = 2ρ.
+    let curve = |t: f64| {
+        let (x, y) = (0.5 + t.cos(), t.sin());
+        DVec3::new(x, y, 2.0 * x.hypot(y))
+    };
+    let exact = curve_length(curve, (0.0, TAU));
+    let along = samples(curve, (0.0, TAU), 2000);
+    // The distances to the cone (its generator at slope 2 in the (ρ, z) plane) and the cylinder.
+    let off_cone = |p: DVec3| (2.0 * rho(p) - p.z).abs() / 5f64.sqrt();
+    let off_cyl = |p: DVec3| ((p.truncate() - glam_xy(0.5, 0.0)).length() - 1.0).abs();
+    let off = |p: DVec3| off_cone(p).max(off_cyl(p));
+    let asks = both_orders(("cone", &cone), ("cylinder", &cyl));
+    at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
+        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+        assert!(r[0].closed, "{name}: {}", summary(r));
+        for p in &r[0].points {
+            assert!(off(*p) <= 1e-9, "{name}: {p} off {:e}", off(*p));
+        }
+        assert_chords_on(name, r, off, t + 1e-9);
+        assert_covers(name, r, &along, 1.5 * t + 1e-9);
+        // Its curvature, at most 2.3 (numerically, at θ = π, where ρ is least).
+        assert_inscribed_length(name, r[0].length(), exact, (t, 2.3));
+    });
+}
+
+#[test]
+fn half_hyperboloid_section_is_a_half_circle_at_the_users_chordtol() {
+    let h = Surface::ruled(
+        c(Curve::arc(DVec3::ZERO, 2.0, 0.0, PI, None).unwrap()),
+        c(Curve::arc(DVec3::new(0.0, 0.0, 2.0), 2.0, PI / 2.0, 1.5 * PI, None).unwrap()),
+    );
+    // The rulings' midpoints: the half circle of radius √2 at z = 1 from 45° to 225°.
+    let r2 = 2f64.sqrt();
+    let arc = |t: f64| DVec3::new(r2 * t.cos(), r2 * t.sin(), 1.0);
+    let along = samples(arc, (PI / 4.0, 1.25 * PI), 2000);
+    let off = |p: DVec3| (p.z - 1.0).abs().max((rho(p) - r2).abs());
+    let asks = [(
+        "z = 1".to_string(),
+        Ask::Section(&h, DVec3::new(0.0, 0.0, 1.0), DVec3::Z),
+    )];
+    at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
+        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+        assert!(!r[0].closed, "{name}: {}", summary(r));
+        for p in &r[0].points {
+            assert!(off(*p) <= 1e-9, "{name}: {p}");
+        }
+        assert_chords_on(name, r, off, t + 1e-9);
+        assert_covers(name, r, &along, 1.5 * t + 1e-9);
+        assert_inscribed_length(name, r[0].length(), PI * r2, (t, 1.0 / r2));
+    });
+}
+
+#[test]
+fn a_coons_quarter_cylinder_meets_a_tilted_plane_at_the_users_chordtol() {
+    let n = DVec3::new(0.2, -0.1, 1.0);
+    let (x, y) = n.normalize().any_orthonormal_pair();
+    let square = Surface::plane(vec![
+        (-x - y) * 20.0,
+        (x - y) * 20.0,
+        (x + y) * 20.0,
+        (y - x) * 20.0,
+    ])
+    .unwrap();
+    let arc = |z: f64| c(Curve::arc(DVec3::new(0.0, 0.0, z), 5.0, 0.0, PI / 2.0, None).unwrap());
+    let line = |a: [f64; 3], b: [f64; 3]| {
+        c(Curve::line(DVec3::from_array(a), DVec3::from_array(b)).unwrap())
+    };
+    let coons = Surface::boundary([
+        arc(-2.0),
+        line([0.0, 5.0, -2.0], [0.0, 5.0, 2.0]),
+        arc(2.0),
+        line([5.0, 0.0, 2.0], [5.0, 0.0, -2.0]),
+    ])
+    .unwrap();
+    // On the cylinder ρ = 5 where n·p = 0: z = −cos θ + sin θ / 2, θ from 0 to π/2.
+    let curve = |t: f64| DVec3::new(5.0 * t.cos(), 5.0 * t.sin(), 0.5 * t.sin() - t.cos());
+    let exact = curve_length(curve, (0.0, PI / 2.0));
+    let along = samples(curve, (0.0, PI / 2.0), 2000);
+    let off = |p: DVec3| (n.normalize().dot(p)).abs().max((rho(p) - 5.0).abs());
+    let mut asks = both_orders(("coons", &coons), ("plane", &square));
+    asks.push(("section".into(), Ask::Section(&coons, DVec3::ZERO, n)));
+    at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
+        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+        assert!(!r[0].closed, "{name}: {}", summary(r));
+        for p in &r[0].points {
+            assert!(off(*p) <= 1e-9, "{name}: {p}");
+        }
+        assert_chords_on(name, r, off, t + 1e-9);
+        assert_covers(name, r, &along, 1.5 * t + 1e-9);
+        // Its curvature, at most 0.202 (numerically, at θ = 0).
+        assert_inscribed_length(name, r[0].length(), exact, (t, 0.21));
+    });
+}
+
+#[test]
+fn a_swept_torus_piece_meets_a_tilted_plane_in_two_curves_at_the_users_chordtol() {
+    let n = DVec3::new(0.2, -0.1, 1.0);
+    let (x, y) = n.normalize().any_orthonormal_pair();
+    let square = Surface::plane(vec![
+        (-x - y) * 20.0,
+        (x - y) * 20.0,
+        (x + y) * 20.0,
+        (y - x) * 20.0,
+    ])
+    .unwrap();
+    let profile = c(Curve::circle(DVec3::new(5.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap());
+    let guide = c(Curve::arc(DVec3::ZERO, 5.0, 0.0, PI / 2.0, None).unwrap());
+    let sweep = Surface::sweep(profile, guide).unwrap();
+    // In the meridian plane at θ, z = −ρ·a with a = (0.2 cos θ − 0.1 sin θ) on the plane, and
+    // (ρ − 5)² + z² = 1 on the torus: (1 + a²)ρ² − 10ρ + 24 = 0, two roots at every θ in
+    // [0, π/2] (an inner and an outer curve, each from the sweep's start to its end).
+    let branch = |s: f64| {
+        move |t: f64| {
+            let a = 0.2 * t.cos() - 0.1 * t.sin();
+            let q = 1.0 + a * a;
+            let r = (5.0 + s * (25.0 - 24.0 * q).sqrt()) / q;
+            DVec3::new(r * t.cos(), r * t.sin(), -r * a)
+        }
+    };
+    let mut along = samples(branch(-1.0), (0.0, PI / 2.0), 2000);
+    along.extend(samples(branch(1.0), (0.0, PI / 2.0), 2000));
+    // The sweep's frames are interpolated: its surface is the torus within 1e-6 only.
+    let torus = |p: DVec3| ((rho(p) - 5.0).hypot(p.z) - 1.0).abs();
+    let plane = |p: DVec3| n.normalize().dot(p).abs();
+    let mut asks = both_orders(("sweep", &sweep), ("plane", &square));
+    asks.push(("section".into(), Ask::Section(&sweep, DVec3::ZERO, n)));
+    at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
+        assert_eq!(r.len(), 2, "{name}: {}", summary(r));
+        for p in r.iter().flat_map(|c| &c.points) {
+            assert!(plane(*p) <= 1e-9 && torus(*p) <= 1e-6, "{name}: {p}");
+        }
+        assert!(r.iter().all(|c| !c.closed), "{name}: {}", summary(r));
+        let off = |p: DVec3| plane(p).max(torus(p));
+        assert_chords_on(name, r, off, t + 1e-6);
+        assert_covers(name, r, &along, 1.5 * t + 1e-6);
+    });
+}
+
+#[test]
+fn figure_eight_section_of_a_torus_at_the_users_chordtol() {
+    let torus = torus();
+    let double = DVec3::new(4.0, 0.0, 0.0);
+    // The lobes over the tube angle φ: ρ = 5 + cos φ, z = sin φ, y = ±√(ρ² − 16).
+    let lobe = |s: f64| {
+        move |f: f64| {
+            let r = 5.0 + f.cos();
+            DVec3::new(4.0, s * (r * r - 16.0).max(0.0).sqrt(), f.sin())
+        }
+    };
+    let exact = 2.0 * curve_length(lobe(1.0), (-PI, PI));
+    let mut along = samples(lobe(1.0), (-PI, PI), 2000);
+    along.extend(samples(lobe(-1.0), (-PI, PI), 2000));
+    let off = |p: DVec3| (p.x - 4.0).abs().max(on_torus(p));
+    let asks = [("x = 4".to_string(), Ask::Section(&torus, double, DVec3::X))];
+    at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
+        assert!(!r.is_empty(), "{name}: nothing");
+        for p in r.iter().flat_map(|c| &c.points) {
+            assert!(off(*p) <= 1e-9, "{name}: {p}");
+        }
+        // Both lobes pass through the double point.
+        for s in [1.0, -1.0] {
+            let lobe = r.iter().filter(|c| c.points.iter().any(|p| s * p.y > 1.0));
+            let meets = lobe
+                .flat_map(|c| &c.points)
+                .any(|p| p.distance(double) <= 1e-6);
+            assert!(
+                meets,
+                "{name}: lobe {s} misses the double point: {}",
+                summary(r)
+            );
+        }
+        assert_chords_on(name, r, off, t + 1e-9);
+        assert_covers(name, r, &along, 1.5 * t + 1e-9);
+        let total: f64 = r.iter().map(length).sum();
+        // Its curvature, at most 1.342 (numerically, at φ = 0).
+        assert_inscribed_length(name, total, exact, (t, 1.35));
+    });
+}
+
+#[test]
+fn surfaces_touching_without_crossing_meet_in_points_at_the_users_chordtol() {
+    let (torus, ball) = (
+        torus(),
+        Surface::sphere(DVec3::new(8.0, 0.0, 0.0), 2.0).unwrap(),
+    );
+    let asks = both_orders(("torus", &torus), ("ball", &ball));
+    at_chordtols(&asks, &CHORDTOLS, |name, _, r| {
+        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+        assert_eq!(r[0].points.len(), 1, "{name}: {}", summary(r));
+        let p = r[0].points[0];
+        let on_ball = (p.distance(DVec3::new(8.0, 0.0, 0.0)) - 2.0).abs();
+        assert!(on_torus(p) <= 1e-9 && on_ball <= 1e-9, "{name}: {p}");
+        assert!(p.distance(DVec3::new(6.0, 0.0, 0.0)) <= 1e-6, "{name}: {p}");
+    });
+    let cyl = Surface::cylinder(DVec3::new(-8.0, 0.0, 2.0), DVec3::X, 1.0, 16.0).unwrap();
+    let asks = both_orders(("cylinder", &cyl), ("torus", &torus));
+    at_chordtols(&asks, &CHORDTOLS, |name, _, r| {
+        assert_eq!(r.len(), 2, "{name}: {}", summary(r));
+        for c in r {
+            assert_eq!(c.points.len(), 1, "{name}: {}", summary(r));
+            let p = c.points[0];
+            let on_cyl = (p.y.hypot(p.z - 2.0) - 1.0).abs();
+            assert!(on_torus(p) <= 1e-9 && on_cyl <= 1e-9, "{name}: {p}");
+            let top = DVec3::new(5.0 * p.x.signum(), 0.0, 1.0);
+            assert!(p.distance(top) <= 1e-6, "{name}: {p}");
+        }
+        assert!(r[0].points[0].x * r[1].points[0].x < 0.0, "{name}");
+    });
+    let lifted = Surface::cylinder(DVec3::new(-8.0, 0.0, 2.001), DVec3::X, 1.0, 16.0).unwrap();
+    let asks = both_orders(("lifted cylinder", &lifted), ("torus", &torus));
+    at_chordtols(&asks, &CHORDTOLS, |name, _, r| {
+        assert!(r.is_empty(), "{name}: {}", summary(r));
+    });
 }

@@ -8,10 +8,12 @@
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{
-    surface_intersect_seeded, surface_intersect_tol, surface_section_seeded, Surface,
+    surface_intersect_seeded, surface_intersect_tol, surface_meet, surface_section_seeded,
+    surface_section_tol, Meet, Surface,
 };
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_3, PI};
+use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::process::Command;
 use std::sync::Arc;
 
@@ -301,4 +303,149 @@ pub fn assert_meet_at(name: &str, curves: &[&Polyline3], at: DVec3, within: f64)
             .fold(f64::INFINITY, f64::min);
         assert!(off <= within, "{name}: {off:e} from the branch point {at}");
     }
+}
+
+/// CHORDTOLs a user may set, coarse to fine (the default is 0.01), spaced unevenly so that the
+/// seeding meshes' vertices fall differently on the curves: at the user level the seeding
+/// tolerance IS CHORDTOL, so every closed-form case must hold at each of them.
+pub const CHORDTOLS: [f64; 16] = [
+    0.05, 0.03, 0.02, 0.015, 0.012, 0.01, 0.008, 0.007, 0.005, 0.004, 0.003, 0.002, 0.0015, 0.001,
+    7e-4, 5e-4,
+];
+
+/// One way a user asks where surfaces meet, as the builtins do it.
+pub enum Ask<'a> {
+    /// `(surface-intersect a b)`: [`surface_meet`]; coinciding everywhere is a failure here.
+    Meet(&'a Surface, &'a Surface),
+    /// `(surface-section s point normal)`: [`surface_section_tol`].
+    Section(&'a Surface, DVec3, DVec3),
+}
+
+impl Ask<'_> {
+    /// The curves at CHORDTOL `chordtol` and GEOMTOL 1e-9.
+    pub fn at(&self, chordtol: f64) -> Vec<Polyline3> {
+        match *self {
+            Ask::Meet(a, b) => match surface_meet(a, b, chordtol, 1e-9).unwrap() {
+                Meet::Curves(c) => c,
+                Meet::Everywhere => panic!("the surfaces coincide everywhere"),
+            },
+            Ask::Section(s, p, n) => surface_section_tol(s, p, n, chordtol, 1e-9).unwrap(),
+        }
+    }
+}
+
+/// Both orders of `(surface-intersect a b)`, named "`a`, `b`" and "`b`, `a`".
+pub fn both_orders<'a>(
+    (na, a): (&str, &'a Surface),
+    (nb, b): (&str, &'a Surface),
+) -> Vec<(String, Ask<'a>)> {
+    vec![
+        (format!("{na}, {nb}"), Ask::Meet(a, b)),
+        (format!("{nb}, {na}"), Ask::Meet(b, a)),
+    ]
+}
+
+/// Every ask at every CHORDTOL of `tols`, each result handed to `check(name, chordtol, curves)`
+/// (which asserts). All cases are run; the test then fails listing every (ask, CHORDTOL) that
+/// failed and why, so that one run shows the whole pattern of a defect.
+pub fn at_chordtols(asks: &[(String, Ask)], tols: &[f64], check: impl Fn(&str, f64, &[Polyline3])) {
+    let failed = failures(asks, tols, check);
+    assert!(
+        failed.is_empty(),
+        "{} of {} failed:\n{}",
+        failed.len(),
+        asks.len() * tols.len(),
+        failed.join("\n")
+    );
+}
+
+/// What [`at_chordtols`] asserts: why each (ask, CHORDTOL) whose check panicked failed.
+pub fn failures(
+    asks: &[(String, Ask)],
+    tols: &[f64],
+    check: impl Fn(&str, f64, &[Polyline3]),
+) -> Vec<String> {
+    let mut failed = Vec::new();
+    for &t in tols {
+        for (name, ask) in asks {
+            let name = format!("{name} at CHORDTOL {t}");
+            let run = catch_unwind(AssertUnwindSafe(|| check(&name, t, &ask.at(t))));
+            if let Err(e) = run {
+                let why = e
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                failed.push(why);
+            }
+        }
+    }
+    failed
+}
+
+/// That `curves` cover the true curve sampled as `samples`: each sample within `within` of
+/// some chord (a polyline densified within CHORDTOL of the curve lies within CHORDTOL of it
+/// everywhere; a piece missing or cut short leaves samples far from every chord).
+pub fn assert_covers(name: &str, curves: &[Polyline3], samples: &[DVec3], within: f64) {
+    for s in samples {
+        let d = curves
+            .iter()
+            .map(|c| distance_to_polyline(*s, c))
+            .fold(f64::INFINITY, f64::min);
+        assert!(d <= within, "{name}: {s} is {d:e} from every curve");
+    }
+}
+
+/// The distance from `p` to the chords of `c` (closing chord included), or to its one point.
+pub fn distance_to_polyline(p: DVec3, c: &Polyline3) -> f64 {
+    let n = c.points.len();
+    if n == 1 {
+        return p.distance(c.points[0]);
+    }
+    let segs = if c.closed { n } else { n - 1 };
+    (0..segs)
+        .map(|k| {
+            let (a, b) = (c.points[k], c.points[(k + 1) % n]);
+            let ab = b - a;
+            let t = if ab.length_squared() > 0.0 {
+                ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            p.distance(a + ab * t)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// `n + 1` points of the curve `f` at evenly spaced parameters from `t0` to `t1`.
+pub fn samples(f: impl Fn(f64) -> DVec3, (t0, t1): (f64, f64), n: usize) -> Vec<DVec3> {
+    (0..=n)
+        .map(|i| f(t0 + (t1 - t0) * i as f64 / n as f64))
+        .collect()
+}
+
+/// The length of the curve `f` from `t0` to `t1`: chord sums on 100 000 and 200 000 steps
+/// extrapolated (Richardson; their error is O(h²), so the result's is O(h⁴), far below 1e-9 on
+/// a smooth curve).
+pub fn curve_length(f: impl Fn(f64) -> DVec3, span: (f64, f64)) -> f64 {
+    let chords = |n: usize| -> f64 {
+        samples(&f, span, n)
+            .windows(2)
+            .map(|w| w[0].distance(w[1]))
+            .sum()
+    };
+    let (coarse, fine) = (chords(100_000), chords(200_000));
+    fine + (fine - coarse) / 3.0
+}
+
+/// That a polyline inscribed in a curve of length `exact` whose curvature is at most `kappa`,
+/// its chords within CHORDTOL `t` of the curve, has the length `l`: not longer (but for its
+/// points lying up to GEOMTOL off the curve), and short by at most what the chords' sag allows
+/// (a chord of sag s on a curvature κ is short by about s·κ/3 of its length; half again for
+/// the curvature varying along a chord).
+pub fn assert_inscribed_length(name: &str, l: f64, exact: f64, (t, kappa): (f64, f64)) {
+    assert!(
+        l <= exact + 1e-8 && exact - l <= 0.5 * t * kappa * exact + 1e-8,
+        "{name}: length {l} vs {exact}"
+    );
 }

@@ -304,6 +304,7 @@ fn regroup(
     }
     let crossings = Crossings {
         a,
+        other,
         gap,
         contacts: &traced,
         near,
@@ -321,6 +322,8 @@ fn regroup(
 /// The crossings beside traced contacts, found in pieces and carried on along them.
 struct Crossings<'c> {
     a: &'c Patch<'c>,
+    /// The surface the gap is measured to, where that is one: a crossing can end on its edge.
+    other: Option<&'c Patch<'c>>,
     gap: &'c dyn Fn(DVec2) -> GapAt,
     /// The traced contacts: a crossing is followed until it comes beside one of them...
     contacts: &'c [Polyline3],
@@ -364,7 +367,7 @@ impl Crossings<'_> {
         let reach = 2.0 * self.len;
         let joined = alongside::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
         branch::run_into(
-            self.a,
+            (self.a, self.other),
             self.gap,
             joined,
             self.contacts,

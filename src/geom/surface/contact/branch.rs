@@ -64,7 +64,7 @@ type Node = (DVec2, DVec3);
 /// point by about ∛tol; through them the crossing would be that long on the contact), and
 /// [`through_branch_points`] then puts the solved branch point in.
 pub(crate) fn run_into(
-    a: &Patch,
+    (a, other): (&Patch, Option<&Patch>),
     gap: &dyn Fn(DVec2) -> GapAt,
     mut pieces: Vec<Polyline3>,
     contacts: &[Polyline3],
@@ -78,7 +78,7 @@ pub(crate) fn run_into(
             continue;
         }
         for end in 0..2 {
-            if let Some((from, to)) = meeting(a, gap, c, end, contacts, near, tol) {
+            if let Some((from, to)) = meeting((a, other), gap, c, end, contacts, near, tol) {
                 meets.push((i, end, from, to));
             }
         }
@@ -119,7 +119,7 @@ pub(crate) fn run_into(
         };
         pieces.remove(i.max(j));
         // The joined piece's other ends, and the rest, as before.
-        return run_into(a, gap, pieces, contacts, near, (tol, chord_tol));
+        return run_into((a, other), gap, pieces, contacts, near, (tol, chord_tol));
     }
     for (i, end, from, to) in meets {
         let chord = assemble(&[from, to], false, |n| n.1, &mid_of, tol, chord_tol);
@@ -145,9 +145,11 @@ pub(crate) fn run_into(
 /// (a crossing running alongside a contact never comes within `near` of it). The meeting point
 /// is solved on the true surfaces (the extremum of the gap across the contact there) or, within
 /// near/sin(angle) of an open contact's end (a bounded edge the crossing runs into it at), is
-/// that end.
+/// that end. An end on a bounded edge of either surface is where the crossing ends: it runs into
+/// nothing (where the two stand closer than `near`, at a coarse CHORDTOL, a crossing running
+/// alongside a contact to the edge was carried along the edge to the contact's end).
 fn meeting(
-    a: &Patch,
+    (a, other): (&Patch, Option<&Patch>),
     gap: &dyn Fn(DVec2) -> GapAt,
     c: &Polyline3,
     end: usize,
@@ -161,6 +163,9 @@ fn meeting(
     let p = inwards(0);
     // The march stopped at the last node beyond `near`.
     if !super::near_any(p, contacts, 2.0 * near) {
+        return None;
+    }
+    if on_bounded_edge(a, p) || other.is_some_and(|o| on_bounded_edge(o, p)) {
         return None;
     }
     // The tangent over a chord of about `near`: the last nodes can be a bisection's length
@@ -189,6 +194,19 @@ fn meeting(
         .or_else(|| branch_point(a, gap, a.project(at, Some(from.0)), near / sine, tol))
         .or_else(|| onto_contact(a, gap, at, seg, from.0, tol))?;
     Some((from, to))
+}
+
+/// Whether `p` (a point of `s`) lies on an edge of `s` that bounds it, to 1e-9 in parameters.
+fn on_bounded_edge(s: &Patch, p: DVec3) -> bool {
+    let mut uv = s.project(p, None);
+    for k in 0..2 {
+        if uv[k] <= 1e-9 {
+            uv[k] = 0.0;
+        } else if uv[k] >= 1.0 - 1e-9 {
+            uv[k] = 1.0;
+        }
+    }
+    s.bounds_at(uv)
 }
 
 /// The half-width in space of the stencils [`branch_point`] takes the gap's derivatives on: wide
