@@ -310,7 +310,9 @@ fn at_the_users_chordtol(cases: &[((f64, f64), Vec<f64>)]) {
 /// The sheets' open defects at the user's CHORDTOL: roots, and the CHORDTOLs at which all or
 /// some of the three runs fail (see
 /// [`crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
-const OPEN: [((f64, f64), &[f64]); 6] = [
+const OPEN: [((f64, f64), &[f64]); 8] = [
+    ((0.5, 0.5), &[0.05, 0.03, 0.02]),
+    ((0.2, 0.2), &[0.003, 0.002]),
     ((0.01, 0.5), &COARSE),
     ((0.5, 0.01), &COARSE),
     ((0.03, 0.3), &[0.03, 0.02, 0.015]),
@@ -338,11 +340,6 @@ fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
 /// running alongside a contact to the edge x = 0, closer to it than 2·CHORDTOL (the contact
 /// module's nearness), was carried along the edge to the contact's end: d = 0.01 failed at
 /// CHORDTOL 0.05 to 0.003 and d = 0.03 at 0.05 to 0.008, each crossing 0.02 or 0.06 too long.
-/// Before the contact search's seeds (`Lows`) kept an uncrossed vertex level with a crossed
-/// neighbour and a seed flatter to the other surface than the crossing beside it, the contact
-/// was lost: d = 0.5 in the section at CHORDTOL 0.05, 0.03, 0.02 (the coarse mesh's vertex on
-/// the contact lost to the crossing's, 0.5 away, by a rounding difference of 1.4e-17 in their
-/// heights), d = 0.2 in all three runs at 0.003 and 0.002.
 #[test]
 fn crossings_beside_contacts_at_the_users_chordtol() {
     at_the_users_chordtol(&but_open(&[
@@ -378,8 +375,9 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 ///   (0, 0, 0): its piece from x = 0 to there is lost. That nearness scales with CHORDTOL (a
 ///   traced contact's chords lie up to CHORDTOL off it), so at a coarse CHORDTOL two curves
 ///   closer than 2·CHORDTOL are taken for one.
-/// - The edge cases 0..0.3, 0.3..0 at CHORDTOL 0.05: the section loses the contact (the
-///   crossing alone comes back; not traced).
+/// - d = 0.5 at CHORDTOL 0.05, 0.03, 0.02, and the edge cases 0..0.3, 0.3..0 at 0.05: the
+///   section loses the contact (the crossing alone comes back).
+/// - d = 0.2 at CHORDTOL 0.003 and 0.002, all three runs: the contact is lost.
 /// - d = −0.1..0.3 at CHORDTOL 0.05 (sheet ∩ plate and the section): the crossing comes back
 ///   4.0125 long instead of √16.16 (not traced).
 #[test]

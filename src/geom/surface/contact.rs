@@ -654,22 +654,18 @@ impl<'a> Lows<'a> {
             .filter(|x| x.0 <= 4.0 * reach)
             .min_by(|x, y| x.0.total_cmp(&y.0));
         nearest.is_some_and(|(r, q, t)| {
+            if crossed {
+                return true;
+            }
             let sine = t.get().unwrap_or_else(|| {
                 let s = (self.sine)(*q);
                 t.set(Some(s));
                 s
             });
-            if crossed {
-                // The crossing's own seed, unless flatter to the other surface than the
-                // crossing is: a contact within a coarse cell of it (CHORDTOL 0.05).
-                return sine.is_nan() || (self.sine)(p) >= 0.5 * sine;
-            }
             // Half the first-order gap, against curving back towards the other surface; the
             // seed (a vertex, or the midpoint of an edge) and the other mesh are each within
-            // the seed tolerance of their surfaces. A seed flatter, as above, is left in.
-            sine.is_nan()
-                || sine <= PARALLEL
-                || (dist >= 0.5 * r * sine - 2.0 * self.seed_tol && (self.sine)(p) >= 0.5 * sine)
+            // the seed tolerance of their surfaces.
+            sine.is_nan() || sine <= PARALLEL || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
         })
     }
 
@@ -678,8 +674,6 @@ impl<'a> Lows<'a> {
     fn vertices(&self, m: &Mesh) -> Vec<(usize, f64)> {
         let (va, ta) = (m.vertices(), m.triangles());
         let (dist, gap) = (self.dist, seed_gap(self.seed_tol));
-        // Distances this close are the same on the meshes' scale.
-        let tie = 1e-9 * self.seed_tol;
         // One pass over the edges, with no neighbour lists: a vertex stays a candidate while
         // every neighbour is farther (a section of a large mesh has few vertices within the gap).
         let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
@@ -695,12 +689,6 @@ impl<'a> Lows<'a> {
                 for (x, y) in [(i, j), (j, i)] {
                     has_edge[x] = true;
                     reach[x] = reach[x].max(l);
-                    // An uncrossed vertex level with a crossed neighbour stays: a contact a
-                    // coarse cell from a crossing, both on the other surface.
-                    let level = (dist[x] - dist[y]).abs() <= tie;
-                    if level && self.crossed[y] && !self.crossed[x] {
-                        continue;
-                    }
                     if !(dist[x] < dist[y] || (dist[x] == dist[y] && x < y)) {
                         low[x] = false;
                     }
