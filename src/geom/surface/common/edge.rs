@@ -352,7 +352,7 @@ fn over_edge(patch: &Patch, uv: DVec2, r: DVec3, tol: f64) -> bool {
 /// arc's gap is not quite a parabola) moves the zero least; then taken through the third too
 /// ([`quadratic_zero`]).
 fn fit_zero(s: [f64; 3], g: [f64; 3]) -> Option<f64> {
-    let mut best: Option<(f64, f64, usize)> = None;
+    let mut best: Option<(f64, f64, [f64; 3])> = None;
     for k in 1..=3 {
         let f = g.map(|x| x.powf(1.0 / k as f64));
         let slope = (f[1] - f[0]) / (s[1] - s[0]);
@@ -362,11 +362,11 @@ fn fit_zero(s: [f64; 3], g: [f64; 3]) -> Option<f64> {
         let predicted = f[1] + slope * (s[2] - s[1]);
         let misfit = (predicted - f[2]).abs() / f[2];
         if misfit <= FIT && best.is_none_or(|(m, ..)| misfit < m) {
-            best = Some((misfit, s[0] - f[0] / slope, k));
+            best = Some((misfit, s[0] - f[0] / slope, f));
         }
     }
-    let (_, linear, k) = best?;
-    Some(quadratic_zero(s, g.map(|x| x.powf(1.0 / k as f64)), linear))
+    let (_, linear, f) = best?;
+    Some(quadratic_zero(s, f, linear))
 }
 
 /// The zero near `linear` of the parabola through the samples `(s[i], f[i])` of the gap's
