@@ -29,53 +29,82 @@ struct Bend {
     dirs: [DVec3; 2],
 }
 
-/// Every point where one curve turns by more than 15° and another (or the same one, elsewhere
-/// along it) turns too, re-paired straightest first (see [`straightest`]) where that is
-/// straighter: the curves are cut there and the pieces joined again as re-paired. A turn at
-/// a point no other curve passes is the curve's own (a coarse chord, a corner), and a curve
-/// running straight through a point where another turns cannot be made straighter.
+/// An end of an open curve: the curve, whether its last point, and the direction the curve
+/// leaves that point in.
+struct End {
+    curve: usize,
+    last: bool,
+    point: DVec3,
+    dir: DVec3,
+}
+
+/// Where the curves are cut and joined again: for each curve, the bends cut at (index, and
+/// the slots of the pieces arriving there and leaving), and the slots of its start and end
+/// if they are joined; which slot each slot is joined to.
+struct Plan {
+    cuts: Vec<Vec<(usize, usize, usize)>>,
+    ends: Vec<[Option<usize>; 2]>,
+    partner: Vec<usize>,
+}
+
+/// Every point where a curve turns by more than 15° and other curves turn or end too,
+/// re-paired straightest first where that is straighter (see [`straighter`]): the curves are
+/// cut there and the pieces joined again as re-paired. A turn at a point no other curve passes
+/// or ends at is the curve's own (a coarse chord, a corner); an odd number of ways out there
+/// (a lens's tip with a contact ending on it) is left as it is.
 fn repair(curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
     let bends = bends(&curves, tol);
-    if bends.len() < 2 {
+    if bends.is_empty() {
         return curves;
     }
-    // The bends cut at, and for each of the two directions of each (2·g backwards, 2·g + 1
-    // on), the direction it is joined to.
-    let mut cut: Vec<&Bend> = Vec::new();
-    let mut partner: Vec<usize> = Vec::new();
-    let mut taken = vec![false; bends.len()];
+    let ends = ends(&curves, tol);
+    let mut plan = Plan {
+        cuts: vec![Vec::new(); curves.len()],
+        ends: vec![[None; 2]; curves.len()],
+        partner: Vec::new(),
+    };
+    let (mut bend_taken, mut end_taken) = (vec![false; bends.len()], vec![false; ends.len()]);
     for i in 0..bends.len() {
-        if taken[i] {
+        if bend_taken[i] {
             continue;
         }
         let at = curves[bends[i].curve].points[bends[i].at];
-        let node: Vec<usize> = (i..bends.len())
-            .filter(|&j| {
-                !taken[j] && curves[bends[j].curve].points[bends[j].at].distance(at) <= tol
-            })
+        let here = |p: DVec3| p.distance(at) <= tol;
+        let nb: Vec<usize> = (i..bends.len())
+            .filter(|&j| !bend_taken[j] && here(curves[bends[j].curve].points[bends[j].at]))
             .collect();
-        if node.len() < 2 {
+        let ne: Vec<usize> = (0..ends.len())
+            .filter(|&j| !end_taken[j] && here(ends[j].point))
+            .collect();
+        let dirs: Vec<DVec3> = (nb.iter().flat_map(|&j| bends[j].dirs))
+            .chain(ne.iter().map(|&j| ends[j].dir))
+            .collect();
+        if dirs.len() < 4 || dirs.len() % 2 == 1 {
             continue;
         }
-        let dirs: Vec<DVec3> = node.iter().flat_map(|&j| bends[j].dirs).collect();
-        let Some(pairs) = straighter(&dirs) else {
+        let Some(pairs) = straighter(&dirs, nb.len()) else {
             continue;
         };
-        let base = 2 * cut.len();
-        partner.resize(base + dirs.len(), 0);
+        let base = plan.partner.len();
+        plan.partner.resize(base + dirs.len(), 0);
         for (x, y) in pairs {
-            partner[base + x] = base + y;
-            partner[base + y] = base + x;
+            plan.partner[base + x] = base + y;
+            plan.partner[base + y] = base + x;
         }
-        for &j in &node {
-            taken[j] = true;
-            cut.push(&bends[j]);
+        for (g, &j) in nb.iter().enumerate() {
+            bend_taken[j] = true;
+            let b = &bends[j];
+            plan.cuts[b.curve].push((b.at, base + 2 * g, base + 2 * g + 1));
+        }
+        for (g, &j) in ne.iter().enumerate() {
+            end_taken[j] = true;
+            plan.ends[ends[j].curve][usize::from(ends[j].last)] = Some(base + 2 * nb.len() + g);
         }
     }
-    if cut.is_empty() {
+    if plan.partner.is_empty() {
         return curves;
     }
-    rejoin(curves, &cut, &partner)
+    rejoin(curves, plan)
 }
 
 /// The bends of `curves` (see [`Bend`]). The turn is read from the neighbouring points, and
@@ -129,17 +158,37 @@ fn bends(curves: &[Polyline3], tol: f64) -> Vec<Bend> {
     out
 }
 
-/// The directions leaving one point, paired straightest first (most nearly opposite), if
-/// that pairing is straighter than the one they came in (0 with 1, 2 with 3, …): its joints'
-/// straightness, straightest first, compared in turn, by more than rounding.
-fn straighter(dirs: &[DVec3]) -> Option<Vec<(usize, usize)>> {
+/// The ends of the open curves of `curves` (see [`End`]).
+fn ends(curves: &[Polyline3], tol: f64) -> Vec<End> {
+    let mut out = Vec::new();
+    for (ci, c) in curves.iter().enumerate() {
+        if c.closed || c.points.len() < 2 {
+            continue;
+        }
+        for last in [false, true] {
+            if let (point, Some(d)) = end(c, last, tol) {
+                out.push(End {
+                    curve: ci,
+                    last,
+                    point,
+                    dir: -d,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// `idx` (indices into `dirs`) paired straightest first: the two most nearly opposite, then
+/// the two most nearly opposite of the rest, …
+fn greedy(dirs: &[DVec3], idx: &[usize]) -> Vec<(usize, usize)> {
     let straightness = |(x, y): (usize, usize)| -dirs[x].dot(dirs[y]);
-    let mut all: Vec<(usize, usize)> = (0..dirs.len())
-        .flat_map(|x| (x + 1..dirs.len()).map(move |y| (x, y)))
+    let mut all: Vec<(usize, usize)> = (0..idx.len())
+        .flat_map(|x| (x + 1..idx.len()).map(move |y| (idx[x], idx[y])))
         .collect();
     all.sort_by(|&p, &q| straightness(q).total_cmp(&straightness(p)));
     let mut used = vec![false; dirs.len()];
-    let mut pairs = Vec::with_capacity(dirs.len() / 2);
+    let mut pairs = Vec::with_capacity(idx.len() / 2);
     for (x, y) in all {
         if !used[x] && !used[y] {
             used[x] = true;
@@ -147,42 +196,51 @@ fn straighter(dirs: &[DVec3]) -> Option<Vec<(usize, usize)>> {
             pairs.push((x, y));
         }
     }
-    // Already straightest first.
-    let new = pairs.iter().map(|&p| straightness(p));
-    let mut now: Vec<f64> = (0..dirs.len() / 2)
-        .map(|g| straightness((2 * g, 2 * g + 1)))
+    pairs
+}
+
+/// The directions leaving one point, the first 2·`passes` those of curves passing it (0 with
+/// 1, 2 with 3, …), the rest those of curves ending there, paired straightest first if that
+/// is straighter than as they are (the ends paired among themselves straightest first, as
+/// [`join_through`] would): the joints' straightness, straightest first, compared in turn, by
+/// more than rounding.
+fn straighter(dirs: &[DVec3], passes: usize) -> Option<Vec<(usize, usize)>> {
+    let straightness = |(x, y): (usize, usize)| -dirs[x].dot(dirs[y]);
+    let all: Vec<usize> = (0..dirs.len()).collect();
+    let pairs = greedy(dirs, &all);
+    let mut now: Vec<f64> = (0..passes)
+        .map(|g| (2 * g, 2 * g + 1))
+        .chain(greedy(dirs, &all[2 * passes..]))
+        .map(straightness)
         .collect();
     now.sort_by(|x, y| y.total_cmp(x));
+    // Already straightest first.
+    let new = pairs.iter().map(|&p| straightness(p));
     let first_apart = new.zip(now).find(|(n, o)| (n - o).abs() > 1e-9);
     first_apart.is_some_and(|(n, o)| n > o).then_some(pairs)
 }
 
-/// A piece of a curve cut at bends, with the direction slot (see [`repair`]) at each end that
-/// is a cut.
+/// A piece of a curve cut at bends, with the slot (see [`Plan`]) at each end that is joined.
 struct Piece {
     points: Vec<DVec3>,
     ends: [Option<usize>; 2],
 }
 
-/// The curves cut at the bends `cut` (bend g's directions are slots 2·g and 2·g + 1) and the
-/// pieces joined again slot to `partner` slot; the curves not cut come first, unchanged.
-fn rejoin(curves: Vec<Polyline3>, cut: &[&Bend], partner: &[usize]) -> Vec<Polyline3> {
-    let mut at: Vec<Vec<(usize, usize)>> = vec![Vec::new(); curves.len()];
-    for (g, b) in cut.iter().enumerate() {
-        at[b.curve].push((b.at, g));
-    }
+/// The curves cut and joined again as `plan` says; the curves it leaves alone come first,
+/// unchanged.
+fn rejoin(curves: Vec<Polyline3>, plan: Plan) -> Vec<Polyline3> {
     let mut out = Vec::new();
     let mut pieces: Vec<Piece> = Vec::new();
-    for (c, mut ks) in curves.into_iter().zip(at) {
-        if ks.is_empty() {
+    for ((c, mut ks), ends) in curves.into_iter().zip(plan.cuts).zip(plan.ends) {
+        if ks.is_empty() && ends == [None, None] {
             out.push(c);
             continue;
         }
         ks.sort_unstable();
-        pieces.extend(cut_at(c, &ks));
+        pieces.extend(cut_at(c, &ks, ends));
     }
     // Where each slot is: the piece, and whether at its start.
-    let mut slot_at = vec![(0, false); partner.len()];
+    let mut slot_at = vec![(0, false); plan.partner.len()];
     for (i, pc) in pieces.iter().enumerate() {
         for (e, s) in pc.ends.iter().enumerate() {
             if let Some(s) = s {
@@ -214,7 +272,7 @@ fn rejoin(curves: Vec<Polyline3>, cut: &[&Bend], partner: &[usize]) -> Vec<Polyl
             let Some(s) = pieces[cur].ends[usize::from(fwd)] else {
                 break false;
             };
-            let (next, at_start) = slot_at[partner[s]];
+            let (next, at_start) = slot_at[plan.partner[s]];
             if seen[next] {
                 break true;
             }
@@ -235,16 +293,16 @@ fn rejoin(curves: Vec<Polyline3>, cut: &[&Bend], partner: &[usize]) -> Vec<Polyl
     out
 }
 
-/// The curve `c` cut at the indices `ks` (ascending), bend g at `(k, g)`: each piece with the
-/// slot of the bend at each end that is a cut.
-fn cut_at(c: Polyline3, ks: &[(usize, usize)]) -> Vec<Piece> {
+/// The curve `c` cut at the bends `ks` (index ascending, then the slots arriving and
+/// leaving), its ends joined at the slots `ends` if open: each piece with its ends' slots.
+fn cut_at(c: Polyline3, ks: &[(usize, usize, usize)], ends: [Option<usize>; 2]) -> Vec<Piece> {
     let p = c.points;
     let m = ks.len();
     let mut out = Vec::with_capacity(m + 1);
     if c.closed {
         // From each cut on to the next, the last round through the first point.
-        for (i, &(k, g)) in ks.iter().enumerate() {
-            let (k1, g1) = ks[(i + 1) % m];
+        for (i, &(k, _, on)) in ks.iter().enumerate() {
+            let (k1, back1, _) = ks[(i + 1) % m];
             let points = if k1 > k {
                 p[k..=k1].to_vec()
             } else {
@@ -252,22 +310,22 @@ fn cut_at(c: Polyline3, ks: &[(usize, usize)]) -> Vec<Piece> {
             };
             out.push(Piece {
                 points,
-                ends: [Some(2 * g + 1), Some(2 * g1)],
+                ends: [Some(on), Some(back1)],
             });
         }
         return out;
     }
-    let mut from = (0, None);
-    for &(k, g) in ks {
+    let mut from = (0, ends[0]);
+    for &(k, back, on) in ks {
         out.push(Piece {
             points: p[from.0..=k].to_vec(),
-            ends: [from.1, Some(2 * g)],
+            ends: [from.1, Some(back)],
         });
-        from = (k, Some(2 * g + 1));
+        from = (k, Some(on));
     }
     out.push(Piece {
         points: p[from.0..].to_vec(),
-        ends: [from.1, None],
+        ends: [from.1, ends[1]],
     });
     out
 }
@@ -456,6 +514,34 @@ mod tests {
                 cv.closed
                     && cv.points.len() == 25
                     && cv.points[0] == cv.points[24]
+                    && cv
+                        .points
+                        .iter()
+                        .all(|p| (p.distance(c) - 2f64.sqrt()).abs() < 1e-12)
+            };
+            assert!(got.iter().any(round), "the circle about {c}: {got:?}");
+        }
+    }
+
+    #[test]
+    fn one_open_curve_round_both_circles_becomes_the_two() {
+        // From (−1, 0) round the circle about (0, 1), on there round the circle about
+        // (0, −1) and back: it turns at (−1, 0), where it also begins and ends.
+        let (up, down) = (v(0.0, 1.0), v(0.0, -1.0));
+        let first = arc(up, 225.0, -135.0, 24);
+        let second = arc(down, 135.0, 495.0, 24);
+        let both = open(
+            first
+                .into_iter()
+                .chain(second.into_iter().skip(1))
+                .collect(),
+        );
+        let got = through_branches(vec![both], 1e-9);
+        assert_eq!(got.len(), 2, "{got:?}");
+        for c in [up, down] {
+            let round = |cv: &Polyline3| {
+                cv.closed
+                    && cv.points.len() == 25
                     && cv
                         .points
                         .iter()
