@@ -12,6 +12,9 @@ use lispcad::geom::DVec3;
 use std::f64::consts::{PI, TAU};
 use std::sync::Arc;
 
+mod surface_support;
+use surface_support::cone;
+
 fn c(x: Curve) -> CurveRef {
     Arc::new(x)
 }
@@ -200,17 +203,6 @@ fn spheres_and_cylinders_meet_in_circles_or_touch_in_points() {
         assert!((rho(*p) - 2.0).abs() <= 1e-12);
         assert!((p.distance(DVec3::new(0.0, 0.0, 1.0)) - 3.0).abs() <= 1e-12);
     }
-}
-
-fn cone() -> Surface {
-    // z = 2ρ, ρ in [0, 2].
-    Surface::revolve(
-        c(Curve::line(DVec3::ZERO, DVec3::new(2.0, 0.0, 4.0)).unwrap()),
-        DVec3::ZERO,
-        DVec3::Z,
-        TAU,
-    )
-    .unwrap()
 }
 
 #[test]

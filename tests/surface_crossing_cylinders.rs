@@ -10,6 +10,9 @@ use lispcad::geom::surface::{surface_intersect_seeded, surface_intersect_tol, Su
 use lispcad::geom::DVec3;
 use std::f64::consts::TAU;
 
+mod surface_support;
+use surface_support::ellipse_perimeter;
+
 /// The user's CHORDTOLs tried, coarse to fine.
 const CHORDTOLS: [f64; 10] = [
     0.03, 0.02, 0.015, 0.01, 0.007, 0.005, 0.003, 0.002, 0.001, 0.0007,
@@ -197,19 +200,6 @@ fn at_sixty() -> (Cyl, Cyl, [DVec3; 2]) {
         cyl(a2),
         [(a1 - a2).normalize(), (a1 + a2).normalize()],
     )
-}
-
-/// Perimeter of the ellipse with semi-axes a, b (midpoint rule, 200 000 steps).
-fn ellipse_perimeter(a: f64, b: f64) -> f64 {
-    let n = 200_000;
-    (0..n)
-        .map(|i| {
-            let t = TAU * (i as f64 + 0.5) / n as f64;
-            (a * a * t.sin().powi(2) + b * b * t.cos().powi(2)).sqrt()
-        })
-        .sum::<f64>()
-        * TAU
-        / n as f64
 }
 
 /// The plane of [`at_sixty`] every point of `cv` is within 1e-9 of (0 or 1), if one is.

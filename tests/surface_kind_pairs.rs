@@ -14,6 +14,8 @@ use lispcad::geom::DVec3;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
+mod surface_support;
+
 fn c(x: Curve) -> CurveRef {
     Arc::new(x)
 }
@@ -162,17 +164,7 @@ fn a_swept_tube_and_a_coons_patch_meet_an_oblique_plane_on_both() {
     assert_len("sweep ∩ plane", total(&r), ellipse);
     // The quarter cylinder ρ = 5, x, y ≥ 0, |z| ≤ 2 as a Coons patch: the arc
     // (5 cos θ, 5 sin θ, cos θ), θ in [0, π/2].
-    let arc = |z: f64| c(Curve::arc(DVec3::new(0.0, 0.0, z), 5.0, 0.0, PI / 2.0, None).unwrap());
-    let line = |a: [f64; 3], b: [f64; 3]| {
-        c(Curve::line(DVec3::from_array(a), DVec3::from_array(b)).unwrap())
-    };
-    let coons = Surface::boundary([
-        arc(-2.0),
-        line([0.0, 5.0, -2.0], [0.0, 5.0, 2.0]),
-        arc(2.0),
-        line([5.0, 0.0, 2.0], [5.0, 0.0, -2.0]),
-    ])
-    .unwrap();
+    let coons = surface_support::quarter_cylinder_patch();
     let r = intersect(&coons, &pl);
     assert_eq!(r.len(), 1, "{r:?}");
     for p in &r[0].points {

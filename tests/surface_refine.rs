@@ -15,8 +15,9 @@ use std::sync::Arc;
 
 mod surface_support;
 use surface_support::{
-    assert_chords_on, assert_covers, assert_inscribed_length, at_chordtols, both_orders,
-    curve_length, samples, summary, Ask, CHORDTOLS,
+    assert_chords_on, assert_covers, assert_inscribed_length, at_chordtols, both_orders, cone,
+    curve_length, ellipse_perimeter, quarter_cylinder_patch, samples, square_across, summary, Ask,
+    CHORDTOLS,
 };
 
 fn c(x: Curve) -> CurveRef {
@@ -25,20 +26,6 @@ fn c(x: Curve) -> CurveRef {
 
 fn rho(p: DVec3) -> f64 {
     p.truncate().length()
-}
-
-/// Perimeter of the ellipse with semi-axes a, b by the midpoint rule on 200 000 steps (its error,
-/// O(h²) on a smooth periodic integrand — in fact spectral — is far below 1e-9).
-fn ellipse_perimeter(a: f64, b: f64) -> f64 {
-    let n = 200_000;
-    (0..n)
-        .map(|i| {
-            let t = TAU * (i as f64 + 0.5) / n as f64;
-            (a * a * t.sin().powi(2) + b * b * t.cos().powi(2)).sqrt()
-        })
-        .sum::<f64>()
-        * TAU
-        / n as f64
 }
 
 fn length(c: &Polyline3) -> f64 {
@@ -265,18 +252,7 @@ fn swept_and_coons_surfaces_meet_a_plane_on_both_true_surfaces() {
         // the point must lie on the plane to GEOMTOL and near the torus.
         assert!(on_plane(*p) && torus <= 1e-6, "{p} {torus}");
     }
-    // Quarter cylinder of radius 5 as a Coons patch.
-    let arc = |z: f64| c(Curve::arc(DVec3::new(0.0, 0.0, z), 5.0, 0.0, PI / 2.0, None).unwrap());
-    let line = |a: [f64; 3], b: [f64; 3]| {
-        c(Curve::line(DVec3::from_array(a), DVec3::from_array(b)).unwrap())
-    };
-    let coons = Surface::boundary([
-        arc(-2.0),
-        line([0.0, 5.0, -2.0], [0.0, 5.0, 2.0]),
-        arc(2.0),
-        line([5.0, 0.0, 2.0], [5.0, 0.0, -2.0]),
-    ])
-    .unwrap();
+    let coons = quarter_cylinder_patch();
     let curves = surface_intersect(&coons, &square, 0.01).unwrap();
     assert_eq!(curves.len(), 1);
     for p in &curves[0].points {
@@ -392,17 +368,6 @@ fn surfaces_touching_without_crossing_meet_in_points() {
 // both surfaces to 1e-9, every chord's midpoint within CHORDTOL + 1e-9 of both, the true curve
 // covered (sampled, each sample within CHORDTOL of a chord) and the length inscribed.
 
-/// The cone z = 2ρ with its apex at the origin, up to z = 4.
-fn cone() -> Surface {
-    Surface::revolve(
-        c(Curve::line(DVec3::ZERO, DVec3::new(2.0, 0.0, 4.0)).unwrap()),
-        DVec3::ZERO,
-        DVec3::Z,
-        TAU,
-    )
-    .unwrap()
-}
-
 #[test]
 fn cone_and_cylinder_meet_in_one_closed_curve_at_the_users_chordtol() {
     let (cone, cyl) = (
@@ -450,39 +415,36 @@ fn half_hyperboloid_section_is_a_half_circle_at_the_users_chordtol() {
         Ask::Section(&h, DVec3::new(0.0, 0.0, 1.0), DVec3::Z),
     )];
     at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
-        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
-        assert!(!r[0].closed, "{name}: {}", summary(r));
-        for p in &r[0].points {
-            assert!(off(*p) <= 1e-9, "{name}: {p}");
-        }
-        assert_chords_on(name, r, off, t + 1e-9);
-        assert_covers(name, r, &along, 1.5 * t + 1e-9);
-        assert_inscribed_length(name, r[0].length(), PI * r2, (t, 1.0 / r2));
+        assert_one_open_curve(name, t, r, off, &along, (PI * r2, 1.0 / r2));
     });
+}
+
+/// One open curve whose points are within 1e-9 of the closed form (`off`), its chords within
+/// CHORDTOL `t`, covering the true curve (`along`) and of inscribed length (exact length and
+/// the curve's greatest curvature).
+fn assert_one_open_curve(
+    name: &str,
+    t: f64,
+    r: &[Polyline3],
+    off: impl Fn(DVec3) -> f64,
+    along: &[DVec3],
+    (exact, kappa): (f64, f64),
+) {
+    assert_eq!(r.len(), 1, "{name}: {}", summary(r));
+    assert!(!r[0].closed, "{name}: {}", summary(r));
+    for p in &r[0].points {
+        assert!(off(*p) <= 1e-9, "{name}: {p}");
+    }
+    assert_chords_on(name, r, off, t + 1e-9);
+    assert_covers(name, r, along, 1.5 * t + 1e-9);
+    assert_inscribed_length(name, r[0].length(), exact, (t, kappa));
 }
 
 #[test]
 fn a_coons_quarter_cylinder_meets_a_tilted_plane_at_the_users_chordtol() {
     let n = DVec3::new(0.2, -0.1, 1.0);
-    let (x, y) = n.normalize().any_orthonormal_pair();
-    let square = Surface::plane(vec![
-        (-x - y) * 20.0,
-        (x - y) * 20.0,
-        (x + y) * 20.0,
-        (y - x) * 20.0,
-    ])
-    .unwrap();
-    let arc = |z: f64| c(Curve::arc(DVec3::new(0.0, 0.0, z), 5.0, 0.0, PI / 2.0, None).unwrap());
-    let line = |a: [f64; 3], b: [f64; 3]| {
-        c(Curve::line(DVec3::from_array(a), DVec3::from_array(b)).unwrap())
-    };
-    let coons = Surface::boundary([
-        arc(-2.0),
-        line([0.0, 5.0, -2.0], [0.0, 5.0, 2.0]),
-        arc(2.0),
-        line([5.0, 0.0, 2.0], [5.0, 0.0, -2.0]),
-    ])
-    .unwrap();
+    let square = square_across(n);
+    let coons = quarter_cylinder_patch();
     // On the cylinder ρ = 5 where n·p = 0: z = −cos θ + sin θ / 2, θ from 0 to π/2.
     let curve = |t: f64| DVec3::new(5.0 * t.cos(), 5.0 * t.sin(), 0.5 * t.sin() - t.cos());
     let exact = curve_length(curve, (0.0, PI / 2.0));
@@ -490,30 +452,16 @@ fn a_coons_quarter_cylinder_meets_a_tilted_plane_at_the_users_chordtol() {
     let off = |p: DVec3| (n.normalize().dot(p)).abs().max((rho(p) - 5.0).abs());
     let mut asks = both_orders(("coons", &coons), ("plane", &square));
     asks.push(("section".into(), Ask::Section(&coons, DVec3::ZERO, n)));
+    // Its curvature, at most 0.202 (numerically, at θ = 0).
     at_chordtols(&asks, &CHORDTOLS, |name, t, r| {
-        assert_eq!(r.len(), 1, "{name}: {}", summary(r));
-        assert!(!r[0].closed, "{name}: {}", summary(r));
-        for p in &r[0].points {
-            assert!(off(*p) <= 1e-9, "{name}: {p}");
-        }
-        assert_chords_on(name, r, off, t + 1e-9);
-        assert_covers(name, r, &along, 1.5 * t + 1e-9);
-        // Its curvature, at most 0.202 (numerically, at θ = 0).
-        assert_inscribed_length(name, r[0].length(), exact, (t, 0.21));
+        assert_one_open_curve(name, t, r, off, &along, (exact, 0.21));
     });
 }
 
 #[test]
 fn a_swept_torus_piece_meets_a_tilted_plane_in_two_curves_at_the_users_chordtol() {
     let n = DVec3::new(0.2, -0.1, 1.0);
-    let (x, y) = n.normalize().any_orthonormal_pair();
-    let square = Surface::plane(vec![
-        (-x - y) * 20.0,
-        (x - y) * 20.0,
-        (x + y) * 20.0,
-        (y - x) * 20.0,
-    ])
-    .unwrap();
+    let square = square_across(n);
     let profile = c(Curve::circle(DVec3::new(5.0, 0.0, 0.0), 1.0, Some(DVec3::Y)).unwrap());
     let guide = c(Curve::arc(DVec3::ZERO, 5.0, 0.0, PI / 2.0, None).unwrap());
     let sweep = Surface::sweep(profile, guide).unwrap();

@@ -508,12 +508,17 @@ mod tests {
         let outer = mixed(arc(up, 225.0, -45.0, 12), arc(down, 45.0, -225.0, 12));
         let inner = mixed(arc(down, 135.0, 45.0, 12), arc(up, 315.0, 225.0, 12));
         let got = through_branches(vec![outer, inner], 1e-9);
+        assert_the_two_circles(&got, up, down);
+        assert!(got.iter().all(|cv| cv.points[0] == cv.points[24]));
+    }
+
+    /// `got` is the two closed circles of radius √2 about `up` and `down`, 24 chords each.
+    fn assert_the_two_circles(got: &[Polyline3], up: DVec3, down: DVec3) {
         assert_eq!(got.len(), 2, "{got:?}");
         for c in [up, down] {
             let round = |cv: &Polyline3| {
                 cv.closed
                     && cv.points.len() == 25
-                    && cv.points[0] == cv.points[24]
                     && cv
                         .points
                         .iter()
@@ -537,18 +542,7 @@ mod tests {
                 .collect(),
         );
         let got = through_branches(vec![both], 1e-9);
-        assert_eq!(got.len(), 2, "{got:?}");
-        for c in [up, down] {
-            let round = |cv: &Polyline3| {
-                cv.closed
-                    && cv.points.len() == 25
-                    && cv
-                        .points
-                        .iter()
-                        .all(|p| (p.distance(c) - 2f64.sqrt()).abs() < 1e-12)
-            };
-            assert!(got.iter().any(round), "the circle about {c}: {got:?}");
-        }
+        assert_the_two_circles(&got, up, down);
     }
 
     #[test]
