@@ -225,7 +225,9 @@ const STEP: f64 = 4e-3;
 /// the point does not depend on where the crossing's last points are, which are known only to
 /// about ∛tol across near it. Within 2.4e-2 of a bounded edge the stencils are narrowed across
 /// it to fit (their noise grows as the square of that); None within 1.5e-3 of one, or when it
-/// does not converge, leaves `r`, or the surfaces do not meet there within `tol`.
+/// does not converge, leaves `r`, or the surfaces do not meet there within `tol`. Near the
+/// other surface's edge they are narrowed both ways (which way its edge runs in `a`'s
+/// parameters is not known), down to the same sixteenth.
 fn branch_point(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
@@ -253,6 +255,31 @@ fn branch_point(
             }
             unit[k] = room;
         }
+    }
+    // Nor may they reach past the other surface's edge, where the gap is taken to its edge
+    // (its distance then exceeds the signed gap by about how far past): narrowed to fit, in
+    // quarters, down to the same sixteenth.
+    let past = |x: DVec2, unit: DVec2| {
+        let g = gap(uv0 + x * unit);
+        g.dist - g.signed.abs() > tol
+    };
+    let ring = [
+        (6.0, 0.0),
+        (-6.0, 0.0),
+        (0.0, 6.0),
+        (0.0, -6.0),
+        (4.5, 4.5),
+        (4.5, -4.5),
+        (-4.5, 4.5),
+        (-4.5, -4.5),
+    ];
+    let mut shrunk = 1.0;
+    while ring.iter().any(|&(i, j)| past(DVec2::new(i, j), unit)) {
+        shrunk *= 0.75;
+        if shrunk < 1.0 / 16.0 {
+            return None;
+        }
+        unit *= 0.75;
     }
     let f = |x: DVec2| gap(uv0 + x * unit).signed;
     // On a stencil of `s` units: fourth order.
@@ -296,7 +323,7 @@ fn branch_point(
         let (b1, b2) = (-ju.dot(h0), -jv.dot(h0));
         let step = DVec2::new(m22 * b1 - m12 * b2, m11 * b2 - m12 * b1) / det;
         x += step;
-        if (x * STEP).length() > r {
+        if (x * (STEP * shrunk)).length() > r {
             return None;
         }
         // The components are linear in x near the point but for their noise (about 1e-15 of
