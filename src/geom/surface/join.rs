@@ -220,6 +220,14 @@ fn straighter(dirs: &[DVec3], passes: usize) -> Option<Vec<(usize, usize)>> {
     first_apart.is_some_and(|(n, o)| n > o).then_some(pairs)
 }
 
+/// A closed curve's points end on its first point exactly, as closed curves do (its last point
+/// was within the joining tolerance of it).
+fn end_on_first(points: &mut [DVec3]) {
+    if let (Some(&first), Some(last)) = (points.first(), points.len().checked_sub(1)) {
+        points[last] = first;
+    }
+}
+
 /// A piece of a curve cut at bends, with the slot (see [`Plan`]) at each end that is joined.
 struct Piece {
     points: Vec<DVec3>,
@@ -279,11 +287,7 @@ fn rejoin(curves: Vec<Polyline3>, plan: Plan) -> Vec<Polyline3> {
             (cur, fwd) = (next, at_start);
         };
         if closed {
-            // Ending on its first point, as closed curves do.
-            let first = pts[0];
-            if let Some(l) = pts.last_mut() {
-                *l = first;
-            }
+            end_on_first(&mut pts);
         }
         out.push(Polyline3 {
             points: pts,
@@ -353,8 +357,12 @@ fn join_through(mut curves: Vec<Polyline3>, tol: f64) -> Vec<Polyline3> {
     curves
 }
 
+/// An end point of a curve and the direction the curve leaves it in there (none where the
+/// curve does not leave it).
+type CurveEnd = (DVec3, Option<DVec3>);
+
 /// A curve's end (`last`) or start, and the direction it leaves the curve in there.
-fn end(c: &Polyline3, last: bool, tol: f64) -> (DVec3, Option<DVec3>) {
+fn end(c: &Polyline3, last: bool, tol: f64) -> CurveEnd {
     let p = &c.points;
     if last {
         let e = p[p.len() - 1];
@@ -366,17 +374,19 @@ fn end(c: &Polyline3, last: bool, tol: f64) -> (DVec3, Option<DVec3>) {
 
 /// The straightest joint of two open curves' ends meeting within `tol` (see [`join_through`]).
 fn straightest_joint(curves: &[Polyline3], tol: f64) -> Option<Joint> {
-    let open: Vec<usize> = (0..curves.len())
+    // Each open curve's start and end, taken once: every pair of curves looks at them.
+    let open: Vec<(usize, [CurveEnd; 2])> = (0..curves.len())
         .filter(|&i| !curves[i].closed && curves[i].points.len() >= 2)
+        .map(|i| (i, [false, true].map(|last| end(&curves[i], last, tol))))
         .collect();
     let mut best: Option<(f64, Joint)> = None;
-    for &i in &open {
-        for &j in &open {
+    for &(i, ends_i) in &open {
+        for &(j, ends_j) in &open {
             for (ri, rj) in [(false, false), (false, true), (true, false), (true, true)] {
                 if i == j && (ri || rj || curves[i].points.len() < 4) {
                     continue;
                 }
-                let ((pe, de), (ps, ds)) = (end(&curves[i], !ri, tol), end(&curves[j], rj, tol));
+                let ((pe, de), (ps, ds)) = (ends_i[usize::from(!ri)], ends_j[usize::from(rj)]);
                 if pe.distance(ps) > tol {
                     continue;
                 }
@@ -397,13 +407,9 @@ fn straightest_joint(curves: &[Polyline3], tol: f64) -> Option<Joint> {
 /// `curves` with the `joint` made: one curve closed, or two made one.
 fn join(curves: &mut Vec<Polyline3>, Joint { i, ri, j, rj }: Joint) {
     if i == j {
-        // Its own end on its start: closed, ending on its first point as closed curves do.
-        let c = &mut curves[i];
-        let s = c.points[0];
-        if let Some(l) = c.points.last_mut() {
-            *l = s;
-        }
-        c.closed = true;
+        // Its own end on its start: closed.
+        end_on_first(&mut curves[i].points);
+        curves[i].closed = true;
         return;
     }
     let mut head = std::mem::take(&mut curves[i].points);
