@@ -1,11 +1,19 @@
 //! Waiting for a save of any of a run's files. Directories are watched, not files: editors
 //! often replace a file by renaming a new one over it. Used by `watch` and `serve`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::{Duration, SystemTime};
 
 use notify::{RecommendedWatcher, RecursiveMode, Watcher};
+
+/// A run's inputs known before it starts: the script, and the drawing every run starts from
+/// (`--open`), whose save re-runs too.
+pub fn inputs(script: &Path, open: Option<&PathBuf>) -> Vec<PathBuf> {
+    std::iter::once(script.to_path_buf())
+        .chain(open.cloned())
+        .collect()
+}
 
 pub struct Changes {
     watcher: RecommendedWatcher,
@@ -30,10 +38,12 @@ impl Changes {
         })
     }
 
-    /// Blocks until one of `files` changes after `since` (when the run that read them
-    /// started), then lets a burst of events settle (an editor's save is several). False when
-    /// the watcher has stopped. `settle`: how long the events must pause.
-    pub fn wait(&mut self, files: &[PathBuf], since: SystemTime, settle: Duration) -> bool {
+    /// Watches the directories of `files` from now on; returns them canonical. Called before
+    /// the first run with the files known then (the script, the drawing it opens): a save
+    /// made while that run is going, or just after it, is then an event. The file's time alone
+    /// can miss it, as it comes from the kernel's coarse clock, which can be a few
+    /// milliseconds behind the run's start taken from the fine one.
+    pub fn watch(&mut self, files: &[PathBuf]) -> Vec<PathBuf> {
         let files: Vec<PathBuf> = files.iter().filter_map(|f| f.canonicalize().ok()).collect();
         for f in &files {
             if let Some(d) = f.parent() {
@@ -45,8 +55,17 @@ impl Changes {
                 }
             }
         }
-        // A directory is only watched from here on: a save during the run, or before the
-        // watch was added, shows in the file's time alone. A time ahead of the clock (a file
+        files
+    }
+
+    /// Blocks until one of `files` changes after `since` (when the run that read them
+    /// started), then lets a burst of events settle (an editor's save is several). False when
+    /// the watcher has stopped. `settle`: how long the events must pause.
+    pub fn wait(&mut self, files: &[PathBuf], since: SystemTime, settle: Duration) -> bool {
+        let files = self.watch(files);
+        // A directory first seen in this run (one a loaded file is in) is only watched from
+        // here on: a save in it during the run, or before the watch was added, shows in the
+        // file's time alone. A time ahead of the clock (a file
         // from an archive) is not a save, or it would re-run forever.
         let now = SystemTime::now();
         let saved_meanwhile = files.iter().any(|f| {
@@ -70,5 +89,31 @@ impl Changes {
         }
         while self.rx.recv_timeout(settle).is_ok() {}
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A save timed before the run's start (the kernel's coarse clock lagging the fine one)
+    /// made after the script's directory is watched is still seen. Without the watch before
+    /// the run, the event is lost and the file's time says nothing changed: `wait` blocks.
+    #[test]
+    fn a_save_stamped_before_the_runs_start_is_seen_once_the_directory_is_watched() {
+        let dir = tempfile::tempdir().unwrap();
+        let lib = dir.path().join("lib.lsp");
+        std::fs::write(&lib, "(setq r 4)\n").unwrap();
+        let mut c = Changes::new().unwrap();
+        c.watch(&[lib.clone()]);
+        let since = SystemTime::now();
+        std::fs::write(&lib, "(setq r 7)\n").unwrap();
+        let f = std::fs::File::options().write(true).open(&lib).unwrap();
+        f.set_modified(since - Duration::from_millis(3)).unwrap();
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(c.wait(&[lib], since, Duration::from_millis(20)));
+        });
+        assert_eq!(rx.recv_timeout(Duration::from_secs(20)), Ok(true));
     }
 }

@@ -22,9 +22,7 @@ pub struct WatchArgs {
 
 /// One run; returns the files the script read (itself and what it loaded).
 fn run_once(args: &WatchArgs, common: &Common) -> Vec<PathBuf> {
-    let mut watched = vec![args.file.clone()];
-    // The drawing the script starts from is an input too: a change to it re-runs.
-    watched.extend(common.open.iter().cloned());
+    let mut watched = super::changes::inputs(&args.file, common.open.as_ref());
     let policy = super::run::fs_policy(common, Some(&args.file), &args.outputs, &watched[1..]);
     let mut it = match super::run::configured_interp(common, policy) {
         Ok(it) => it,
@@ -86,6 +84,7 @@ pub fn watch(args: &WatchArgs, common: &Common) -> i32 {
             return EXIT_USAGE;
         }
     };
+    changes.watch(&super::changes::inputs(&args.file, common.open.as_ref()));
     loop {
         let started = SystemTime::now();
         let read = run_once(args, common);

@@ -135,9 +135,7 @@ pub fn snapshot(it: &mut Interp) -> Result<(Drawing, OutputOptions), Failure> {
 
 /// One run of the script in a fresh interpreter; the files it read (itself and its loads).
 fn run_once(args: &ServeArgs, common: &Common, shared: &Shared) -> Vec<PathBuf> {
-    let mut read = vec![args.file.clone()];
-    // `--open IN.dxf` (a common option): every run starts from it, and saving it re-runs.
-    read.extend(common.open.iter().cloned());
+    let mut read = super::changes::inputs(&args.file, common.open.as_ref());
     let named: Vec<PathBuf> = common.open.iter().cloned().collect();
     let policy = super::run::fs_policy(common, Some(&args.file), &[], &named);
     let mut it = match super::run::configured_interp(common, policy) {
@@ -196,6 +194,7 @@ pub fn serve(args: &ServeArgs, common: &Common) -> i32 {
             return EXIT_USAGE;
         }
     };
+    watch.watch(&super::changes::inputs(&args.file, common.open.as_ref()));
     // Announced after the first run: whoever reads the address finds a drawing (or error).
     let mut started = std::time::SystemTime::now();
     let mut read = run_once(args, common, &shared);
