@@ -1,18 +1,19 @@
 //! Tangent contacts along a curve reached through the mesh path (issue 13, item 3): a cylinder
 //! built as a ruled, swept or revolved surface lying on a plane gives its ruling as one curve,
 //! a torus under a plane region its top circle as one closed curve, whether or not the seeding
-//! mesh has vertices exactly on the contact; an isolated contact stays a point. References are
-//! the closed forms written out here (the ruling's ends, the circle ρ = 3, z = 1).
+//! mesh has vertices exactly on the contact; an isolated contact stays a point; two contact
+//! lines a ridge apart both come back. References are the closed forms written out here (the
+//! ruling's ends, the circle ρ = 3, z = 1, the arcs' lowest lines).
 
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::{surface_intersect_seeded, surface_section_seeded, Surface};
 use lispcad::geom::DVec3;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_3, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, cylinders, summary};
+use surface_support::{assert_chords_on, at_chordtols, cylinders, summary, Ask, CHORDTOLS, R};
 
 /// The square region of half-size `h` about `c` spanned by the unit vectors `e1`, `e2`.
 fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
@@ -130,4 +131,83 @@ fn an_isolated_contact_through_the_mesh_path_stays_a_point() {
         r[0].points[0].distance(DVec3::new(4.0, 0.0, 0.0)) <= 1e-6,
         "{r:?}"
     );
+}
+
+/// Where [`two_dips`]' second arcs come lowest (the first at x = 0).
+const X2: f64 = 4.0;
+
+/// Two arcs of radius R, ±60° about their lowest points (0, 0) and (X2, 0), which touch the
+/// line y = 0 there, joined by a ridge along y = R/2 = 1 between x = R·sin 60° and
+/// X2 − R·sin 60°: the profile at z.
+fn two_dips(z: f64) -> Arc<Curve> {
+    let (m, d) = (60usize, FRAC_PI_3 / 60.0);
+    let at = |xc: f64, f: f64| DVec3::new(xc + R * f.sin(), R - R * f.cos(), z);
+    let arc = |xc: f64| (0..=2 * m).map(move |k| at(xc, (k as f64 - m as f64) * d));
+    let mut pts: Vec<DVec3> = arc(0.0).collect();
+    pts.extend(arc(X2));
+    // The bulge of each arc segment, none on the ridge between the arcs (nor after the last
+    // point).
+    let mut bulges = vec![(d / 4.0).tan(); 2 * m];
+    bulges.push(0.0);
+    bulges.extend(vec![(d / 4.0).tan(); 2 * m]);
+    bulges.push(0.0);
+    Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
+}
+
+/// The distance from `p` to the strip ruled between [`two_dips`] at z = 0 and z = 3, in closed
+/// form near its arcs (where the contacts lie), within its z range.
+fn off_dips(p: DVec3) -> f64 {
+    let arc = |xc: f64| ((p.x - xc).hypot(p.y - R) - R).abs();
+    if (-1e-9..=3.0 + 1e-9).contains(&p.z) {
+        arc(0.0).min(arc(X2))
+    } else {
+        f64::INFINITY
+    }
+}
+
+#[test]
+fn two_contact_lines_a_ridge_apart_both_come_back_at_the_users_chordtol() {
+    // The strip's rulings (3 long) make the mesh's cells long across the contacts: a contact
+    // search that took "within four cells of a contact found" for "the same contact" lost the
+    // second line, behind the ridge 4 away, at 9 of the 16 CHORDTOLs in all three asks.
+    let s = Surface::ruled(two_dips(0.0), two_dips(3.0));
+    let wall = region(DVec3::new(2.0, 0.0, 1.5), DVec3::X, DVec3::Z, 6.0);
+    let asks = vec![
+        ("dips, wall".to_string(), Ask::Meet(&s, &wall)),
+        ("wall, dips".to_string(), Ask::Meet(&wall, &s)),
+        (
+            "section".to_string(),
+            Ask::Section(&s, DVec3::ZERO, DVec3::Y),
+        ),
+    ];
+    // Within GEOMTOL of the plane y = 0 the arcs lie within √(2·R·GEOMTOL) of their lowest line.
+    let band = (2.0 * R * 1e-9).sqrt();
+    at_chordtols(&asks, &CHORDTOLS, |name, _, r| {
+        assert_eq!(r.len(), 2, "{name}: {}", summary(r));
+        for x0 in [0.0, X2] {
+            let at: Vec<&Polyline3> = r
+                .iter()
+                .filter(|c| (c.points[0].x - x0).abs() <= band)
+                .collect();
+            assert_eq!(at.len(), 1, "{name}: contact at x = {x0}: {}", summary(r));
+            let c = at[0];
+            assert!(!c.closed && c.points.len() >= 2, "{name}: {}", summary(r));
+            let z = [c.points[0].z, c.points[c.points.len() - 1].z];
+            let ends = z[0].min(z[1]).abs() <= 1e-9 && (z[0].max(z[1]) - 3.0).abs() <= 1e-9;
+            assert!(ends, "{name}: contact at x = {x0} ends at z {z:?}");
+            assert!(
+                (c.length() - 3.0).abs() <= 1e-6,
+                "{name}: length {}",
+                c.length()
+            );
+            for p in &c.points {
+                assert!(
+                    (p.x - x0).abs() <= band,
+                    "{name}: {p} off the contact at x = {x0}"
+                );
+                assert!(p.y.abs() <= 1e-9, "{name}: {p} off the plane");
+                assert!(off_dips(*p) <= 1e-9, "{name}: {p} off the strip");
+            }
+        }
+    });
 }

@@ -18,6 +18,8 @@
 mod alongside;
 mod branch;
 mod line;
+mod ridge;
+mod small_loop;
 mod tip;
 
 use super::refine::Patch;
@@ -25,6 +27,7 @@ use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use branch::contact_curve_near;
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
+use small_loop::small_loop;
 use std::cell::Cell;
 
 /// The contacts of `a` and `b` (meshed as `ma`, `mb` within `seed_tol`) not on `curves`: a
@@ -87,13 +90,19 @@ pub(crate) fn tangent_contacts(
         .collect();
     seeds.extend(lows.edges(ma, &to_b));
     let dup = beside(a, tol, chord_tol);
+    let warm_ridge: Cell<Option<DVec2>> = Cell::new(None);
+    let found = ridge::Found {
+        a,
+        gap: &|uv| pair_gap(a, b, &warm_ridge, uv).dist,
+        rise: seed_tol,
+    };
     for (q, reach) in seeds {
-        if near_any(q, &out, 4.0 * reach) || shared(q) {
+        if found.claims(q, &out, 4.0 * reach) || shared(q) {
             continue;
         }
         if let Some((uv, p)) = touch(a, b, q, tol) {
             // A seed beside a curve found (let through by `Lows`) can lead onto that curve.
-            if near_any(p, &out, 4.0 * reach) || near_any(p, curves, dup) || shared(p) {
+            if found.claims(p, &out, 4.0 * reach) || near_any(p, curves, dup) || shared(p) {
                 continue;
             }
             out.push(
@@ -473,15 +482,21 @@ pub(crate) fn plane_contacts(
     };
     let gap_at = |uv: DVec2| plane_gap(a, (p0, n), uv);
     let mut out: Vec<Polyline3> = Vec::new();
+    let found = ridge::Found {
+        a,
+        gap: &|uv| h(uv).abs(),
+        rise: seed_tol,
+    };
     for (i, reach) in lows.vertices(ma) {
-        if near_any(ma.vertices()[i], &out, 4.0 * reach) {
+        if found.claims(ma.vertices()[i], &out, 4.0 * reach) {
             continue;
         }
         let mut uv = nelder_mead(&|uv| h(uv).abs(), a.project(ma.vertices()[i], None), 1e-3);
         a.normalise(&mut uv);
         if h(uv).abs() <= tol {
-            // A seed beside a section curve (let through by `Lows`) can lead onto that curve.
-            if near_any(a.eval(uv), curves, dup) {
+            // A seed beside a section curve (let through by `Lows`) can lead onto that curve,
+            // or onto a contact found (a seed that a ridge parts from its nearest one).
+            if near_any(a.eval(uv), curves, dup) || near_any(a.eval(uv), &out, dup) {
                 continue;
             }
             if let Some(c) = contact_curve(a, &gap_at, uv, reach, tol, chord_tol) {
@@ -491,7 +506,7 @@ pub(crate) fn plane_contacts(
         }
         let top = level(a, uv, n);
         let p = a.eval(top);
-        if near_any(p, &out, 4.0 * reach) {
+        if found.claims(p, &out, 4.0 * reach) {
             continue;
         }
         if h(top).abs() <= tol {
@@ -511,42 +526,6 @@ pub(crate) fn plane_contacts(
         }
     }
     out
-}
-
-/// A closed seed polyline about the extremum `top` of `h`: on 16 rays in (u, v), the point where
-/// h changes sign, searched out to 4·r (r: the distance to a known zero) and bisected.
-fn small_loop(a: &Patch, top: DVec2, r: f64, h: &dyn Fn(DVec2) -> f64) -> Option<Polyline3> {
-    let sign = h(top).signum();
-    let mut points = Vec::with_capacity(16);
-    for k in 0..16 {
-        let ang = std::f64::consts::TAU * k as f64 / 16.0;
-        let dir = DVec2::new(ang.cos(), ang.sin());
-        let step = 0.25 * r;
-        let mut lo = 0.0;
-        let hi = (1..=16).map(|j| j as f64 * step).find(|&t| {
-            let inside = h(top + dir * t).signum() == sign;
-            if inside {
-                lo = t;
-            }
-            !inside
-        })?;
-        let (mut lo, mut hi) = (lo, hi);
-        for _ in 0..60 {
-            let m = 0.5 * (lo + hi);
-            if h(top + dir * m).signum() == sign {
-                lo = m;
-            } else {
-                hi = m;
-            }
-        }
-        let mut uv = top + dir * (0.5 * (lo + hi));
-        a.normalise(&mut uv);
-        points.push(a.eval(uv));
-    }
-    Some(Polyline3 {
-        points,
-        closed: true,
-    })
 }
 
 /// Newton on `S_u·n = S_v·n = 0` from the minimiser's `uv`: the minimum of `|n·S|` is flat,
