@@ -310,19 +310,13 @@ fn at_the_users_chordtol(cases: &[((f64, f64), Vec<f64>)]) {
 /// The sheets' open defects at the user's CHORDTOL: roots, and the CHORDTOLs at which all or
 /// some of the three runs fail (see
 /// [`crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
-const OPEN: [((f64, f64), &[f64]); 8] = [
+const OPEN: [((f64, f64), &[f64]); 5] = [
     ((0.5, 0.5), &[0.05, 0.03, 0.02]),
     ((0.2, 0.2), &[0.003, 0.002]),
-    ((0.01, 0.5), &COARSE),
-    ((0.5, 0.01), &COARSE),
-    ((0.03, 0.3), &[0.03, 0.02, 0.015]),
     ((-0.1, 0.3), &[0.05]),
     ((0.0, 0.3), &[0.05]),
     ((0.3, 0.0), &[0.05]),
 ];
-
-/// The CHORDTOLs from 0.05 to 0.005 of [`CHORDTOLS`].
-const COARSE: [f64; 9] = [0.05, 0.03, 0.02, 0.015, 0.012, 0.01, 0.008, 0.007, 0.005];
 
 /// Each sheet with roots `roots` at every CHORDTOL but those of its open defects.
 fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
@@ -351,6 +345,15 @@ fn crossings_beside_contacts_at_the_users_chordtol() {
     ]));
 }
 
+/// The crossing runs closer to the contact than the contact module's nearness
+/// (`contact::beside`: 2·CHORDTOL + 4·√(GEOMTOL·size), 0.0203 at CHORDTOL 0.01) towards x = 0
+/// (0.01..0.5, 0.5..0.01) or everywhere (0.03..0.3 at CHORDTOL 0.03 to 0.015). On `63b7123`
+/// its march from where the meshes see it stopped at that nearness (x ≈ 0.08 for 0.01..0.5 at
+/// CHORDTOL 0.01, the default) and it was joined from there to the contact's end (0, 0, 0): its
+/// piece from x = 0 was lost (length 4.0317 for √16.2401 = 4.0299). Failed then at CHORDTOL
+/// 0.05 to 0.005 for 0.01..0.5 and 0.5..0.01, and at 0.03 to 0.015 for 0.03..0.3 (then in
+/// `OPEN`). The march now goes on beside a contact where the gap changes sign across its node on
+/// the true surfaces (`alongside::changes_sign`), which the contact's double zero does not.
 #[test]
 fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
     at_the_users_chordtol(&but_open(&[
@@ -367,14 +370,8 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 }
 
 /// Open defects at the user's CHORDTOL (the runs listed in [`OPEN`]; each sheet passes at the
-/// other CHORDTOLs):
-/// - d = 0.01..0.5, 0.5..0.01 at CHORDTOL 0.05 to 0.005, d = 0.03..0.3 at 0.03 to 0.015: the
-///   crossing, marched from where the meshes see it, stops where it comes within the contact
-///   module's nearness (`contact::beside`: 2·CHORDTOL + 4·√(GEOMTOL·size)) of the contact, at
-///   x ≈ 0.08 for 0.01..0.5 at CHORDTOL 0.01, and is joined from there to the contact's end
-///   (0, 0, 0): its piece from x = 0 to there is lost. That nearness scales with CHORDTOL (a
-///   traced contact's chords lie up to CHORDTOL off it), so at a coarse CHORDTOL two curves
-///   closer than 2·CHORDTOL are taken for one.
+/// other CHORDTOLs; the crossings beside part of a contact, 0.01..0.5, 0.5..0.01 and 0.03..0.3,
+/// are fixed: see [`crossings_beside_part_of_a_contact_at_the_users_chordtol`]):
 /// - d = 0.5 at CHORDTOL 0.05, 0.03, 0.02, and the edge cases 0..0.3, 0.3..0 at 0.05: the
 ///   section loses the contact (the crossing alone comes back).
 /// - d = 0.2 at CHORDTOL 0.003 and 0.002, all three runs: the contact is lost.

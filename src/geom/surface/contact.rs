@@ -392,8 +392,12 @@ impl Crossings<'_> {
         let (_, tol, chord_tol) = self.tols;
         let first = pieces.len() - new.len();
         for (i, (_, cut)) in (first..pieces.len()).zip(new) {
-            let stop = |p: DVec3| {
+            // Beside a contact the search can fall on its double zero; a node there is kept
+            // only where the gap changes sign across it (on the true surfaces, so a crossing
+            // closer to a contact than `near`, which scales with CHORDTOL, is still followed).
+            let stop = |uv: DVec2, t: DVec2, p: DVec3| {
                 near_any(p, self.contacts, self.near)
+                    && !alongside::changes_sign(self.a, self.gap, uv, t, self.near, tol)
                     || (0..pieces.len())
                         .any(|j| j != i && near_any(p, std::slice::from_ref(&pieces[j]), self.near))
             };

@@ -406,14 +406,15 @@ const FINE: f64 = 1e-11;
 /// where the step reaches one, so the crossing ends exactly on it). A node where `stop` holds
 /// (beside a contact, whose double zero the search can fall on) or that is not ahead is refused
 /// and the step halved, so the walk ends within a hundredth of the tolerance of an edge or of
-/// where the crossing runs into the contact.
+/// where the crossing runs into the contact. `stop` is given the node's parameters, the march's
+/// direction there (in parameters) and its point.
 pub(super) fn march(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     (uv, dir): (DVec2, DVec2),
     len: f64,
     tol: f64,
-    stop: &dyn Fn(DVec3) -> bool,
+    stop: &dyn Fn(DVec2, DVec2, DVec3) -> bool,
 ) -> Vec<(DVec2, DVec3)> {
     let (mut uv, mut t) = (uv, dir.normalize_or_zero());
     let mut nodes = Vec::new();
@@ -452,7 +453,7 @@ pub(super) fn march(
         let found = root_along(a, gap, ahead, across, tol).map(|c| (c, gap(c).point));
         let good = found.filter(|(c, p)| {
             let moved = delta(a, uv, *c);
-            moved.dot(t) > 0.0 && moved.length() <= 2.0 * step && !stop(*p)
+            moved.dot(t) > 0.0 && moved.length() <= 2.0 * step && !stop(*c, t, *p)
         });
         match good {
             Some((c, p)) => {
@@ -484,7 +485,7 @@ pub(crate) fn extend_crossing(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     (piece, cut): (&Polyline3, [bool; 2]),
-    stop: &dyn Fn(DVec3) -> bool,
+    stop: &dyn Fn(DVec2, DVec2, DVec3) -> bool,
     len: f64,
     (tol, chord_tol): (f64, f64),
 ) -> Polyline3 {
@@ -528,4 +529,66 @@ fn unfold_end(points: &mut Vec<DVec3>) {
     if let Some(k) = fold {
         points.truncate(k);
     }
+}
+
+/// Whether the gap changes sign across `uv` (a point of a crossing marched along `t`, in
+/// parameters): a simple root, a crossing's, where a contact's double zero keeps its sign on
+/// both sides. The two samples, at equal distances either way across `t`, go out from a few
+/// tolerances in space, doubling, until both are beyond `tol` (up to `reach`): the sign is told
+/// there and nowhere nearer. A contact point is told so while the samples stay short of the
+/// nearest crossing (its gap, κ·s², is beyond `tol` at √(tol/κ), κ about that crossing's
+/// distance d, so for d above about ∛tol); a crossing point whatever lies beyond on either side
+/// but another crossing (passing the contact's double zero keeps the sign). From a point on a
+/// bounded edge of `a` the samples go along the edge. Where one would lie off a bounded edge of
+/// `a` or past the edge of the surface the gap is measured to (where the distance exceeds the
+/// signed gap: the march runs to that edge, at any angle), the pair is taken as far back along
+/// `t` as it reaches across, where the crossing runs the same way; where that fails too, false.
+pub(super) fn changes_sign(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    uv: DVec2,
+    t: DVec2,
+    reach: f64,
+    tol: f64,
+) -> bool {
+    let mut w = t.perp();
+    for k in 0..2 {
+        if !a.periodic()[k] && (uv[k] <= EDGE_ROUNDOFF || uv[k] >= 1.0 - EDGE_ROUNDOFF) {
+            w[k] = 0.0;
+        }
+    }
+    let (Some(w), Some(t)) = (w.try_normalize(), t.try_normalize()) else {
+        return false;
+    };
+    let (Some(across), Some(along)) = (speed_along(a, uv, w), speed_along(a, uv, t)) else {
+        return false;
+    };
+    let inside = |q: DVec2| (0..2).all(|k| a.periodic()[k] || (0.0..=1.0).contains(&q[k]));
+    let at = |q: DVec2| {
+        if !inside(q) {
+            return None;
+        }
+        let g = gap(q);
+        (g.signed.is_finite() && g.dist - g.signed.abs() <= tol).then_some(g.signed)
+    };
+    let pair = |s: f64, back: f64| {
+        let o = uv - t * (back * s / along);
+        Some((at(o - w * (s / across))?, at(o + w * (s / across))?))
+    };
+    let mut s = 4.0 * tol;
+    let mut back = 0.0;
+    while s <= reach {
+        let found = pair(s, back).or_else(|| {
+            back = 1.0;
+            pair(s, back)
+        });
+        let Some((lo, hi)) = found else {
+            return false;
+        };
+        if lo.abs() > tol && hi.abs() > tol {
+            return lo.signum() != hi.signum();
+        }
+        s *= 2.0;
+    }
+    false
 }

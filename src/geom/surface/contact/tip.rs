@@ -122,7 +122,7 @@ fn around(
     let (chord, away) = (p.distance(q), next - q);
     // A node past Q (beyond the plane across the curve there) is refused near it, so the march
     // ends on that plane, at Q; and one too far from the chord anywhere.
-    let stop = |x: DVec3| {
+    let stop = |_: DVec2, _: DVec2, x: DVec3| {
         ((x - q).dot(away) > 0.0 && x.distance(q) <= 0.5 * chord) || x.distance(p) > REACH * chord
     };
     // Along the crossing's tangent at P, not the way the curve came in: a seed curve that ran
