@@ -13,7 +13,7 @@ use std::f64::consts::{FRAC_PI_3, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{assert_chords_on, at_chordtols, cylinders, summary, Ask, CHORDTOLS, R};
+use surface_support::{assert_chords_on, cylinders, failures, summary, Ask, CHORDTOLS, R};
 
 /// The square region of half-size `h` about `c` spanned by the unit vectors `e1`, `e2`.
 fn region(c: DVec3, e1: DVec3, e2: DVec3, h: f64) -> Surface {
@@ -136,15 +136,16 @@ fn an_isolated_contact_through_the_mesh_path_stays_a_point() {
 /// Where [`two_dips`]' second arcs come lowest (the first at x = 0).
 const X2: f64 = 4.0;
 
-/// Two arcs of radius R, ±60° about their lowest points (0, 0) and (X2, 0), which touch the
-/// line y = 0 there, joined by a ridge along y = R/2 = 1 between x = R·sin 60° and
-/// X2 − R·sin 60°: the profile at z.
-fn two_dips(z: f64) -> Arc<Curve> {
+/// Two arcs of radius R, ±60° about their lowest points (0, `low`) and (X2, 0), joined by a
+/// ridge along y = R/2 = 1 between x = R·sin 60° and X2 − R·sin 60° (`low` above it): the
+/// profile at z. The second arcs touch the line y = 0; the first touch it too (`low` = 0), or
+/// cross it (`low` < 0) at x = ±√(−2·R·low − low²).
+fn two_dips(low: f64, z: f64) -> Arc<Curve> {
     let (m, d) = (60usize, FRAC_PI_3 / 60.0);
-    let at = |xc: f64, f: f64| DVec3::new(xc + R * f.sin(), R - R * f.cos(), z);
-    let arc = |xc: f64| (0..=2 * m).map(move |k| at(xc, (k as f64 - m as f64) * d));
-    let mut pts: Vec<DVec3> = arc(0.0).collect();
-    pts.extend(arc(X2));
+    let at = |(xc, yc): (f64, f64), f: f64| DVec3::new(xc + R * f.sin(), yc + R - R * f.cos(), z);
+    let arc = |c: (f64, f64)| (0..=2 * m).map(move |k| at(c, (k as f64 - m as f64) * d));
+    let mut pts: Vec<DVec3> = arc((0.0, low)).collect();
+    pts.extend(arc((X2, 0.0)));
     // The bulge of each arc segment, none on the ridge between the arcs (nor after the last
     // point).
     let mut bulges = vec![(d / 4.0).tan(); 2 * m];
@@ -154,47 +155,48 @@ fn two_dips(z: f64) -> Arc<Curve> {
     Arc::new(Curve::pline(pts, false, Some(bulges)).unwrap())
 }
 
-/// The distance from `p` to the strip ruled between [`two_dips`] at z = 0 and z = 3, in closed
-/// form near its arcs (where the contacts lie), within its z range.
-fn off_dips(p: DVec3) -> f64 {
-    let arc = |xc: f64| ((p.x - xc).hypot(p.y - R) - R).abs();
+/// The distance from `p` to the strip ruled between [`two_dips`]`(low)` at z = 0 and z = 3, in
+/// closed form near its arcs (where the curves lie), within its z range.
+fn off_dips(p: DVec3, low: f64) -> f64 {
+    let arc = |xc: f64, yc: f64| ((p.x - xc).hypot(p.y - yc - R) - R).abs();
     if (-1e-9..=3.0 + 1e-9).contains(&p.z) {
-        arc(0.0).min(arc(X2))
+        arc(0.0, low).min(arc(X2, 0.0))
     } else {
         f64::INFINITY
     }
 }
 
-#[test]
-fn two_contact_lines_a_ridge_apart_both_come_back_at_the_users_chordtol() {
-    // The strip's rulings (3 long) make the mesh's cells long across the contacts: a contact
-    // search that took "within four cells of a contact found" for "the same contact" lost the
-    // second line, behind the ridge 4 away, at 9 of the 16 CHORDTOLs in all three asks.
-    let s = Surface::ruled(two_dips(0.0), two_dips(3.0));
+/// The strip ruled between [`two_dips`]`(low)` against the plane y = 0 (section and both
+/// orders of intersect) at every user CHORDTOL: one line along z from 0 to 3 at each of `xs`
+/// (the contact at x = X2 and, where the first arcs cross the plane, the two crossings), each
+/// 3 long to 1e-6, every point on the plane and the strip to GEOMTOL; the failures listed.
+fn lines_of_two_dips(low: f64, xs: &[f64]) -> Vec<String> {
+    let s = Surface::ruled(two_dips(low, 0.0), two_dips(low, 3.0));
     let wall = region(DVec3::new(2.0, 0.0, 1.5), DVec3::X, DVec3::Z, 6.0);
     let asks = vec![
-        ("dips, wall".to_string(), Ask::Meet(&s, &wall)),
-        ("wall, dips".to_string(), Ask::Meet(&wall, &s)),
+        (format!("dips {low}, wall"), Ask::Meet(&s, &wall)),
+        (format!("wall, dips {low}"), Ask::Meet(&wall, &s)),
         (
-            "section".to_string(),
+            format!("section of dips {low}"),
             Ask::Section(&s, DVec3::ZERO, DVec3::Y),
         ),
     ];
-    // Within GEOMTOL of the plane y = 0 the arcs lie within √(2·R·GEOMTOL) of their lowest line.
+    // Within GEOMTOL of the plane y = 0 the touching arcs lie within √(2·R·GEOMTOL) of their
+    // lowest line (the crossings, at slopes of 0.01 and more, within 1e-7 of theirs).
     let band = (2.0 * R * 1e-9).sqrt();
-    at_chordtols(&asks, &CHORDTOLS, |name, _, r| {
-        assert_eq!(r.len(), 2, "{name}: {}", summary(r));
-        for x0 in [0.0, X2] {
+    failures(&asks, &CHORDTOLS, |name, _, r| {
+        assert_eq!(r.len(), xs.len(), "{name}: {}", summary(r));
+        for &x0 in xs {
             let at: Vec<&Polyline3> = r
                 .iter()
                 .filter(|c| (c.points[0].x - x0).abs() <= band)
                 .collect();
-            assert_eq!(at.len(), 1, "{name}: contact at x = {x0}: {}", summary(r));
+            assert_eq!(at.len(), 1, "{name}: line at x = {x0}: {}", summary(r));
             let c = at[0];
             assert!(!c.closed && c.points.len() >= 2, "{name}: {}", summary(r));
             let z = [c.points[0].z, c.points[c.points.len() - 1].z];
             let ends = z[0].min(z[1]).abs() <= 1e-9 && (z[0].max(z[1]) - 3.0).abs() <= 1e-9;
-            assert!(ends, "{name}: contact at x = {x0} ends at z {z:?}");
+            assert!(ends, "{name}: line at x = {x0} ends at z {z:?}");
             assert!(
                 (c.length() - 3.0).abs() <= 1e-6,
                 "{name}: length {}",
@@ -203,11 +205,55 @@ fn two_contact_lines_a_ridge_apart_both_come_back_at_the_users_chordtol() {
             for p in &c.points {
                 assert!(
                     (p.x - x0).abs() <= band,
-                    "{name}: {p} off the contact at x = {x0}"
+                    "{name}: {p} off the line at x = {x0}"
                 );
                 assert!(p.y.abs() <= 1e-9, "{name}: {p} off the plane");
-                assert!(off_dips(*p) <= 1e-9, "{name}: {p} off the strip");
+                assert!(off_dips(*p, low) <= 1e-9, "{name}: {p} off the strip");
             }
         }
-    });
+    })
+}
+
+#[test]
+fn two_contact_lines_a_ridge_apart_both_come_back_at_the_users_chordtol() {
+    // The strip's rulings (3 long) make the mesh's cells long across the contacts: a contact
+    // search that took "within four cells of a contact found" for "the same contact" lost the
+    // second line, behind the ridge 4 away, at 9 of the 16 CHORDTOLs in all three asks.
+    let failed = lines_of_two_dips(0.0, &[0.0, X2]);
+    assert!(
+        failed.is_empty(),
+        "{} failed:\n{}",
+        failed.len(),
+        failed.join("\n")
+    );
+}
+
+/// A lens of crossings narrower than the seeding mesh's cells beside a contact a ridge away.
+/// Open defects, both on `main` (63b7123) as well:
+/// - 1e-4 deep (crossings at ±0.0199997), in all 48 runs: the mesh's lens is narrower and off
+///   the true lens's middle (at CHORDTOL 0.01 the mesh section's two seed lines lie at
+///   x ≈ 0.0074 and 0.0099, both on the +x side), and Newton takes each seed to the nearer
+///   root: the crossing at +0.02 comes back twice, the one at −0.02 not at all. A refinement
+///   that kept each seed point between the two vertices of the mesh edge it came from (they
+///   bracket a sign change of the gap on the true surface) would find −0.02.
+/// - 1e-3 deep (±0.0632377), the same at CHORDTOL 0.05, 0.03 and 0.02.
+/// - 1e-4 deep, at CHORDTOL 0.03, 0.02, 0.015 and 0.012 the contact at x = 4 is lost as well:
+///   `Lows::claimed` takes its seed for the crossing's, which passes within four of the seed's
+///   (ruling-long) cells and, at its slope of 0.01, "accounts for" the seed's height. The
+///   ridge between them (see `contact/ridge.rs`) would tell them apart.
+#[test]
+#[ignore = "open defect: a lens narrower than the mesh's cells comes back as one crossing \
+            twice, and the contact beside it is lost at some CHORDTOLs (see the doc comment)"]
+fn a_narrow_lens_of_crossings_beside_a_contact_comes_back_whole_at_the_users_chordtol() {
+    let mut failed = Vec::new();
+    for low in [-1e-4f64, -1e-3] {
+        let x1 = (-2.0 * R * low - low * low).sqrt();
+        failed.extend(lines_of_two_dips(low, &[-x1, x1, X2]));
+    }
+    assert!(
+        failed.is_empty(),
+        "{} failed:\n{}",
+        failed.len(),
+        failed.join("\n")
+    );
 }
