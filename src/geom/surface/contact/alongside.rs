@@ -520,6 +520,56 @@ pub(crate) fn extend_crossing(
     }
 }
 
+/// `piece` (a crossing's stretch of a refined seed curve) with each point that overshot the next
+/// put back after it: where the crossing meets the other surface at a small angle, a seed point
+/// refined onto it can slide along it past the next one, and the curve folds back on itself
+/// (x = 1.989, 2.645, 2.462, 2.890 on a sheet at 0.06 rad). Only where the next point lies on
+/// the chord to the overshooting one (within `chord_tol` of it, strictly between its ends), as
+/// it does on the same stretch of curve (a tongue's tip, where the curve turns back, leaves the
+/// point across the tongue); the three chords changed are densified again on the true surfaces.
+pub(crate) fn unfold_overshoots(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    piece: Polyline3,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
+    let mut p = piece.points;
+    let mut k = 1;
+    while k + 1 < p.len() {
+        let (before, at, next) = (p[k - 1], p[k], p[k + 1]);
+        let chord = at - before;
+        let along = (next - before).dot(chord) / chord.length_squared().max(f64::MIN_POSITIVE);
+        let off = (next - before).cross(chord).length() / chord.length().max(f64::MIN_POSITIVE);
+        let folds = (next - at).dot(chord) < 0.0;
+        if !(folds && along > 0.0 && along < 1.0 && off <= chord_tol) {
+            k += 1;
+            continue;
+        }
+        p.swap(k, k + 1);
+        let hi = (k + 2).min(p.len() - 1);
+        let mut prev = None;
+        let nodes: Vec<(DVec2, DVec3)> = p[k - 1..=hi]
+            .iter()
+            .map(|&q| {
+                let uv = a.project(q, prev);
+                prev = Some(uv);
+                (uv, q)
+            })
+            .collect();
+        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+        let dense = assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol).points;
+        let added = dense.len() - nodes.len();
+        p.splice(k - 1..=hi, dense);
+        // On past the point put back, which may itself have overshot the one after.
+        k += 1 + added;
+    }
+    Polyline3 {
+        points: p,
+        closed: piece.closed,
+    }
+}
+
 /// Drops the points of the last half of `points` from its first fold (a point where the polyline
 /// turns back on itself), leaving the end running on from the rest.
 fn unfold_end(points: &mut Vec<DVec3>) {
