@@ -642,3 +642,63 @@ pub(super) fn changes_sign(
     }
     false
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{changes_sign, unfold_overshoots};
+    use crate::geom::mesh::Polyline3;
+    use crate::geom::surface::refine::Patch;
+    use crate::geom::surface::Surface;
+    use glam::{DVec2, DVec3};
+
+    const TOL: f64 = 1e-9;
+
+    /// The cylinder x² + y² = 1 from z = 0 to 4, and the unit parameter direction along its axis.
+    fn cylinder() -> (Surface, DVec2) {
+        let s = Surface::cylinder(DVec3::ZERO, DVec3::Z, 1.0, 4.0).unwrap();
+        let p = Patch::new(&s);
+        let o = p.eval(DVec2::splat(0.5));
+        let along_v = (p.eval(DVec2::new(0.5, 0.6)) - o).truncate().length() < 1e-12;
+        (s, if along_v { DVec2::Y } else { DVec2::X })
+    }
+
+    #[test]
+    fn the_gap_changes_sign_across_a_crossing_not_across_a_contact() {
+        // The plane x = c cuts the cylinder along the lines cos θ = c (the gap cos θ − c, a
+        // simple root) and touches it along θ = 0 for c = 1 (1 − cos θ ≥ 0: a double zero).
+        let (s, t) = cylinder();
+        let a = Patch::new(&s);
+        for (c, crosses) in [(0.6, true), (1.0, false)] {
+            let gap = |uv: DVec2| super::super::plane_gap(&a, (DVec3::X * c, DVec3::X), uv);
+            let p = DVec3::new(c, (1.0 - c * c).sqrt(), 2.0);
+            let uv = a.project(p, None);
+            assert_eq!(changes_sign(&a, &gap, uv, t, 0.1, TOL), crosses, "x = {c}");
+        }
+    }
+
+    #[test]
+    fn a_point_refined_past_the_next_is_put_back_after_it() {
+        let (s, _) = cylinder();
+        let a = Patch::new(&s);
+        let gap = |uv: DVec2| super::super::plane_gap(&a, (DVec3::X * 0.6, DVec3::X), uv);
+        let on = |y: f64, z: f64| DVec3::new(0.6, y, z);
+        let piece = |zs: &[(f64, f64)]| Polyline3 {
+            points: zs.iter().map(|&(y, z)| on(y, z)).collect(),
+            closed: false,
+        };
+        // Along the line (0.6, 0.8, z): the point at 1.2 overshot the one at 1.0.
+        let out = unfold_overshoots(
+            &a,
+            &gap,
+            piece(&[(0.8, 0.0), (0.8, 0.5), (0.8, 1.2), (0.8, 1.0), (0.8, 1.5)]),
+            TOL,
+            1e-3,
+        );
+        let zs: Vec<f64> = out.points.iter().map(|p| p.z).collect();
+        assert_eq!(zs, [0.0, 0.5, 1.0, 1.2, 1.5]);
+        // Turning back onto the other line (0.6, −0.8, z), 1.6 across: a tongue's tip, kept.
+        let hairpin = piece(&[(0.8, 0.0), (0.8, 0.5), (0.8, 1.0), (-0.8, 0.7), (-0.8, 0.2)]);
+        let out = unfold_overshoots(&a, &gap, hairpin.clone(), TOL, 1e-3);
+        assert_eq!(out.points, hairpin.points);
+    }
+}
