@@ -318,9 +318,25 @@ const OPEN: [((f64, f64), &[f64]); 5] = [
     ((0.3, 0.0), &[0.05]),
 ];
 
+/// More sheets' open defects, found by sweeping further roots (see
+/// [`more_crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
+const OPEN_MORE: [((f64, f64), &[f64]); 2] = [
+    (
+        (-0.05, 0.2),
+        &[0.05, 0.03, 0.015, 0.012, 0.01, 0.008, 0.007],
+    ),
+    (
+        (0.2, -0.05),
+        &[0.05, 0.03, 0.015, 0.012, 0.01, 0.008, 0.007, 0.005, 5e-4],
+    ),
+];
+
 /// Each sheet with roots `roots` at every CHORDTOL but those of its open defects.
 fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
-    let open = |d: (f64, f64)| OPEN.iter().find(|o| o.0 == d).map_or(&[][..], |o| o.1);
+    let open = |d: (f64, f64)| {
+        let mut all = OPEN.iter().chain(&OPEN_MORE);
+        all.find(|o| o.0 == d).map_or(&[][..], |o| o.1)
+    };
     roots
         .iter()
         .map(|&d| {
@@ -353,7 +369,15 @@ fn crossings_beside_contacts_at_the_users_chordtol() {
 /// piece from x = 0 was lost (length 4.0317 for √16.2401 = 4.0299). Failed then at CHORDTOL
 /// 0.05 to 0.005 for 0.01..0.5 and 0.5..0.01, and at 0.03 to 0.015 for 0.03..0.3 (then in
 /// `OPEN`). The march now goes on beside a contact where the gap changes sign across its node on
-/// the true surfaces (`alongside::changes_sign`), which the contact's double zero does not.
+/// the true surfaces (`alongside::changes_sign`), which the contact's double zero does not. The
+/// sheets from 0.05..0.5 on were added with that fix: on `63b7123` 0.05..0.5 failed at CHORDTOL
+/// 0.05 and 0.03, 0.02..0.4 and 0.4..0.02 at 0.03 to 0.01, 0.005..0.2 at 0.005 to 0.003, all
+/// three runs. With the march's fix alone, 0.02..0.4 and 0.4..0.02 at CHORDTOL 0.005 and
+/// 0.005..0.2 at 7e-4 still failed (as on `63b7123`): the crossing folded back on itself
+/// (length 4.198, 4.372 for 4.018, 4.005), a seed point refined onto it (the surfaces at about
+/// 0.06 rad) having landed beyond the next one, e.g. x = 1.989, 2.645, 2.462, 2.890; such a
+/// point is now put back after the next (`alongside::unfold_overshoots`). The runs still
+/// failing are in [`OPEN_MORE`].
 #[test]
 fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
     at_the_users_chordtol(&but_open(&[
@@ -361,12 +385,24 @@ fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
         (0.5, 0.01),
         (0.003, 0.1),
         (0.03, 0.3),
+        (0.05, 0.5),
+        (0.02, 0.4),
+        (0.4, 0.02),
+        (0.005, 0.2),
+        (0.015, 0.15),
+        (0.01, 0.1),
     ]));
 }
 
 #[test]
 fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
-    at_the_users_chordtol(&but_open(&[(-0.1, 0.3), (0.0, 0.3), (0.3, 0.0)]));
+    at_the_users_chordtol(&but_open(&[
+        (-0.1, 0.3),
+        (0.0, 0.3),
+        (0.3, 0.0),
+        (-0.05, 0.2),
+        (0.2, -0.05),
+    ]));
 }
 
 /// Open defects at the user's CHORDTOL (the runs listed in [`OPEN`]; each sheet passes at the
@@ -381,5 +417,24 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 #[ignore = "open defects at coarse CHORDTOLs (see the doc comment)"]
 fn crossings_beside_contacts_at_the_users_chordtol_open_defects() {
     let open: Vec<_> = OPEN.iter().map(|(d, t)| (*d, t.to_vec())).collect();
+    at_the_users_chordtol(&open);
+}
+
+/// Open defects of more sheets at the user's CHORDTOL (the runs listed in [`OPEN_MORE`]; each
+/// sheet passes at the other CHORDTOLs):
+/// - d = −0.05..0.2 and 0.2..−0.05 (a branch point inside, at x = 0.8 or 3.2) at CHORDTOL 0.05,
+///   0.03 and 0.015 to 0.007, the section only: it loses the contact (the crossing alone comes
+///   back).
+/// - 0.2..−0.05 at 0.005 and 5e-4, sheet ∩ plate and plate ∩ sheet: three curves at 0.005; at
+///   5e-4 the crossing runs onto the contact at x ≈ 2.82, 0.024 from it, and on along it.
+///
+/// Fixed: at CHORDTOL 0.05 to 0.007 sheet ∩ plate had no point at the branch point on either
+/// curve: the crossing's chord passed it far from its ends (x = 0.0039 to 2 for the branch point
+/// at 0.8), and the branch point was solved only from the chord's ends. It is now also solved
+/// from the chord's point nearest the contact (`branch::branch_near`).
+#[test]
+#[ignore = "open defects of more sheets (see the doc comment)"]
+fn more_crossings_beside_contacts_at_the_users_chordtol_open_defects() {
+    let open: Vec<_> = OPEN_MORE.iter().map(|(d, t)| (*d, t.to_vec())).collect();
     at_the_users_chordtol(&open);
 }

@@ -355,7 +355,10 @@ impl Crossings<'_> {
         known: &[Polyline3],
     ) -> Vec<Polyline3> {
         let (seed_tol, tol, chord_tol) = self.tols;
-        let mut pieces: Vec<Polyline3> = cut.iter().map(|x| x.0.clone()).collect();
+        let unfold = |c: &Polyline3| {
+            alongside::unfold_overshoots(self.a, self.gap, c.clone(), tol, chord_tol)
+        };
+        let mut pieces: Vec<Polyline3> = cut.iter().map(|x| unfold(&x.0)).collect();
         self.extend(&mut pieces, &cut);
         // The scan looks across only every step along a contact: what it finds is carried on
         // likewise.

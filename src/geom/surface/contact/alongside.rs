@@ -520,6 +520,56 @@ pub(crate) fn extend_crossing(
     }
 }
 
+/// `piece` (a crossing's stretch of a refined seed curve) with each point that overshot the next
+/// put back after it: where the crossing meets the other surface at a small angle, a seed point
+/// refined onto it can slide along it past the next one, and the curve folds back on itself
+/// (x = 1.989, 2.645, 2.462, 2.890 on a sheet at 0.06 rad). Only where the next point lies on
+/// the chord to the overshooting one (within `chord_tol` of it, strictly between its ends), as
+/// it does on the same stretch of curve (a tongue's tip, where the curve turns back, leaves the
+/// point across the tongue); the three chords changed are densified again on the true surfaces.
+pub(crate) fn unfold_overshoots(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    piece: Polyline3,
+    tol: f64,
+    chord_tol: f64,
+) -> Polyline3 {
+    let mut p = piece.points;
+    let mut k = 1;
+    while k + 1 < p.len() {
+        let (before, at, next) = (p[k - 1], p[k], p[k + 1]);
+        let chord = at - before;
+        let along = (next - before).dot(chord) / chord.length_squared().max(f64::MIN_POSITIVE);
+        let off = (next - before).cross(chord).length() / chord.length().max(f64::MIN_POSITIVE);
+        let folds = (next - at).dot(chord) < 0.0;
+        if !(folds && along > 0.0 && along < 1.0 && off <= chord_tol) {
+            k += 1;
+            continue;
+        }
+        p.swap(k, k + 1);
+        let hi = (k + 2).min(p.len() - 1);
+        let mut prev = None;
+        let nodes: Vec<(DVec2, DVec3)> = p[k - 1..=hi]
+            .iter()
+            .map(|&q| {
+                let uv = a.project(q, prev);
+                prev = Some(uv);
+                (uv, q)
+            })
+            .collect();
+        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+        let dense = assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol).points;
+        let added = dense.len() - nodes.len();
+        p.splice(k - 1..=hi, dense);
+        // On past the point put back, which may itself have overshot the one after.
+        k += 1 + added;
+    }
+    Polyline3 {
+        points: p,
+        closed: piece.closed,
+    }
+}
+
 /// Drops the points of the last half of `points` from its first fold (a point where the polyline
 /// turns back on itself), leaving the end running on from the rest.
 fn unfold_end(points: &mut Vec<DVec3>) {
@@ -591,4 +641,64 @@ pub(super) fn changes_sign(
         s *= 2.0;
     }
     false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{changes_sign, unfold_overshoots};
+    use crate::geom::mesh::Polyline3;
+    use crate::geom::surface::refine::Patch;
+    use crate::geom::surface::Surface;
+    use glam::{DVec2, DVec3};
+
+    const TOL: f64 = 1e-9;
+
+    /// The cylinder x² + y² = 1 from z = 0 to 4, and the unit parameter direction along its axis.
+    fn cylinder() -> (Surface, DVec2) {
+        let s = Surface::cylinder(DVec3::ZERO, DVec3::Z, 1.0, 4.0).unwrap();
+        let p = Patch::new(&s);
+        let o = p.eval(DVec2::splat(0.5));
+        let along_v = (p.eval(DVec2::new(0.5, 0.6)) - o).truncate().length() < 1e-12;
+        (s, if along_v { DVec2::Y } else { DVec2::X })
+    }
+
+    #[test]
+    fn the_gap_changes_sign_across_a_crossing_not_across_a_contact() {
+        // The plane x = c cuts the cylinder along the lines cos θ = c (the gap cos θ − c, a
+        // simple root) and touches it along θ = 0 for c = 1 (1 − cos θ ≥ 0: a double zero).
+        let (s, t) = cylinder();
+        let a = Patch::new(&s);
+        for (c, crosses) in [(0.6, true), (1.0, false)] {
+            let gap = |uv: DVec2| super::super::plane_gap(&a, (DVec3::X * c, DVec3::X), uv);
+            let p = DVec3::new(c, (1.0 - c * c).sqrt(), 2.0);
+            let uv = a.project(p, None);
+            assert_eq!(changes_sign(&a, &gap, uv, t, 0.1, TOL), crosses, "x = {c}");
+        }
+    }
+
+    #[test]
+    fn a_point_refined_past_the_next_is_put_back_after_it() {
+        let (s, _) = cylinder();
+        let a = Patch::new(&s);
+        let gap = |uv: DVec2| super::super::plane_gap(&a, (DVec3::X * 0.6, DVec3::X), uv);
+        let on = |y: f64, z: f64| DVec3::new(0.6, y, z);
+        let piece = |zs: &[(f64, f64)]| Polyline3 {
+            points: zs.iter().map(|&(y, z)| on(y, z)).collect(),
+            closed: false,
+        };
+        // Along the line (0.6, 0.8, z): the point at 1.2 overshot the one at 1.0.
+        let out = unfold_overshoots(
+            &a,
+            &gap,
+            piece(&[(0.8, 0.0), (0.8, 0.5), (0.8, 1.2), (0.8, 1.0), (0.8, 1.5)]),
+            TOL,
+            1e-3,
+        );
+        let zs: Vec<f64> = out.points.iter().map(|p| p.z).collect();
+        assert_eq!(zs, [0.0, 0.5, 1.0, 1.2, 1.5]);
+        // Turning back onto the other line (0.6, −0.8, z), 1.6 across: a tongue's tip, kept.
+        let hairpin = piece(&[(0.8, 0.0), (0.8, 0.5), (0.8, 1.0), (-0.8, 0.7), (-0.8, 0.2)]);
+        let out = unfold_overshoots(&a, &gap, hairpin.clone(), TOL, 1e-3);
+        assert_eq!(out.points, hairpin.points);
+    }
 }

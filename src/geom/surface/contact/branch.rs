@@ -640,8 +640,11 @@ fn beside_contacts(points: &[DVec3], contacts: &[&Polyline3], near: f64) -> Vec<
     out
 }
 
-/// The branch point solved from `points[i]` (beside one of the `contacts`), when it lies on a
-/// contact (within `near`) and beside the points (within `near` of a segment next to i).
+/// The branch point solved from `points[i]` (beside one of the `contacts`), or where none is
+/// found from there, from the point of the segments next to i nearest the contacts (sampled: a
+/// chord of a coarse CHORDTOL can pass the branch point half its length from its ends), when it
+/// lies on a contact (within `near`) and beside the points (within `near` of a segment next to
+/// i).
 fn branch_near(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
@@ -652,8 +655,16 @@ fn branch_near(
     tol: f64,
 ) -> Option<Node> {
     let reach = 16.0 * near + spacing(points, i);
-    let b = branch_point(a, gap, a.project(points[i], None), reach, tol)?;
     let n = points.len();
+    let from = |q: DVec3| branch_point(a, gap, a.project(q, None), reach, tol);
+    let b = from(points[i]).or_else(|| {
+        let segs = i.saturating_sub(1)..(i + 1).min(n - 1);
+        let samples = segs.flat_map(|j| (1..32).map(move |k| (j, f64::from(k) / 32.0)));
+        let at = samples.map(|(j, f)| points[j].lerp(points[j + 1], f));
+        let q =
+            at.min_by(|x, y| to_contacts(*x, contacts).total_cmp(&to_contacts(*y, contacts)))?;
+        (q.distance(points[i]) > near).then(|| from(q)).flatten()
+    })?;
     let beside = (i.saturating_sub(1)..(i + 1).min(n - 1))
         .any(|j| to_segment(b.1, points[j], points[j + 1]) <= near);
     (beside && to_contacts(b.1, contacts) <= near).then_some(b)
