@@ -315,7 +315,6 @@ const OPEN: &[((f64, f64), &[f64])] = &[
     ((0.5, 0.01), &COARSE),
     ((0.03, 0.3), &[0.03, 0.02, 0.015]),
     ((-0.1, 0.3), &[0.05]),
-    ((0.3, 0.0), &[0.05]),
 ];
 
 /// The CHORDTOLs from 0.05 to 0.005 of [`CHORDTOLS`].
@@ -372,10 +371,6 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 ///   (0, 0, 0): its piece from x = 0 to there is lost. That nearness scales with CHORDTOL (a
 ///   traced contact's chords lie up to CHORDTOL off it), so at a coarse CHORDTOL two curves
 ///   closer than 2·CHORDTOL are taken for one.
-/// - d = 0.3..0 at 0.05: the section loses the crossing (the contact alone comes back). The
-///   seed curve is the contact alone, one segment from x = 0 to 4; the scan across the traced
-///   contact (at x = 0, 2, 4) finds the crossing at x = 2 only (the look at x = 0, along the
-///   sheet's edge, finds none: not traced further), and one root makes no piece.
 /// - d = −0.1..0.3 at CHORDTOL 0.05 (sheet ∩ plate and the section): the crossing comes back
 ///   4.0125 long instead of √16.16 (not traced).
 #[test]
