@@ -310,13 +310,7 @@ fn at_the_users_chordtol(cases: &[((f64, f64), Vec<f64>)]) {
 /// The sheets' open defects at the user's CHORDTOL: roots, and the CHORDTOLs at which all or
 /// some of the three runs fail (see
 /// [`crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
-const OPEN: [((f64, f64), &[f64]); 5] = [
-    ((0.5, 0.5), &[0.05, 0.03, 0.02]),
-    ((0.2, 0.2), &[0.003, 0.002]),
-    ((-0.1, 0.3), &[0.05]),
-    ((0.0, 0.3), &[0.05]),
-    ((0.3, 0.0), &[0.05]),
-];
+const OPEN: &[((f64, f64), &[f64])] = &[((-0.1, 0.3), &[0.05])];
 
 /// More sheets' open defects, found by sweeping further roots (see
 /// [`more_crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
@@ -407,12 +401,16 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 
 /// Open defects at the user's CHORDTOL (the runs listed in [`OPEN`]; each sheet passes at the
 /// other CHORDTOLs; the crossings beside part of a contact, 0.01..0.5, 0.5..0.01 and 0.03..0.3,
-/// are fixed: see [`crossings_beside_part_of_a_contact_at_the_users_chordtol`]):
-/// - d = 0.5 at CHORDTOL 0.05, 0.03, 0.02, and the edge cases 0..0.3, 0.3..0 at 0.05: the
-///   section loses the contact (the crossing alone comes back).
-/// - d = 0.2 at CHORDTOL 0.003 and 0.002, all three runs: the contact is lost.
+/// are fixed: see [`crossings_beside_part_of_a_contact_at_the_users_chordtol`]; so are the
+/// lost contacts of 0.5, 0.2 and the edge cases 0..0.3, 0.3..0):
 /// - d = −0.1..0.3 at CHORDTOL 0.05 (sheet ∩ plate and the section): the crossing comes back
-///   4.0125 long instead of √16.16 (not traced).
+///   4.0125 long instead of √16.16. Traced in the section: the meshes see the crossing from
+///   x = 3.5 only; carried on backwards it stops at (2.003, 0.1003), where it comes within
+///   the nearness (0.1008) of the contact (as in the first case); the scan across the contact
+///   (at x = 0, 2, 4) adds nothing (the roots at x = 2 and 4 are the piece's, and one root at
+///   x = 0 alone would make no piece); `branch::run_into` then joins the piece's end straight
+///   to the contact's end (0, 0, 0), a chord 2.005 long off both surfaces. The piece x < 1,
+///   y < 0 and the branch point at x = 1 are lost.
 #[test]
 #[ignore = "open defects at coarse CHORDTOLs (see the doc comment)"]
 fn crossings_beside_contacts_at_the_users_chordtol_open_defects() {

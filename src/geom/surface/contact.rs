@@ -19,6 +19,7 @@ mod alongside;
 mod branch;
 mod line;
 mod ridge;
+mod seeds;
 mod small_loop;
 mod tip;
 
@@ -27,6 +28,7 @@ use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use branch::contact_curve_near;
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
+use seeds::Lows;
 use small_loop::small_loop;
 use std::cell::Cell;
 
@@ -78,9 +80,15 @@ pub(crate) fn tangent_contacts(
     let warm: Cell<Option<DVec2>> = Cell::new(None);
     let signed_gap = |uv: DVec2| pair_gap(a, b, &warm, uv);
     let mut out: Vec<Polyline3> = Vec::new();
-    let sine = |c: DVec3| {
-        let (ua, ub) = (a.project(c, None), b.project(c, None));
-        unit_normal(a, ua).cross(unit_normal(b, ub)).length()
+    let sine = |c: DVec3, start: Option<(DVec2, DVec2)>| {
+        let (ua, ub) = (
+            a.project(c, start.map(|s| s.0)),
+            b.project(c, start.map(|s| s.1)),
+        );
+        (
+            unit_normal(a, ua).cross(unit_normal(b, ub)).length(),
+            (ua, ub),
+        )
     };
     let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
     let mut seeds: Vec<(DVec3, f64)> = lows
@@ -363,6 +371,16 @@ impl Crossings<'_> {
         // The scan looks across only every step along a contact: what it finds is carried on
         // likewise.
         for (c, &step) in self.contacts.iter().zip(steps) {
+            // At least three looks across an open contact (its ends and its middle): a contact
+            // seeded by a single segment (a ruled sheet meshed with one cell along it, at a
+            // coarse CHORDTOL) was looked across at its ends only, where one was a branch point,
+            // and the one root found made no piece of the crossing.
+            let whole = c.length();
+            let step = if whole > 0.0 {
+                step.min(0.5 * whole)
+            } else {
+                step
+            };
             let scan = alongside::Scan {
                 step,
                 apart: seed_gap(seed_tol),
@@ -479,7 +497,10 @@ pub(crate) fn plane_contacts(
 ) -> Vec<Polyline3> {
     let side: Vec<f64> = ma.vertices().iter().map(|v| n.dot(*v - p0)).collect();
     let dist: Vec<f64> = side.iter().map(|h| h.abs()).collect();
-    let sine = |c: DVec3| unit_normal(a, a.project(c, None)).cross(n).length();
+    let sine = |c: DVec3, start: Option<(DVec2, DVec2)>| {
+        let ua = a.project(c, start.map(|s| s.0));
+        (unit_normal(a, ua).cross(n).length(), (ua, DVec2::ZERO))
+    };
     let lows = Lows::new(ma, (&dist, &side), seed_tol, curves, &sine);
     let dup = beside(a, tol, chord_tol);
     let h = |uv: DVec2| {
@@ -574,147 +595,6 @@ fn level(a: &Patch, uv0: DVec2, n: DVec3) -> DVec2 {
         }
     }
     uv0
-}
-
-/// The seeds of the contact search on a mesh: its vertices (and edge midpoints) nearest the
-/// other surface, away from the curves already found.
-struct Lows<'a> {
-    /// Each vertex's distance to the other surface (its mesh, or the plane).
-    dist: &'a [f64],
-    /// The meshes are within this of their surfaces; seeds are within 8 times it.
-    seed_tol: f64,
-    /// The sine of the angle between the surfaces at a point of a curve found (about zero on
-    /// a contact).
-    sine: &'a dyn Fn(DVec3) -> f64,
-    /// Whether the triangles round each vertex meet both sides: the other surface crosses them.
-    crossed: Vec<bool>,
-    /// The points of the curves found, with `sine` there (asked once).
-    found: Vec<(DVec3, Cell<Option<f64>>)>,
-}
-
-impl<'a> Lows<'a> {
-    fn new(
-        m: &Mesh,
-        (dist, side): (&'a [f64], &[f64]),
-        seed_tol: f64,
-        curves: &[Polyline3],
-        sine: &'a dyn Fn(DVec3) -> f64,
-    ) -> Self {
-        let gap = seed_gap(seed_tol);
-        let mut sides = vec![(false, false); m.vertices().len()];
-        for t in m.triangles() {
-            let t = t.map(|i| i as usize);
-            if !t.iter().any(|&i| dist[i] <= gap) {
-                continue;
-            }
-            let s = t.map(|i| side[i]);
-            let met = (s.iter().any(|x| *x > 0.0), s.iter().any(|x| *x < 0.0));
-            for i in t {
-                sides[i] = (sides[i].0 || met.0, sides[i].1 || met.1);
-            }
-        }
-        Lows {
-            dist,
-            seed_tol,
-            sine,
-            crossed: sides.into_iter().map(|(p, n)| p && n).collect(),
-            found: curves
-                .iter()
-                .flat_map(|c| c.points.iter())
-                .map(|p| (*p, Cell::new(None)))
-                .collect(),
-        }
-    }
-
-    /// Whether a seed at `p` (of a mesh cell `reach` across, `dist` from the other surface)
-    /// belongs to a curve found: one lies within four cells, and the other surface crosses the
-    /// seed's cells (`crossed`: the seed is that crossing's), or the nearest curve point is on a
-    /// contact, or the crossing there accounts for `dist` (the surfaces part at its angle). A
-    /// seed nearer the other surface than the crossing beside it accounts for, by more than
-    /// the meshes' error, is left in: a contact running a few cells from a crossing.
-    fn claimed(&self, p: DVec3, reach: f64, dist: f64, crossed: bool) -> bool {
-        let nearest = self
-            .found
-            .iter()
-            .map(|(q, t)| (q.distance(p), q, t))
-            .filter(|x| x.0 <= 4.0 * reach)
-            .min_by(|x, y| x.0.total_cmp(&y.0));
-        nearest.is_some_and(|(r, q, t)| {
-            if crossed {
-                return true;
-            }
-            let sine = t.get().unwrap_or_else(|| {
-                let s = (self.sine)(*q);
-                t.set(Some(s));
-                s
-            });
-            // Half the first-order gap, against curving back towards the other surface; the
-            // seed (a vertex, or the midpoint of an edge) and the other mesh are each within
-            // the seed tolerance of their surfaces.
-            sine.is_nan() || sine <= PARALLEL || dist >= 0.5 * r * sine - 2.0 * self.seed_tol
-        })
-    }
-
-    /// The vertices of `m` whose `dist` is within the gap and lowest among their neighbours
-    /// (ties to the lower index), not claimed by `curves`: with the longest edge at each.
-    fn vertices(&self, m: &Mesh) -> Vec<(usize, f64)> {
-        let (va, ta) = (m.vertices(), m.triangles());
-        let (dist, gap) = (self.dist, seed_gap(self.seed_tol));
-        // One pass over the edges, with no neighbour lists: a vertex stays a candidate while
-        // every neighbour is farther (a section of a large mesh has few vertices within the gap).
-        let mut low: Vec<bool> = dist.iter().map(|d| *d <= gap).collect();
-        let mut has_edge = vec![false; va.len()];
-        let mut reach = vec![0.0f64; va.len()];
-        for t in ta {
-            for k in 0..3 {
-                let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
-                if !(dist[i] <= gap || dist[j] <= gap) {
-                    continue;
-                }
-                let l = va[i].distance(va[j]);
-                for (x, y) in [(i, j), (j, i)] {
-                    has_edge[x] = true;
-                    reach[x] = reach[x].max(l);
-                    if !(dist[x] < dist[y] || (dist[x] == dist[y] && x < y)) {
-                        low[x] = false;
-                    }
-                }
-            }
-        }
-        (0..va.len())
-            .filter(|&i| low[i] && has_edge[i])
-            .filter(|&i| !self.claimed(va[i], reach[i], dist[i], self.crossed[i]))
-            .map(|i| (i, reach[i]))
-            .collect()
-    }
-
-    /// The midpoints of edges of `m` that come nearer the other surface (`to_b`, within the
-    /// gap) than both their ends, not claimed by `curves`, with the edge's length: a long edge
-    /// over a narrow surface (the rulings of a ruled cylinder over a plate narrower than they
-    /// are long) has no vertex near the contact.
-    fn edges(&self, m: &Mesh, to_b: &dyn Fn(DVec3) -> f64) -> Vec<(DVec3, f64)> {
-        let va = m.vertices();
-        let dist = self.dist;
-        let mut out: Vec<(DVec3, f64)> = Vec::new();
-        let mut seen = std::collections::HashSet::new();
-        for t in m.triangles() {
-            for k in 0..3 {
-                let (i, j) = (t[k] as usize, t[(k + 1) % 3] as usize);
-                if !seen.insert((i.min(j), i.max(j))) {
-                    continue;
-                }
-                let l = va[i].distance(va[j]);
-                let q = 0.5 * (va[i] + va[j]);
-                let d = to_b(q);
-                let crossed = self.crossed[i] || self.crossed[j];
-                let near_b = d <= seed_gap(self.seed_tol) && d < dist[i].min(dist[j]);
-                if near_b && !self.claimed(q, l, d, crossed) {
-                    out.push((q, l));
-                }
-            }
-        }
-        out
-    }
 }
 
 /// Minimises the distance from `a(u, v)` to `b` from the point of `a` nearest `p`; the

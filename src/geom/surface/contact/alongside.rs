@@ -218,10 +218,13 @@ fn first_crossing(
     let mut w = uv0;
     a.normalise(&mut w);
     // From a point on a bounded edge (the end of a contact that runs to it), along the edge
-    // rather than out of the domain by the roundoff in `dir`.
+    // rather than out of the domain by the roundoff in `dir`. On it to within the roundoff, too:
+    // the sheet's contact ending at v = 2e-29 was scanned with dir.v = -2e-11, which carried
+    // the scan 1.2e-12 past the edge 0.05 along and stopped it short of the crossing.
     let mut dir = dir;
     for k in 0..2 {
-        let out = (w[k] <= 0.0 && dir[k] < 0.0) || (w[k] >= 1.0 && dir[k] > 0.0);
+        let out = (w[k] <= EDGE_ROUNDOFF && dir[k] < 0.0)
+            || (w[k] >= 1.0 - EDGE_ROUNDOFF && dir[k] > 0.0);
         if !a.periodic()[k] && out {
             dir[k] = 0.0;
         }
