@@ -12,8 +12,10 @@
 use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
 
+mod across;
 mod newton;
 mod patch;
+use newton::newton_pair_mid;
 use newton::{min_norm, newton_pair_held, newton_plane_held};
 pub(crate) use newton::{newton_pair, newton_plane, Node};
 pub(crate) use patch::Patch;
@@ -171,7 +173,11 @@ fn densify<N: Copy>(
     }
 }
 
-/// The midpoint of two intersection nodes, refined onto both patches.
+/// The midpoint of two intersection nodes, refined onto both patches. Where Newton's point may
+/// lie off the curve (see `newton::newton_pair_mid`: towards a branch point the surfaces part
+/// so slowly across the curve that a point within 0.01·`tol` of both lies far off it), it is
+/// taken across the chord onto the simple root of the gap, if there is one (a crossing's); a
+/// contact's even root has none, and its point is kept as Newton left it.
 fn pair_mid<'p>(
     a: &'p Patch<'p>,
     b: &'p Patch<'p>,
@@ -179,8 +185,13 @@ fn pair_mid<'p>(
 ) -> impl Fn(&Node, &Node) -> Option<Node> + 'p {
     move |n0: &Node, n1: &Node| {
         let uv = [mid(a, n0.uv[0], n1.uv[0]), mid(b, n0.uv[1], n1.uv[1])];
-        let m = newton_pair(a, b, uv, tol);
-        (m.residual <= tol).then_some(m)
+        let (m, unsure) = newton_pair_mid(a, b, uv, tol);
+        if m.residual > tol {
+            return None;
+        }
+        let x =
+            unsure.and_then(|d| across::onto_crossing(a, b, &m, ((n0.point, n1.point), d), tol));
+        Some(x.unwrap_or(m))
     }
 }
 

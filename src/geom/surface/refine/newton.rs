@@ -26,11 +26,57 @@ pub(crate) fn newton_pair(a: &Patch, b: &Patch, uv: [DVec2; 2], tol: f64) -> Nod
 pub(super) fn newton_pair_held(
     a: &Patch,
     b: &Patch,
-    mut uv: [DVec2; 2],
+    uv: [DVec2; 2],
     hold: [[bool; 2]; 2],
     tol: f64,
 ) -> Node {
+    newton_pair_run(a, b, uv, hold, tol).0
+}
+
+/// [`newton_pair`] for a midpoint between two points of a curve (`refine::pair_mid`), with the
+/// surfaces' derivatives there where the point is not known to be on the curve: its residual
+/// over the sine of the surfaces' angle (how far off the curve it may be) exceeds `tol`, and
+/// the residual is above the rounding (see `across::rounding`; within it no computation tells
+/// where the curve is, and the point stands). Towards a branch point the surfaces part so
+/// slowly across the curve that a point within 1e-11 of both can lie 1.7e-5 off it:
+/// `min_norm`'s damping caps the steps across to about the residual over √λ (6.7e-7 a step,
+/// the residual falling 4 % a step), and Newton stops crawling. The derivatives are the last
+/// Newton took (free).
+pub(super) fn newton_pair_mid(
+    a: &Patch,
+    b: &Patch,
+    uv: [DVec2; 2],
+    tol: f64,
+) -> (Node, Option<[DVec3; 4]>) {
+    let (node, cols, last) = newton_pair_run(a, b, uv, [[false; 2]; 2], tol);
+    // Falling three- to sixfold a step, Newton was converging onto a tangent contact's double
+    // zero (fourfold): no crossing to find across, and most midpoints on a contact end so.
+    let double = last.is_some_and(|(_, r0)| (3.0..=6.0).contains(&(r0 / node.residual)));
+    if double || node.residual <= super::across::rounding(a, b) || node.residual > tol {
+        return (node, None);
+    }
+    // A start taken with no step (within 0.01·`tol`: mostly a midpoint between two points of a
+    // contact) is left as it was.
+    let Some(cols) = cols else {
+        return (node, None);
+    };
+    let (na, nb) = (cols[0].cross(cols[1]), cols[2].cross(cols[3]));
+    let sine = na.cross(nb).length() / (na.length() * nb.length());
+    let sure = node.residual <= tol * sine;
+    (node, (!sure).then_some(cols))
+}
+
+/// [`newton_pair_held`], the surfaces' derivatives (unheld) at the last point Newton stepped
+/// from, and its last step (length in space, residual before it); None where it took no step.
+fn newton_pair_run(
+    a: &Patch,
+    b: &Patch,
+    mut uv: [DVec2; 2],
+    hold: [[bool; 2]; 2],
+    tol: f64,
+) -> (Node, Option<[DVec3; 4]>, Option<(f64, f64)>) {
     let mut fixed = hold;
+    let mut derivs = None;
     let mut best: Option<Node> = None;
     // The last step's length in space and the residual before it.
     let mut last: Option<(f64, f64)> = None;
@@ -51,6 +97,7 @@ pub(super) fn newton_pair_held(
         }
         let (au, av) = a.derivs(uv[0]);
         let (bu, bv) = b.derivs(uv[1]);
+        derivs = Some([au, av, bu, bv]);
         // Columns of J; a parameter held on a domain edge contributes nothing.
         let mut cols = [au, av, -bu, -bv];
         for (k, c) in cols.iter_mut().enumerate() {
@@ -77,11 +124,12 @@ pub(super) fn newton_pair_held(
         fixed = [or(ea, hold[0]), or(eb, hold[1])];
         last = Some((len, node.residual));
     }
-    best.unwrap_or(Node {
+    let node = best.unwrap_or(Node {
         uv,
         point: a.eval(uv[0]),
         residual: f64::INFINITY,
-    })
+    });
+    (node, derivs, last)
 }
 
 /// Whether Newton, its residual now `r` (within 0.01·`tol`), is to go on: where its `last` step
