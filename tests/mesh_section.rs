@@ -1,7 +1,7 @@
 //! Plane sections of meshes: loops close, no stray pieces through vertices and along edges,
 //! invariance under vertex/triangle permutation.
 
-use lispcad::geom::mesh::{icosphere, section, Mesh, Polyline3};
+use lispcad::geom::mesh::{icosphere, section, section_edges, Mesh, Polyline3};
 use lispcad::geom::surface::{mesh_surface, Surface};
 use lispcad::geom::DVec3;
 use proptest::prelude::*;
@@ -31,6 +31,42 @@ fn sphere_section_is_one_closed_circle() {
         let rad = (p.x * p.x + p.y * p.y).sqrt();
         // Edges of a level-4 icosphere subtend < 0.07 rad: sagitta < 1e-3.
         assert!(rad <= expected + 1e-12 && rad > expected - 2e-3, "{rad}");
+    }
+}
+
+#[test]
+fn each_section_point_comes_with_the_edge_it_lies_on() {
+    // The section is the same as `section`'s, and each point lies on the segment between its
+    // edge's two vertices, which lie on opposite sides of the plane (a vertex on the plane
+    // itself has no edge): what a refinement keeps the true crossing between.
+    let m = icosphere(DVec3::ZERO, 1.0, 3);
+    for (p0, n) in [
+        (DVec3::new(0.0, 0.0, 0.3), DVec3::Z),
+        (DVec3::ZERO, DVec3::X),
+        (DVec3::new(0.1, -0.2, 0.05), DVec3::new(1.0, 2.0, -0.5)),
+    ] {
+        let plain = section(&m, p0, n).unwrap();
+        let edged = section_edges(&m, p0, n).unwrap();
+        assert_eq!(plain.len(), edged.len());
+        let n = n.normalize();
+        for (c, (e, edges)) in plain.iter().zip(&edged) {
+            assert_eq!(c.points, e.points);
+            assert_eq!(c.points.len(), edges.len());
+            for (p, edge) in c.points.iter().zip(edges) {
+                let Some([a, b]) = edge else {
+                    assert!(m.vertices().contains(p), "{p} has no edge but is no vertex");
+                    continue;
+                };
+                let (da, db) = (n.dot(*a - p0), n.dot(*b - p0));
+                assert!(da * db < 0.0, "{p}: {a} and {b} on one side");
+                let t = (*p - *a).dot(*b - *a) / (*b - *a).length_squared();
+                assert!((0.0..=1.0).contains(&t), "{p} beyond its edge");
+                assert!(
+                    (*a + (*b - *a) * t).distance(*p) <= 1e-12,
+                    "{p} off its edge"
+                );
+            }
+        }
     }
 }
 

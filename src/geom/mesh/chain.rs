@@ -49,7 +49,13 @@ pub(crate) fn cmp_point(a: DVec3, b: DVec3) -> Ordering {
 /// the remaining segments form closed loops. Each loop starts at its lexicographically smallest
 /// point and runs toward the smaller of its two neighbours; each open polyline starts at its
 /// smaller end; the list is sorted by first point.
-pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
+pub fn chain_segments(segments: Vec<Segment>) -> Vec<Polyline3> {
+    chain_keyed(segments).into_iter().map(|c| c.0).collect()
+}
+
+/// [`chain_segments`] with each polyline's point keys, in the order of its points: a plane
+/// section's seed point can then be kept between the two vertices of the edge it lies on.
+pub(crate) fn chain_keyed(mut segments: Vec<Segment>) -> Vec<(Polyline3, Vec<u128>)> {
     segments.retain(|s| s.keys[0] != s.keys[1]);
     for s in segments.iter_mut() {
         if s.keys[0] > s.keys[1] {
@@ -69,8 +75,9 @@ pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
     let mut used = vec![false; segments.len()];
     let mut out = Vec::new();
 
-    let walk = |start_seg: usize, start_key: u128, used: &mut Vec<bool>| -> (Vec<DVec3>, u128) {
+    let walk = |start_seg: usize, start_key: u128, used: &mut Vec<bool>| {
         let mut pts = Vec::new();
+        let mut keys = Vec::new();
         let mut seg = start_seg;
         let mut key = start_key;
         loop {
@@ -83,8 +90,10 @@ pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
             };
             if pts.is_empty() {
                 pts.push(s.points[from]);
+                keys.push(key);
             }
             pts.push(pto);
+            keys.push(to);
             key = to;
             let inc = &incident[&key];
             if inc.len() != 2 {
@@ -95,7 +104,7 @@ pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
                 None => break,
             }
         }
-        (pts, key)
+        (pts, keys, key)
     };
 
     // Open chains first, from every key whose degree is not two, in key order for determinism.
@@ -109,47 +118,53 @@ pub fn chain_segments(mut segments: Vec<Segment>) -> Vec<Polyline3> {
         let inc = incident[&k].clone();
         for j in inc {
             if !used[j as usize] {
-                let (pts, _) = walk(j as usize, k, &mut used);
-                out.push(canonical(pts, false));
+                let (pts, keys, _) = walk(j as usize, k, &mut used);
+                out.push(canonical(pts, keys, false));
             }
         }
     }
     for i in 0..segments.len() {
         if !used[i] {
             let k = segments[i].keys[0];
-            let (mut pts, end) = walk(i, k, &mut used);
+            let (mut pts, mut keys, end) = walk(i, k, &mut used);
             let closed = end == k;
             if closed {
                 pts.pop();
+                keys.pop();
             }
-            out.push(canonical(pts, closed));
+            out.push(canonical(pts, keys, closed));
         }
     }
-    out.sort_by(|a, b| {
+    out.sort_by(|(a, _), (b, _)| {
         cmp_point(a.points[0], b.points[0]).then(a.points.len().cmp(&b.points.len()))
     });
     out
 }
 
-fn canonical(mut pts: Vec<DVec3>, closed: bool) -> Polyline3 {
+/// The polyline started and run as [`chain_segments`] says, its keys permuted with its points.
+fn canonical(mut pts: Vec<DVec3>, mut keys: Vec<u128>, closed: bool) -> (Polyline3, Vec<u128>) {
     if closed {
         if pts.len() >= 2 {
             let m = (0..pts.len())
                 .min_by(|&a, &b| cmp_point(pts[a], pts[b]))
                 .unwrap_or(0);
             pts.rotate_left(m);
+            keys.rotate_left(m);
             let n = pts.len();
             if n > 2 && cmp_point(pts[n - 1], pts[1]) == Ordering::Less {
                 pts[1..].reverse();
+                keys[1..].reverse();
             }
         }
     } else if pts.len() >= 2 && cmp_point(pts[pts.len() - 1], pts[0]) == Ordering::Less {
         pts.reverse();
+        keys.reverse();
     }
-    Polyline3 {
+    let c = Polyline3 {
         points: pts,
         closed,
-    }
+    };
+    (c, keys)
 }
 
 /// Chains directed segments that meet end to start into runs of keys, each flagged closed when

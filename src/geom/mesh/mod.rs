@@ -32,7 +32,7 @@ pub use io::{
     write_stl_binary, StlRead,
 };
 pub use primitives::icosphere;
-pub use section::section;
+pub use section::{section, section_edges};
 pub(crate) use trim::closest_on_triangle;
 pub use trim::{trim, Trimmed};
 

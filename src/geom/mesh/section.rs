@@ -10,7 +10,7 @@
 //! vertices in coordinate order, so both triangles of an edge produce the same point bit for bit, and
 //! chaining is by these keys (paper 001 step 5, the line through vertices or along edges).
 
-use super::chain::{chain_segments, cmp_point, Polyline3, Segment};
+use super::chain::{chain_keyed, cmp_point, Polyline3, Segment};
 use super::{Mesh, MeshError};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -22,6 +22,23 @@ fn vertex_key(v: u32) -> u128 {
 
 /// The section of `mesh` by the plane through `point` with normal `normal` (need not be unit).
 pub fn section(mesh: &Mesh, point: DVec3, normal: DVec3) -> Result<Vec<Polyline3>, MeshError> {
+    Ok(section_edges(mesh, point, normal)?
+        .into_iter()
+        .map(|c| c.0)
+        .collect())
+}
+
+/// A section polyline with, for each of its points, the mesh edge it lies on (see
+/// [`section_edges`]).
+pub type EdgedPolyline = (Polyline3, Vec<Option<[DVec3; 2]>>);
+
+/// [`section`] with, for each point of each polyline, the two vertices of the mesh edge it lies
+/// on (None for a vertex on the plane): their sides of the plane bracket the true crossing.
+pub fn section_edges(
+    mesh: &Mesh,
+    point: DVec3,
+    normal: DVec3,
+) -> Result<Vec<EdgedPolyline>, MeshError> {
     let len = normal.length();
     if !(len > 0.0 && len.is_finite()) {
         return Err(MeshError::BadParameter {
@@ -107,5 +124,12 @@ pub fn section(mesh: &Mesh, point: DVec3, normal: DVec3) -> Result<Vec<Polyline3
             })
             .collect()
     };
-    Ok(chain_segments(segments))
+    let edge = |k: u128| {
+        let (a, b) = ((k >> 32) as u32, k as u32);
+        (a != b).then(|| [verts[a as usize], verts[b as usize]])
+    };
+    Ok(chain_keyed(segments)
+        .into_iter()
+        .map(|(c, keys)| (c, keys.into_iter().map(edge).collect()))
+        .collect())
 }

@@ -8,7 +8,7 @@ use super::hits::{
 };
 use super::kinds::Surface;
 use super::tessellate::mesh_surface;
-use crate::geom::mesh::{intersect_meshes, section, Mesh, Polyline3};
+use crate::geom::mesh::{intersect_meshes, section, section_edges, Mesh, Polyline3};
 use crate::geom::ParamCurve;
 use glam::DVec3;
 
@@ -86,7 +86,7 @@ fn section_seeded(
     // The mesh's section seeds the curves, refined on the true surface; the points where the
     // plane touches without crossing (which the section misses) are searched for beside them.
     let refined = |m: Mesh| -> Result<Vec<Polyline3>, SurfaceError> {
-        let seeds = section(&m, plane_point, plane_normal)?;
+        let seeds = section_edges(&m, plane_point, plane_normal)?;
         let n = plane_normal.normalize();
         let patch = super::refine::Patch::new(s);
         let plane = (plane_point, n);
@@ -97,10 +97,10 @@ fn section_seeded(
         let mut tips: Vec<Polyline3> = Vec::new();
         let curves: Vec<Polyline3> = seeds
             .iter()
-            .map(|c| {
+            .map(|(c, edges)| {
                 let (r, loose) = super::refine::refine_section_loose(
                     &patch,
-                    c,
+                    (c, edges),
                     plane,
                     (geom_tol, tol, seed_tol),
                 );

@@ -13,6 +13,7 @@ use crate::geom::mesh::Polyline3;
 use glam::{DVec2, DVec3};
 
 mod across;
+mod bracket;
 mod newton;
 mod patch;
 use newton::newton_pair_mid;
@@ -370,14 +371,15 @@ pub(crate) fn refine_section_curve(
     tol: f64,
     chord_tol: f64,
 ) -> Polyline3 {
-    refine_section_loose(s, seed, (p0, n), (tol, chord_tol, 0.0)).0
+    refine_section_loose(s, (seed, &[]), (p0, n), (tol, chord_tol, 0.0)).0
 }
 
 /// [`refine_section_curve`] with its loose chords (see [`assemble_loose`]), the seed from a mesh
-/// made within `seed_tol` (see [`on_edge`]).
+/// made within `seed_tol` (see [`on_edge`]), each of its points kept between the vertices of the
+/// mesh edge it lies on where `edges` has them (see [`bracket`]).
 pub(crate) fn refine_section_loose(
     s: &Patch,
-    seed: &Polyline3,
+    (seed, edges): (&Polyline3, &[Option<[DVec3; 2]>]),
     (p0, n): (DVec3, DVec3),
     (tol, chord_tol, seed_tol): (f64, f64, f64),
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
@@ -395,6 +397,13 @@ pub(crate) fn refine_section_loose(
             .then(|| newton_plane_held(s, start, (p0, n), hold, tol))
             .filter(|h| h.1 <= tol);
         let (uv, r) = held.unwrap_or_else(|| newton_plane(s, start, p0, n, tol));
+        let (uv, r) = match edges.get(i).copied().flatten() {
+            Some(e) => {
+                let along = seed.points[(i + 1).min(last)] - seed.points[i.saturating_sub(1)];
+                bracket::within_edge(s, (p0, n), (start, along), (uv, r), e, tol)
+            }
+            None => (uv, r),
+        };
         if r <= tol {
             prev = Some(uv);
             nodes.push((uv, s.eval(uv)));

@@ -1,0 +1,144 @@
+//! A plane-section seed point kept between the two vertices of the mesh edge it came from.
+//!
+//! The vertices lie on the true surface on opposite sides of the plane, so the gap changes sign
+//! between them on the true surface too: the crossing this seed stands for lies there. Newton
+//! from the seed goes to the nearer crossing, which is another where the mesh's section is off
+//! the true one's middle: in a lens of crossings narrower than the mesh's cells (the arc dips
+//! 1e-4 below the plane) both seed lines lay on one side of the lens's middle, and the crossing
+//! on that side came back twice, the other not at all. A Newton point outside the edge's slab is
+//! replaced by the root of the gap along the parameter segment between the vertices (Illinois,
+//! which keeps the bracket).
+
+use super::Patch;
+use glam::{DVec2, DVec3};
+
+/// Illinois steps at most: each at least halves the bracket's width every few steps, well
+/// below rounding in 60.
+const STEPS: usize = 60;
+
+/// `(uv, r)`, Newton's refinement from `start` of a seed point on the mesh edge `[va, vb]`, or,
+/// where Newton went the wrong way, the crossing between `va` and `vb` on `s` (when their gaps
+/// to the plane bracket one and it is solved within `tol`). The wrong way: the crossing of the
+/// bracket lies from the start toward the vertex whose gap has the other sign than the start's,
+/// and Newton moved toward the other vertex (the start's slope differs in sign from the edge's:
+/// beyond the lens's middle), AND its point left the edge's span across the seed curve
+/// (`along`, the seed's direction there: the long cells' rulings make the edge's span along it
+/// meaningless). Both, since near a branch point (a torus's figure eight) Newton's first step
+/// may go against the edge's slope yet stay on the edge's branch.
+pub(crate) fn within_edge(
+    s: &Patch,
+    (p0, n): (DVec3, DVec3),
+    (start, along): (DVec2, DVec3),
+    (uv, r): (DVec2, f64),
+    [va, vb]: [DVec3; 2],
+    tol: f64,
+) -> (DVec2, f64) {
+    // Inside the edge's span first: it settles nearly every seed point with one evaluation.
+    let x = s.eval(uv);
+    let across = n.cross(along).normalize_or_zero();
+    let (ca, cb) = (va.dot(across), vb.dot(across));
+    if r <= tol && (ca.min(cb)..=ca.max(cb)).contains(&x.dot(across)) {
+        return (uv, r);
+    }
+    let s0 = s.eval(start);
+    let g0 = n.dot(s0 - p0);
+    // `e` runs from the vertex on the start's side to the other: the crossing lies along it.
+    let e = if n.dot(vb - p0) * g0 < 0.0 {
+        vb - va
+    } else {
+        va - vb
+    };
+    if g0.abs() <= tol || (r <= tol && (x - s0).dot(e) >= 0.0) {
+        return (uv, r);
+    }
+    let ua = s.project(va, Some(start));
+    let ub = s.project(vb, Some(start));
+    let mut d = ub - ua;
+    for (k, periodic) in s.periodic().into_iter().enumerate() {
+        if periodic {
+            d[k] -= d[k].round();
+        }
+    }
+    let at = |t: f64| {
+        let mut q = ua + d * t;
+        s.normalise(&mut q);
+        q
+    };
+    let gap = |t: f64| n.dot(s.eval(at(t)) - p0);
+    match illinois(gap, 0.01 * tol) {
+        Some((t, g)) if g.abs() <= tol => (at(t), g.abs()),
+        _ => (uv, r),
+    }
+}
+
+/// A root of `f` on [0, 1] where `f(0)` and `f(1)` have opposite signs, to `|f| <= eps` (or
+/// the bracket's rounding): `(t, f(t))`. None without a sign change (or with a NaN).
+fn illinois(f: impl Fn(f64) -> f64, eps: f64) -> Option<(f64, f64)> {
+    // `b` is the latest point, `a` the other end of the bracket (either may be the larger).
+    let (mut a, mut b) = (0.0f64, 1.0f64);
+    let (mut fa, mut fb) = (f(a), f(b));
+    // A NaN end is no bracket.
+    if (fa * fb).partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
+        return None;
+    }
+    // The value at the best point (`fa` may be halved).
+    let mut best = if fa.abs() < fb.abs() {
+        (a, fa)
+    } else {
+        (b, fb)
+    };
+    for _ in 0..STEPS {
+        let (lo, hi) = (a.min(b), a.max(b));
+        let t = (a * fb - b * fa) / (fb - fa);
+        // Rounding may put the secant point on an end (or off the bracket): bisect instead.
+        let t = if t > lo && t < hi { t } else { 0.5 * (lo + hi) };
+        if t <= lo || t >= hi {
+            break;
+        }
+        let ft = f(t);
+        if ft.is_nan() {
+            return None;
+        }
+        if ft.abs() < best.1.abs() {
+            best = (t, ft);
+        }
+        if ft.abs() <= eps {
+            break;
+        }
+        if ft * fb < 0.0 {
+            (a, fa) = (b, fb);
+        } else {
+            // The end `a` kept again: halving its value moves the next secant point off it.
+            fa *= 0.5;
+        }
+        (b, fb) = (t, ft);
+    }
+    Some(best)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_root_found_is_the_one_between_the_ends() {
+        // Roots at 0.2 (between the ends) and 1.5 (beyond): Newton from 0.9, where the slope
+        // points to 1.5's side, would leave the bracket; Illinois stays in it.
+        let f = |t: f64| (t - 0.2) * (t - 1.5);
+        let (t, ft) = illinois(f, 1e-14).unwrap();
+        assert!((t - 0.2).abs() <= 1e-12 && ft.abs() <= 1e-14, "{t} {ft}");
+        // Illinois keeps converging where plain regula falsi stalls on one end.
+        let g = |t: f64| t.powi(8) - 0.5;
+        let (t, gt) = illinois(g, 1e-15).unwrap();
+        assert!(
+            (t - 0.5f64.powf(0.125)).abs() <= 1e-13 && gt.abs() <= 1e-15,
+            "{t} {gt}"
+        );
+    }
+
+    #[test]
+    fn no_sign_change_or_a_nan_end_is_no_bracket() {
+        assert!(illinois(|t| (t - 0.5).powi(2) + 1e-3, 1e-12).is_none());
+        assert!(illinois(|t| if t == 0.0 { f64::NAN } else { t }, 1e-12).is_none());
+    }
+}
