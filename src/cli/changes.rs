@@ -105,7 +105,7 @@ mod tests {
         let lib = dir.path().join("lib.lsp");
         std::fs::write(&lib, "(setq r 4)\n").unwrap();
         let mut c = Changes::new().unwrap();
-        c.watch(&[lib.clone()]);
+        c.watch(std::slice::from_ref(&lib));
         let since = SystemTime::now();
         std::fs::write(&lib, "(setq r 7)\n").unwrap();
         let f = std::fs::File::options().write(true).open(&lib).unwrap();
