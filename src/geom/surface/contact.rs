@@ -469,17 +469,26 @@ fn beside(a: &Patch, tol: f64, chord_tol: f64) -> f64 {
 
 /// Whether `p` lies within `r` of one of `curves` (points, or segments of polylines).
 pub(super) fn near_any(p: DVec3, curves: &[Polyline3], r: f64) -> bool {
-    curves.iter().any(|c| {
+    closest_points(p, curves).any(|q| p.distance(q) <= r)
+}
+
+/// The point of each of `curves` nearest `p`, segment by segment (a one-point curve: its point).
+pub(super) fn closest_points(p: DVec3, curves: &[Polyline3]) -> impl Iterator<Item = DVec3> + '_ {
+    curves.iter().flat_map(move |c| {
         let n = c.points.len();
-        if n == 1 {
-            return c.points[0].distance(p) <= r;
-        }
-        let segs = if c.closed { n } else { n - 1 };
-        (0..segs).any(|k| {
+        let segs = match n {
+            1 => 1,
+            _ if c.closed => n,
+            _ => n.saturating_sub(1),
+        };
+        (0..segs).map(move |k| {
+            if n == 1 {
+                return c.points[0];
+            }
             let (s, e) = (c.points[k], c.points[(k + 1) % n]);
             let d = e - s;
             let f = ((p - s).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-            p.distance(s + d * f) <= r
+            s + d * f
         })
     })
 }

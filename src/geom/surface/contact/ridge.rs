@@ -55,24 +55,10 @@ impl Found<'_> {
 /// The point of `curves` (points, or segments of polylines) nearest `p`, if within `r`.
 fn nearest_within(p: DVec3, curves: &[Polyline3], r: f64) -> Option<DVec3> {
     let mut best: Option<(f64, DVec3)> = None;
-    let mut take = |q: DVec3| {
+    for q in super::closest_points(p, curves) {
         let d = q.distance(p);
         if d <= r && best.is_none_or(|b| d < b.0) {
             best = Some((d, q));
-        }
-    };
-    for c in curves {
-        let n = c.points.len();
-        if n == 1 {
-            take(c.points[0]);
-            continue;
-        }
-        let segs = if c.closed { n } else { n.saturating_sub(1) };
-        for k in 0..segs {
-            let (s, e) = (c.points[k], c.points[(k + 1) % n]);
-            let d = e - s;
-            let f = ((p - s).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-            take(s + d * f);
         }
     }
     best.map(|b| b.1)
