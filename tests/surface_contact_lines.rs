@@ -238,10 +238,6 @@ fn two_contact_lines_a_ridge_apart_both_come_back_at_the_users_chordtol() {
     );
 }
 
-/// The CHORDTOLs at which the section of the lens 1e-4 deep loses the contact at x = 4 (see
-/// the ignored test below).
-const LENS_CONTACT_LOST: [f64; 4] = [0.03, 0.02, 0.015, 0.012];
-
 /// The crossings ±√(−2·R·low − low²) of a lens narrower than the seeding mesh's cells (1e-4
 /// deep: ±0.0199997; 1e-3 deep: ±0.0632377).
 fn lens(low: f64) -> [f64; 2] {
@@ -254,15 +250,21 @@ fn a_narrow_lens_of_crossings_comes_back_whole_in_the_section_at_the_users_chord
     // The mesh's lens is narrower than the true one and off its middle: at CHORDTOL 0.01 both
     // seed lines lay at x ≈ 0.0074 and 0.0099, and Newton took each to the nearer crossing,
     // +0.02, twice; −0.02 was lost (1e-4 deep at every CHORDTOL, 1e-3 deep at 0.05..0.02).
-    // Each seed point is now kept between the vertices of the mesh edge it lies on.
+    // Each seed point is now kept between the vertices of the mesh edge it lies on. The
+    // contact at x = 4 was lost too, 1e-4 deep at CHORDTOL 0.03, 0.02, 0.015 and 0.012: its
+    // seed (3.991, 1.9e-5), four cells (1.5 to 3 long) from the crossing at +x, was taken for
+    // that crossing's, whose slope of 0.01 "accounts for" its height. `Lows::claimed` (since
+    // 3123a31) leaves in an uncrossed seed much flatter to the other surface than the crossing
+    // (sine 0.0044 there against the crossing's 0.01).
     let mut failed = Vec::new();
     for low in [-1e-4f64, -1e-3] {
         let [a, b] = lens(low);
-        let tols: Vec<f64> = CHORDTOLS
-            .into_iter()
-            .filter(|t| low != -1e-4 || !LENS_CONTACT_LOST.contains(t))
-            .collect();
-        failed.extend(lines_of_two_dips(low, &[a, b, X2], Asks::Section, &tols));
+        failed.extend(lines_of_two_dips(
+            low,
+            &[a, b, X2],
+            Asks::Section,
+            &CHORDTOLS,
+        ));
     }
     assert!(
         failed.is_empty(),
@@ -280,29 +282,15 @@ fn a_narrow_lens_of_crossings_comes_back_whole_in_the_section_at_the_users_chord
 ///   keeping each seed point within its mesh edge's bracket (`refine/bracket.rs`); the
 ///   intersect's seeds come from the mesh/mesh intersection and are refined by
 ///   `refine_pair_curve`, which has no bracket yet.
-/// - The section 1e-4 deep at CHORDTOL 0.03, 0.02, 0.015 and 0.012: both crossings come back
-///   but the contact at x = 4 is lost (in the intersect too at those CHORDTOLs):
-///   `Lows::claimed` takes its seed for the crossing's, which passes within four of the seed's
-///   (ruling-long) cells and, at its slope of 0.01, "accounts for" the seed's height. The
-///   ridge between them (see `contact/ridge.rs`) would tell them apart.
 #[test]
 #[ignore = "open defect: in the intersect a lens narrower than the mesh's cells comes back as \
-            one crossing twice, and the contact beside it is lost at some CHORDTOLs (see the doc \
-            comment)"]
+            one crossing twice (see the doc comment)"]
 fn a_narrow_lens_of_crossings_beside_a_contact_comes_back_whole_at_the_users_chordtol() {
     let mut failed = Vec::new();
     for low in [-1e-4f64, -1e-3] {
         let [a, b] = lens(low);
         failed.extend(lines_of_two_dips(low, &[a, b, X2], Asks::Meets, &CHORDTOLS));
     }
-    let [a, b] = lens(-1e-4);
-    let xs = [a, b, X2];
-    failed.extend(lines_of_two_dips(
-        -1e-4,
-        &xs,
-        Asks::Section,
-        &LENS_CONTACT_LOST,
-    ));
     assert!(
         failed.is_empty(),
         "{} failed:\n{}",
