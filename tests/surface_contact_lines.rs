@@ -274,17 +274,13 @@ fn a_narrow_lens_of_crossings_comes_back_whole_in_the_section_at_the_users_chord
     );
 }
 
-/// The narrow lens beside a contact a ridge away: the runs still open, all also failing on
-/// `main` (63b7123).
-/// - Both orders of intersect with the plane region, 1e-4 deep at every CHORDTOL and 1e-3 deep
-///   at 0.05, 0.03 and 0.02: the crossing at +x comes back twice, the one at −x not at all. The
-///   section's cause (Newton from seeds all on one side of the lens's middle), fixed there by
-///   keeping each seed point within its mesh edge's bracket (`refine/bracket.rs`); the
-///   intersect's seeds come from the mesh/mesh intersection and are refined by
-///   `refine_pair_curve`, which has no bracket yet.
+/// The narrow lens beside a contact a ridge away, in both orders of intersect with the plane
+/// region (1e-4 deep at every CHORDTOL, 1e-3 deep at 0.05..0.02): all failed on `main`
+/// (63b7123) and on stage-s16 (the crossing at +x came back twice, the one at −x not at all:
+/// Newton from seeds all on one side of the lens's middle). Each seed point is kept between the
+/// vertices of the mesh edge it lies on (`refine/bracket.rs`), in the section and, from the
+/// mesh/mesh intersection's edges, in `refine_pair_curve`, its held ends included.
 #[test]
-#[ignore = "open defect: in the intersect a lens narrower than the mesh's cells comes back as \
-            one crossing twice (see the doc comment)"]
 fn a_narrow_lens_of_crossings_beside_a_contact_comes_back_whole_at_the_users_chordtol() {
     let mut failed = Vec::new();
     for low in [-1e-4f64, -1e-3] {

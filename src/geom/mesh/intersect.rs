@@ -84,6 +84,56 @@ pub fn intersect_meshes_with_stats(a: &Mesh, b: &Mesh) -> (Vec<Polyline3>, Inter
     (out, stats)
 }
 
+/// An intersection polyline with, for each point, the mesh edge it lies on: `(on_b, [v0, v1])`,
+/// whether the edge is the second mesh's and its vertices (None where several keys meet at one
+/// point, a touch through a vertex or edge). The vertices lie on the edge owner's surface on
+/// opposite sides of the other mesh, so they bracket the true crossing.
+pub type PairEdgedPolyline = (Polyline3, Vec<Option<(bool, [DVec3; 2])>>);
+
+/// [`intersect_meshes`] with, for each point, the mesh edge it lies on.
+pub fn intersect_meshes_edges(a: &Mesh, b: &Mesh) -> Vec<PairEdgedPolyline> {
+    let (pieces, _, pairs) = pieces_and_pairs(a, b);
+    let mut at: std::collections::HashMap<[u64; 3], Option<u128>> =
+        std::collections::HashMap::with_capacity(2 * pieces.len());
+    for p in &pieces {
+        for k in 0..2 {
+            let x = p.seg.points[k];
+            let e = at.entry([x.x.to_bits(), x.y.to_bits(), x.z.to_bits()]);
+            let key = p.seg.keys[k];
+            e.and_modify(|v| {
+                if *v != Some(key) {
+                    *v = None
+                }
+            })
+            .or_insert(Some(key));
+        }
+    }
+    let segs = pieces.into_iter().map(|p| p.seg).collect();
+    let edge_of = |x: &DVec3| {
+        let key = at
+            .get(&[x.x.to_bits(), x.y.to_bits(), x.z.to_bits()])?
+            .as_ref()?;
+        let on_b = (key >> 96) == 1;
+        let m = if on_b { b } else { a };
+        let v = m.vertices();
+        let (lo, hi) = ((key >> 64) as u32 as usize, (key >> 32) as u32 as usize);
+        Some((on_b, [*v.get(lo)?, *v.get(hi)?]))
+    };
+    let mut out: Vec<PairEdgedPolyline> = chain_segments(merge_keys_by_point(segs))
+        .into_iter()
+        .map(|c| {
+            let e = c.points.iter().map(edge_of).collect();
+            (c, e)
+        })
+        .collect();
+    out.extend(
+        super::coplanar::coincident_loops(a, b, &pairs)
+            .into_iter()
+            .map(|c| (c, Vec::new())),
+    );
+    out
+}
+
 /// One intersecting triangle pair's segment, with where its ends lie on `a`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Piece {

@@ -25,7 +25,10 @@ pub(crate) use chain::chain_directed;
 pub use chain::{chain_segments, Polyline3, Segment};
 pub use error::MeshError;
 pub use extend::{corners, extend, extend_with};
-pub use intersect::{intersect_meshes, intersect_meshes_with_stats, IntersectStats};
+pub use intersect::{
+    intersect_meshes, intersect_meshes_edges, intersect_meshes_with_stats, IntersectStats,
+    PairEdgedPolyline,
+};
 pub(crate) use io::weld_tolerance_grid;
 pub use io::{
     parse_obj, parse_stl, read_mesh, read_obj, read_stl, write_mesh, write_obj, write_stl_ascii,

@@ -8,7 +8,9 @@ use super::hits::{
 };
 use super::kinds::Surface;
 use super::tessellate::mesh_surface;
-use crate::geom::mesh::{intersect_meshes, section, section_edges, Mesh, Polyline3};
+use crate::geom::mesh::{
+    intersect_meshes_edges, section, section_edges, Mesh, PairEdgedPolyline, Polyline3,
+};
 use crate::geom::ParamCurve;
 use glam::DVec3;
 
@@ -402,6 +404,34 @@ fn intersect_seeded(
 /// the scale of their size.
 const COARSE_SEED: f64 = 1e-4;
 
+/// [`super::beside::seeds_outside`] keeping each point's mesh edge (its points are the seeds'
+/// own, bit for bit).
+fn seeds_outside_edged(
+    region: &super::beside::Region,
+    seeds: Vec<PairEdgedPolyline>,
+    near: f64,
+) -> Vec<PairEdgedPolyline> {
+    let bits = |x: &DVec3| [x.x.to_bits(), x.y.to_bits(), x.z.to_bits()];
+    let mut edge_at = std::collections::HashMap::new();
+    for (c, e) in &seeds {
+        for (p, e) in c.points.iter().zip(e) {
+            edge_at.insert(bits(p), *e);
+        }
+    }
+    let plain = seeds.into_iter().map(|c| c.0).collect();
+    super::beside::seeds_outside(region, plain, near)
+        .into_iter()
+        .map(|c| {
+            let e = c
+                .points
+                .iter()
+                .map(|p| edge_at.get(&bits(p)).copied().flatten());
+            let e = e.collect();
+            (c, e)
+        })
+        .collect()
+}
+
 /// The intersection seeded by the meshes and refined on the true surfaces, with the tangent
 /// contacts the meshes miss (when `contacts`). Beside a common region, only what lies outside
 /// it: the curves are cut where they enter it, and end on its `loops`.
@@ -423,9 +453,11 @@ fn through_meshes(
         None => seed_tol,
     };
     let (ma, mb) = (mesh_surface(a, seed_tol)?, mesh_surface(b, seed_tol)?);
-    let seeds = intersect_meshes(&ma, &mb);
+    // Each seed point with the mesh edge it lies on (see `refine::bracket`); the seeds cut
+    // beside a region go without.
+    let seeds = intersect_meshes_edges(&ma, &mb);
     let seeds = match region.as_ref() {
-        Some((r, _)) => super::beside::seeds_outside(r, seeds, 8.0 * seed_tol),
+        Some((r, _)) => seeds_outside_edged(r, seeds, 8.0 * seed_tol),
         None => seeds,
     };
     let reach = Reach {
@@ -440,8 +472,9 @@ fn through_meshes(
     let mut tips: Vec<Polyline3> = Vec::new();
     let curves: Vec<Polyline3> = seeds
         .iter()
-        .map(|c| {
-            let (r, loose) = super::refine::refine_pair_curve(&pa, &pb, c, (gtol, ctol, seed_tol));
+        .map(|(c, e)| {
+            let (r, loose) =
+                super::refine::refine_pair_curve(&pa, &pb, (c, e), (gtol, ctol, seed_tol));
             let (mut r, t) = super::contact::mend_pair(&pa, &pb, r, &loose, (gtol, ctol));
             tips.extend(t);
             super::refine::close_gap(&pa, &pb, &mut r, gtol, ctol);

@@ -196,6 +196,9 @@ fn pair_mid<'p>(
     }
 }
 
+/// A seed point's mesh edge: whether it is `b`'s, and its vertices (see `bracket`).
+pub(crate) type SeedEdge = Option<(bool, [DVec3; 2])>;
+
 /// One seeded polyline refined onto both surfaces and densified within `chord_tol`, with its
 /// loose chords (see [`assemble_loose`]). Points that do not converge (a seed far from any true
 /// intersection) are dropped. `seed_tol` bounds how far the seeding meshes' boundary chords lie
@@ -203,7 +206,7 @@ fn pair_mid<'p>(
 pub(crate) fn refine_pair_curve(
     a: &Patch,
     b: &Patch,
-    seed: &Polyline3,
+    (seed, edges): (&Polyline3, &[SeedEdge]),
     (tol, chord_tol, seed_tol): (f64, f64, f64),
 ) -> (Polyline3, Vec<[DVec3; 2]>) {
     let mut nodes: Vec<Node> = Vec::with_capacity(seed.points.len());
@@ -229,6 +232,13 @@ pub(crate) fn refine_pair_curve(
             .then(|| newton_pair_held(a, b, start, hold, tol))
             .filter(|h| h.residual <= tol);
         let n = held.unwrap_or_else(|| newton_pair(a, b, start, tol));
+        let n = match edges.get(i).copied().flatten() {
+            Some(e) => {
+                let along = seed.points[(i + 1).min(last)] - seed.points[i.saturating_sub(1)];
+                bracket::pair_within_edge((a, b), e, (start, along), n, tol)
+            }
+            _ => n,
+        };
         if n.residual <= tol {
             prev = Some(n.uv);
             nodes.push(n);

@@ -9,6 +9,7 @@
 //! replaced by the root of the gap along the parameter segment between the vertices (Illinois,
 //! which keeps the bracket).
 
+use super::newton::Node;
 use super::Patch;
 use glam::{DVec2, DVec3};
 
@@ -30,6 +31,20 @@ pub(crate) fn within_edge(
     (p0, n): (DVec3, DVec3),
     (start, along): (DVec2, DVec3),
     (uv, r): (DVec2, f64),
+    e: [DVec3; 2],
+    tol: f64,
+) -> (DVec2, f64) {
+    let gap = |x: DVec3| n.dot(x - p0);
+    within_edge_of(s, (&gap, n), (start, along), (uv, r), e, tol)
+}
+
+/// [`within_edge`] against any other object whose signed gap is `gap` (a surface: the
+/// distance along its normal), `n` its normal near the seed.
+pub(crate) fn within_edge_of(
+    s: &Patch,
+    (gap_of, n): (&dyn Fn(DVec3) -> f64, DVec3),
+    (start, along): (DVec2, DVec3),
+    (uv, r): (DVec2, f64),
     [va, vb]: [DVec3; 2],
     tol: f64,
 ) -> (DVec2, f64) {
@@ -41,9 +56,9 @@ pub(crate) fn within_edge(
         return (uv, r);
     }
     let s0 = s.eval(start);
-    let g0 = n.dot(s0 - p0);
+    let g0 = gap_of(s0);
     // `e` runs from the vertex on the start's side to the other: the crossing lies along it.
-    let e = if n.dot(vb - p0) * g0 < 0.0 {
+    let e = if gap_of(vb) * g0 < 0.0 {
         vb - va
     } else {
         va - vb
@@ -64,10 +79,56 @@ pub(crate) fn within_edge(
         s.normalise(&mut q);
         q
     };
-    let gap = |t: f64| n.dot(s.eval(at(t)) - p0);
+    let gap = |t: f64| gap_of(s.eval(at(t)));
     match illinois(gap, 0.01 * tol) {
         Some((t, g)) if g.abs() <= tol => (at(t), g.abs()),
         _ => (uv, r),
+    }
+}
+
+/// [`within_edge`] for a seed point of two meshes' intersection lying on an edge of one of
+/// them (`on_b`: of `b`'s): its vertices lie on that surface on opposite sides of the other, so
+/// the crossing the seed stands for lies between them there, and two seed points of a lens
+/// narrower than the cells, both on one side of its middle, go to its two crossings, not both
+/// to one. The gap to the other surface is taken along its normal at the point's projection.
+pub(crate) fn pair_within_edge(
+    (a, b): (&Patch, &Patch),
+    (on_b, e): (bool, [DVec3; 2]),
+    (start, along): ([DVec2; 2], DVec3),
+    n: Node,
+    tol: f64,
+) -> Node {
+    let k = on_b as usize;
+    let (s, o) = if on_b { (b, a) } else { (a, b) };
+    let hint = if n.residual <= tol {
+        n.uv[1 - k]
+    } else {
+        start[1 - k]
+    };
+    let normal = |q: DVec2| {
+        let (su, sv) = o.derivs(q);
+        su.cross(sv).normalize_or_zero()
+    };
+    let gap = |x: DVec3| {
+        let q = o.project(x, Some(hint));
+        normal(q).dot(x - o.eval(q))
+    };
+    let r = (start[k], along);
+    let (uv, res) = within_edge_of(s, (&gap, normal(hint)), r, (n.uv[k], n.residual), e, tol);
+    if uv == n.uv[k] {
+        return n;
+    }
+    let x = s.eval(uv);
+    let q = o.project(x, Some(hint));
+    let y = o.eval(q);
+    let mut uvs = [uv, q];
+    if on_b {
+        uvs.swap(0, 1);
+    }
+    Node {
+        uv: uvs,
+        point: 0.5 * (x + y),
+        residual: x.distance(y).max(res),
     }
 }
 
