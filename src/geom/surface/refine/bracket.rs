@@ -98,6 +98,11 @@ pub(crate) fn pair_within_edge(
     n: Node,
     tol: f64,
 ) -> Node {
+    // Inside the edge's own span across the seed curve first: it settles nearly every seed
+    // point with no evaluation, where the other surface's normal costs four.
+    if n.residual <= tol && within_span(n.point, along, e) {
+        return n;
+    }
     let k = on_b as usize;
     let (s, o) = if on_b { (b, a) } else { (a, b) };
     let hint = if n.residual <= tol {
@@ -130,6 +135,16 @@ pub(crate) fn pair_within_edge(
         point: 0.5 * (x + y),
         residual: x.distance(y).max(res),
     }
+}
+
+/// Whether `x` lies within the span of the edge `[va, vb]` across the seed curve's direction
+/// `along` (the edge's part square to it).
+fn within_span(x: DVec3, along: DVec3, [va, vb]: [DVec3; 2]) -> bool {
+    let t = along.normalize_or_zero();
+    let d = vb - va;
+    let across = d - t * d.dot(t);
+    let (ca, cb) = (va.dot(across), vb.dot(across));
+    (ca.min(cb)..=ca.max(cb)).contains(&x.dot(across))
 }
 
 /// A root of `f` on [0, 1] where `f(0)` and `f(1)` have opposite signs, to `|f| <= eps` (or
