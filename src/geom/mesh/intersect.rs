@@ -24,7 +24,7 @@
 //! The output is canonicalised by coordinates ([`chain_segments`]), so it does not depend on
 //! triangle or vertex order or on which mesh comes first.
 
-use super::chain::{chain_segments, cmp_point, Polyline3, Segment};
+use super::chain::{chain_keyed, chain_segments, cmp_point, Polyline3, Segment};
 use super::predicates::side_sos;
 use super::Mesh;
 use glam::DVec3;
@@ -93,36 +93,24 @@ pub type PairEdgedPolyline = (Polyline3, Vec<Option<(bool, [DVec3; 2])>>);
 /// [`intersect_meshes`] with, for each point, the mesh edge it lies on.
 pub fn intersect_meshes_edges(a: &Mesh, b: &Mesh) -> Vec<PairEdgedPolyline> {
     let (pieces, _, pairs) = pieces_and_pairs(a, b);
-    let mut at: std::collections::HashMap<[u64; 3], Option<u128>> =
-        std::collections::HashMap::with_capacity(2 * pieces.len());
-    for p in &pieces {
-        for k in 0..2 {
-            let x = p.seg.points[k];
-            let e = at.entry([x.x.to_bits(), x.y.to_bits(), x.z.to_bits()]);
-            let key = p.seg.keys[k];
-            e.and_modify(|v| {
-                if *v != Some(key) {
-                    *v = None
-                }
-            })
-            .or_insert(Some(key));
-        }
-    }
     let segs = pieces.into_iter().map(|p| p.seg).collect();
-    let edge_of = |x: &DVec3| {
-        let key = at
-            .get(&[x.x.to_bits(), x.y.to_bits(), x.z.to_bits()])?
-            .as_ref()?;
+    let (segs, canon) = merge_keys_noting(segs);
+    // A key standing for several (a touch through a vertex or an edge) names no one edge.
+    let merged: std::collections::HashSet<u128> = canon.into_values().collect();
+    let edge_of = |key: u128| {
+        if !merged.is_empty() && merged.contains(&key) {
+            return None;
+        }
         let on_b = (key >> 96) == 1;
         let m = if on_b { b } else { a };
         let v = m.vertices();
         let (lo, hi) = ((key >> 64) as u32 as usize, (key >> 32) as u32 as usize);
         Some((on_b, [*v.get(lo)?, *v.get(hi)?]))
     };
-    let mut out: Vec<PairEdgedPolyline> = chain_segments(merge_keys_by_point(segs))
+    let mut out: Vec<PairEdgedPolyline> = chain_keyed(segs)
         .into_iter()
-        .map(|c| {
-            let e = c.points.iter().map(edge_of).collect();
+        .map(|(c, keys)| {
+            let e = keys.into_iter().map(edge_of).collect();
             (c, e)
         })
         .collect();
@@ -372,7 +360,14 @@ fn edge_plane_point(p: DVec3, q: DVec3, t: &[DVec3; 3]) -> DVec3 {
 }
 
 /// Re-keys segment ends so that ends with bit-identical points share one key.
-pub(crate) fn merge_keys_by_point(mut segs: Vec<Segment>) -> Vec<Segment> {
+pub(crate) fn merge_keys_by_point(segs: Vec<Segment>) -> Vec<Segment> {
+    merge_keys_noting(segs).0
+}
+
+/// [`merge_keys_by_point`] with the keys it replaced, each mapped to the one it now shares.
+fn merge_keys_noting(
+    mut segs: Vec<Segment>,
+) -> (Vec<Segment>, std::collections::HashMap<u128, u128>) {
     let mut ends: Vec<(DVec3, u128)> = segs
         .iter()
         .flat_map(|s| [(s.points[0], s.keys[0]), (s.points[1], s.keys[1])])
@@ -401,5 +396,5 @@ pub(crate) fn merge_keys_by_point(mut segs: Vec<Segment>) -> Vec<Segment> {
             }
         }
     }
-    segs
+    (segs, canon)
 }
