@@ -15,6 +15,10 @@ pub fn inputs(script: &Path, open: Option<&PathBuf>) -> Vec<PathBuf> {
         .collect()
 }
 
+/// How far a file's time may lag the fine clock and still count as a save during the run:
+/// the kernel's coarse clock lags by milliseconds, FAT's times are rounded to 2 s.
+const SLACK: Duration = Duration::from_secs(2);
+
 pub struct Changes {
     watcher: RecommendedWatcher,
     rx: mpsc::Receiver<Vec<PathBuf>>,
@@ -62,16 +66,23 @@ impl Changes {
     /// started), then lets a burst of events settle (an editor's save is several). False when
     /// the watcher has stopped. `settle`: how long the events must pause.
     pub fn wait(&mut self, files: &[PathBuf], since: SystemTime, settle: Duration) -> bool {
+        let watched = self.dirs.len();
         let files = self.watch(files);
         // A directory first seen in this run (one a loaded file is in) is only watched from
         // here on: a save in it during the run, or before the watch was added, shows in the
-        // file's time alone. A time ahead of the clock (a file
-        // from an archive) is not a save, or it would re-run forever.
+        // file's time alone. That time comes from the kernel's coarse clock (or a coarse file
+        // system's), which can lag `since`, so a time up to `SLACK` before it counts: at worst
+        // one extra run, once per new directory. A time ahead of the clock (a file from an
+        // archive) is not a save, or it would re-run forever. Files in directories watched
+        // before the run are covered by its events.
+        let fresh = &self.dirs[watched..];
         let now = SystemTime::now();
+        let since = since.checked_sub(SLACK).unwrap_or(since);
         let saved_meanwhile = files.iter().any(|f| {
-            std::fs::metadata(f)
-                .and_then(|m| m.modified())
-                .is_ok_and(|t| t > since && t <= now)
+            f.parent().is_some_and(|d| fresh.iter().any(|x| x == d))
+                && std::fs::metadata(f)
+                    .and_then(|m| m.modified())
+                    .is_ok_and(|t| t > since && t <= now)
         });
         if !saved_meanwhile {
             loop {
@@ -115,5 +126,51 @@ mod tests {
             let _ = tx.send(c.wait(&[lib], since, Duration::from_millis(20)));
         });
         assert_eq!(rx.recv_timeout(Duration::from_secs(20)), Ok(true));
+    }
+
+    /// A file the run loaded from a directory not watched before it, saved during the run and
+    /// stamped by the coarse clock 3 ms before the run's start, is seen by its time: no event
+    /// can come, as the save predates the watch. Before, only a time after the start counted,
+    /// and `wait` blocked.
+    #[test]
+    fn a_loaded_file_in_a_new_directory_saved_during_the_run_is_seen_by_its_time() {
+        let dir = tempfile::tempdir().unwrap();
+        let other = tempfile::tempdir().unwrap();
+        let script = dir.path().join("main.lsp");
+        let lib = other.path().join("lib.lsp");
+        std::fs::write(&script, "(load \"lib\")\n").unwrap();
+        let mut c = Changes::new().unwrap();
+        c.watch(std::slice::from_ref(&script));
+        let since = SystemTime::now();
+        std::fs::write(&lib, "(setq r 7)\n").unwrap();
+        let f = std::fs::File::options().write(true).open(&lib).unwrap();
+        f.set_modified(since - Duration::from_millis(3)).unwrap();
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(c.wait(&[script, lib], since, Duration::from_millis(20)));
+        });
+        assert_eq!(rx.recv_timeout(Duration::from_secs(20)), Ok(true));
+    }
+
+    /// A loaded file whose directory was already watched and that did not change does not
+    /// re-run by its time, however recent: the watch's events cover it.
+    #[test]
+    fn an_unchanged_file_in_a_watched_directory_does_not_rerun_by_its_time() {
+        let dir = tempfile::tempdir().unwrap();
+        let lib = dir.path().join("lib.lsp");
+        std::fs::write(&lib, "(setq r 4)\n").unwrap();
+        let mut c = Changes::new().unwrap();
+        c.watch(std::slice::from_ref(&lib));
+        let since = SystemTime::now();
+        let f = std::fs::File::options().write(true).open(&lib).unwrap();
+        f.set_modified(since - Duration::from_millis(3)).unwrap();
+        drop(f);
+        std::thread::sleep(Duration::from_millis(100));
+        while c.rx.try_recv().is_ok() {}
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(c.wait(&[lib], since, Duration::from_millis(20)));
+        });
+        assert!(rx.recv_timeout(Duration::from_millis(500)).is_err());
     }
 }
