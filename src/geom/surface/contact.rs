@@ -280,35 +280,7 @@ fn regroup(
     }
     let near = beside(a, tol, chord_tol);
     let tols = (tol, chord_tol, near);
-    let mut traced: Vec<Polyline3> = Vec::new();
-    let mut steps: Vec<f64> = Vec::new();
-    let touches = |on: [bool; 3]| (0..3).filter(move |&k| on[k]);
-    let first = partly
-        .iter()
-        .filter_map(|(c, probes, on)| Some((c, probes[touches(*on).next()?])));
-    for (c, uv) in touching.iter().map(|(c, uv)| (c, *uv)).chain(first) {
-        if let Some((t, len)) = trace_from(a, gap, c, uv, &traced, tols) {
-            traced.push(t);
-            steps.push(len);
-        }
-    }
-    // A partly touching curve's first touching probe can lie on a crossing close beside a
-    // branch point (at CHORDTOL 0.005, 0.017 off the contact), looking touching but tracing no
-    // contact; the curve, kept whole, then runs on along the contact past the branch point. Its
-    // other touching probes are tried too, but only where no traced contact reaches the curve
-    // (most seed curves are cut by one, and this costs nothing there).
-    for (c, probes, on) in &partly {
-        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
-            continue;
-        }
-        for k in touches(*on).skip(1) {
-            if let Some((t, len)) = trace_from(a, gap, c, probes[k], &traced, tols) {
-                traced.push(t);
-                steps.push(len);
-                break;
-            }
-        }
-    }
+    let (mut traced, steps) = trace_contacts(a, gap, &touching, &partly, tols);
     // The pieces a traced contact covers go; any other stays.
     kept.extend(
         touching
@@ -340,6 +312,49 @@ fn regroup(
         branch::through_branch_points((a, other), gap, kept, &mut traced, near, (tol, chord_tol));
     kept.extend(traced);
     kept
+}
+
+/// The contacts traced from the seed curves that touch at all three probes (from the middle one)
+/// and from those that touch at some (`partly`, with their probes and which touch), each
+/// contact once, with each one's step along it (see [`trace_from`]).
+fn trace_contacts(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    touching: &[(Polyline3, DVec2)],
+    partly: &[(Polyline3, [DVec2; 3], [bool; 3])],
+    tols: (f64, f64, f64),
+) -> (Vec<Polyline3>, Vec<f64>) {
+    let near = tols.2;
+    let mut traced: Vec<Polyline3> = Vec::new();
+    let mut steps: Vec<f64> = Vec::new();
+    let touches = |on: [bool; 3]| (0..3).filter(move |&k| on[k]);
+    let first = partly
+        .iter()
+        .filter_map(|(c, probes, on)| Some((c, probes[touches(*on).next()?])));
+    for (c, uv) in touching.iter().map(|(c, uv)| (c, *uv)).chain(first) {
+        if let Some((t, len)) = trace_from(a, gap, c, uv, &traced, tols) {
+            traced.push(t);
+            steps.push(len);
+        }
+    }
+    // A partly touching curve's first touching probe can lie on a crossing close beside a
+    // branch point (at CHORDTOL 0.005, 0.017 off the contact), looking touching but tracing no
+    // contact; the curve, kept whole, then runs on along the contact past the branch point. Its
+    // other touching probes are tried too, but only where no traced contact reaches the curve
+    // (most seed curves are cut by one, and this costs nothing there).
+    for (c, probes, on) in partly {
+        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
+            continue;
+        }
+        for k in touches(*on).skip(1) {
+            if let Some((t, len)) = trace_from(a, gap, c, probes[k], &traced, tols) {
+                traced.push(t);
+                steps.push(len);
+                break;
+            }
+        }
+    }
+    (traced, steps)
 }
 
 /// The contact traced on the true surfaces from `uv`, a touching probe of the seed curve `c`,
