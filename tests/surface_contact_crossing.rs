@@ -307,21 +307,9 @@ fn at_the_users_chordtol(cases: &[((f64, f64), Vec<f64>)]) {
     assert!(n == 0, "{n} of {runs} failed:\n{}", failed.join("\n"));
 }
 
-/// The sheets' open defects at the user's CHORDTOL: roots, and the CHORDTOLs at which all or
-/// some of the three runs fail (see
-/// [`crossings_beside_contacts_at_the_users_chordtol_open_defects`]).
-const OPEN: [((f64, f64), &[f64]); 1] = [((0.2, -0.05), &[0.005, 5e-4])];
-
-/// Each sheet with roots `roots` at every CHORDTOL but those of its open defects.
-fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
-    let open = |d: (f64, f64)| OPEN.iter().find(|o| o.0 == d).map_or(&[][..], |o| o.1);
-    roots
-        .iter()
-        .map(|&d| {
-            let tols = CHORDTOLS.iter().filter(|t| !open(d).contains(t));
-            (d, tols.copied().collect())
-        })
-        .collect()
+/// Each sheet with roots `roots` at every CHORDTOL.
+fn at_every_chordtol(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
+    roots.iter().map(|&d| (d, CHORDTOLS.to_vec())).collect()
 }
 
 /// Before `meeting` left a crossing's end on a bounded edge where it is (branch.rs), a crossing
@@ -330,7 +318,7 @@ fn but_open(roots: &[(f64, f64)]) -> Vec<((f64, f64), Vec<f64>)> {
 /// CHORDTOL 0.05 to 0.003 and d = 0.03 at 0.05 to 0.008, each crossing 0.02 or 0.06 too long.
 #[test]
 fn crossings_beside_contacts_at_the_users_chordtol() {
-    at_the_users_chordtol(&but_open(&[
+    at_the_users_chordtol(&at_every_chordtol(&[
         (0.01, 0.01),
         (0.03, 0.03),
         (0.1, 0.1),
@@ -354,11 +342,10 @@ fn crossings_beside_contacts_at_the_users_chordtol() {
 /// 0.005..0.2 at 7e-4 still failed (as on `63b7123`): the crossing folded back on itself
 /// (length 4.198, 4.372 for 4.018, 4.005), a seed point refined onto it (the surfaces at about
 /// 0.06 rad) having landed beyond the next one, e.g. x = 1.989, 2.645, 2.462, 2.890; such a
-/// point is now put back after the next (`alongside::unfold_overshoots`). The runs still
-/// failing are in [`OPEN`].
+/// point is now put back after the next (`alongside::unfold_overshoots`).
 #[test]
 fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
-    at_the_users_chordtol(&but_open(&[
+    at_the_users_chordtol(&at_every_chordtol(&[
         (0.01, 0.5),
         (0.5, 0.01),
         (0.003, 0.1),
@@ -372,24 +359,7 @@ fn crossings_beside_part_of_a_contact_at_the_users_chordtol() {
     ]));
 }
 
-#[test]
-fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
-    at_the_users_chordtol(&but_open(&[
-        (-0.1, 0.3),
-        (0.0, 0.3),
-        (0.3, 0.0),
-        (-0.05, 0.2),
-        (0.2, -0.05),
-    ]));
-}
-
-/// Open defects at the user's CHORDTOL (the runs listed in [`OPEN`]; each sheet passes at the
-/// other CHORDTOLs):
-/// - d = 0.2..−0.05 (a branch point inside, at x = 3.2) at CHORDTOL 0.005 and 5e-4, sheet ∩
-///   plate and plate ∩ sheet (the section passes): the crossing runs onto the contact (at
-///   x ≈ 2.82, 0.024 from it, at 5e-4) and on along it to (4, 0, 0). Not traced.
-///
-/// Fixed (each failed on `63b7123`; they now run in the tests above):
+/// Fixed at the user's CHORDTOL (each failed on `63b7123`):
 /// - 0.01..0.5, 0.5..0.01 at CHORDTOL 0.05 to 0.005 (the default 0.01 among them) and
 ///   0.03..0.3 at 0.03 to 0.015: the crossing, marched from where the meshes see it, stopped
 ///   where it came within the contact module's nearness (`contact::beside`: 2·CHORDTOL +
@@ -404,9 +374,18 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
 ///   3.2): the crossing's chord passed it far from its ends, and the branch point was solved
 ///   only from them. It is now also solved from the chord's point nearest the contact
 ///   (`branch::branch_near`). Their sections' lost contacts went with the seeds' fix.
+/// - 0.2..−0.05 (a branch point inside, at x = 3.2) at CHORDTOL 0.005 and 5e-4, sheet ∩ plate
+///   and plate ∩ sheet: the one seed curve ran along the crossing and, past the branch point, on
+///   along the contact to (4, 0, 0); of its three probes the middle one (on the crossing, 0.017
+///   or 0.024 from the contact) looked touching but traced no contact, the end one was not
+///   tried, and the seed curve was kept whole as a crossing. Every touching probe is now tried.
 #[test]
-#[ignore = "open defects (see the doc comment)"]
-fn crossings_beside_contacts_at_the_users_chordtol_open_defects() {
-    let open: Vec<_> = OPEN.iter().map(|(d, t)| (*d, t.to_vec())).collect();
-    at_the_users_chordtol(&open);
+fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
+    at_the_users_chordtol(&at_every_chordtol(&[
+        (-0.1, 0.3),
+        (0.0, 0.3),
+        (0.3, 0.0),
+        (-0.05, 0.2),
+        (0.2, -0.05),
+    ]));
 }

@@ -45,22 +45,21 @@ use std::sync::OnceLock;
 /// Keeps only the vertices the triangles use, renumbered in first-use order.
 pub(crate) fn compact_vertices(
     verts: &[DVec3],
-    tris: Vec<[u32; 3]>,
+    mut tris: Vec<[u32; 3]>,
 ) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let mut map = vec![u32::MAX; verts.len()];
     let mut out = Vec::new();
-    let tris = tris
-        .into_iter()
-        .map(|t| {
-            t.map(|i| {
-                if map[i as usize] == u32::MAX {
-                    map[i as usize] = out.len() as u32;
-                    out.push(verts[i as usize]);
-                }
-                map[i as usize]
-            })
-        })
-        .collect();
+    // In place, in a plain loop: written with `array::map` and `collect`, the per-index closure
+    // was inlined or not depending on how the crate's codegen units fell, which moved the
+    // section benchmarks by 1.5 % between builds of unrelated code.
+    for i in tris.iter_mut().flatten() {
+        let k = *i as usize;
+        if map[k] == u32::MAX {
+            map[k] = out.len() as u32;
+            out.push(verts[k]);
+        }
+        *i = map[k];
+    }
     (out, tris)
 }
 

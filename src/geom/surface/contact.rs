@@ -261,9 +261,10 @@ fn regroup(
 ) -> Vec<Polyline3> {
     let mut kept = Vec::with_capacity(curves.len());
     let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
-    // Touching at one or two of the probes only: a crossing running into a touch, or one seed
-    // curve that ran along a contact and then off along a crossing leaving it.
-    let mut partly: Vec<(Polyline3, DVec2)> = Vec::new();
+    // Touching at one or two of the probes only (which, of the first, middle and last point):
+    // a crossing running into a touch, or one seed curve that ran along a contact and then off
+    // along a crossing leaving it.
+    let mut partly: Vec<(Polyline3, [DVec2; 3], [bool; 3])> = Vec::new();
     for c in curves {
         let n = c.points.len();
         if n == 0 {
@@ -274,35 +275,12 @@ fn regroup(
         match on.iter().position(|t| *t) {
             None => kept.push(c),
             Some(_) if on.iter().all(|t| *t) => touching.push((c, probes[1])),
-            Some(k) => partly.push((c, probes[k])),
+            Some(_) => partly.push((c, probes, on)),
         }
     }
     let near = beside(a, tol, chord_tol);
-    let mut traced: Vec<Polyline3> = Vec::new();
-    let mut steps: Vec<f64> = Vec::new();
-    for (c, uv) in touching.iter().chain(&partly) {
-        // A seed touching where a traced contact runs would trace that contact again (and
-        // beside a branch point, where the gap's extremum off the contact is within tol too,
-        // wander about it: seen from the plate, a second walk 18 long).
-        if c.points.len() < 2
-            || c.points.iter().all(|p| near_any(*p, &traced, near))
-            || near_any(a.eval(*uv), &traced, near)
-        {
-            continue;
-        }
-        let len = c
-            .points
-            .windows(2)
-            .map(|w| w[0].distance(w[1]))
-            .fold(0.0, f64::max);
-        // A seed curve partly off the traced contacts (where a crossing runs into one, points
-        // within the tolerance of both surfaces stray farther from it) can trace one again.
-        let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, &traced, near));
-        if let Some(t) = contact_curve_near(a, gap, *uv, len, tol, chord_tol).filter(fresh) {
-            traced.push(t);
-            steps.push(len);
-        }
-    }
+    let tols = (tol, chord_tol, near);
+    let (mut traced, steps) = trace_contacts(a, gap, &touching, &partly, tols);
     // The pieces a traced contact covers go; any other stays.
     kept.extend(
         touching
@@ -312,7 +290,7 @@ fn regroup(
     );
     // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
     let mut cut: Vec<(Polyline3, [bool; 2])> = Vec::new();
-    for (c, _) in partly {
+    for (c, _, _) in partly {
         if c.points.iter().any(|p| near_any(*p, &traced, near)) {
             cut.extend(off_curves(&c, &traced, near));
         } else {
@@ -334,6 +312,82 @@ fn regroup(
         branch::through_branch_points((a, other), gap, kept, &mut traced, near, (tol, chord_tol));
     kept.extend(traced);
     kept
+}
+
+/// The contacts traced from the seed curves that touch at all three probes (from the middle one)
+/// and from those that touch at some (`partly`, with their probes and which touch), each
+/// contact once, with each one's step along it (see [`trace_from`]).
+fn trace_contacts(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    touching: &[(Polyline3, DVec2)],
+    partly: &[(Polyline3, [DVec2; 3], [bool; 3])],
+    tols: (f64, f64, f64),
+) -> (Vec<Polyline3>, Vec<f64>) {
+    let near = tols.2;
+    let mut traced: Vec<Polyline3> = Vec::new();
+    let mut steps: Vec<f64> = Vec::new();
+    let touches = |on: [bool; 3]| (0..3).filter(move |&k| on[k]);
+    let first = partly
+        .iter()
+        .filter_map(|(c, probes, on)| Some((c, probes[touches(*on).next()?])));
+    for (c, uv) in touching.iter().map(|(c, uv)| (c, *uv)).chain(first) {
+        if let Some((t, len)) = trace_from(a, gap, c, uv, &traced, tols) {
+            traced.push(t);
+            steps.push(len);
+        }
+    }
+    // A partly touching curve's first touching probe can lie on a crossing close beside a
+    // branch point (at CHORDTOL 0.005, 0.017 off the contact), looking touching but tracing no
+    // contact; the curve, kept whole, then runs on along the contact past the branch point. Its
+    // other touching probes are tried too, but only where no traced contact reaches the curve
+    // (most seed curves are cut by one, and this costs nothing there).
+    for (c, probes, on) in partly {
+        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
+            continue;
+        }
+        for k in touches(*on).skip(1) {
+            if let Some((t, len)) = trace_from(a, gap, c, probes[k], &traced, tols) {
+                traced.push(t);
+                steps.push(len);
+                break;
+            }
+        }
+    }
+    (traced, steps)
+}
+
+/// The contact traced on the true surfaces from `uv`, a touching probe of the seed curve `c`,
+/// with `c`'s longest segment (the step along it); none where no contact traces from there, or
+/// where `c` or `uv` lies on one of the `traced` contacts or the contact found is one of them.
+/// `tols`: the refinement and chord tolerances and the contacts' nearness.
+fn trace_from(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    c: &Polyline3,
+    uv: DVec2,
+    traced: &[Polyline3],
+    (tol, chord_tol, near): (f64, f64, f64),
+) -> Option<(Polyline3, f64)> {
+    // A seed touching where a traced contact runs would trace that contact again (and beside a
+    // branch point, where the gap's extremum off the contact is within tol too, wander about
+    // it: seen from the plate, a second walk 18 long).
+    if c.points.len() < 2
+        || c.points.iter().all(|p| near_any(*p, traced, near))
+        || near_any(a.eval(uv), traced, near)
+    {
+        return None;
+    }
+    let len = c
+        .points
+        .windows(2)
+        .map(|w| w[0].distance(w[1]))
+        .fold(0.0, f64::max);
+    // A seed curve partly off the traced contacts (where a crossing runs into one, points within
+    // the tolerance of both surfaces stray farther from it) can trace one again.
+    let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, traced, near));
+    let t = contact_curve_near(a, gap, uv, len, tol, chord_tol).filter(fresh)?;
+    Some((t, len))
 }
 
 /// The crossings beside traced contacts, found in pieces and carried on along them.

@@ -91,7 +91,9 @@ impl<'a> Patch<'a> {
     /// inner edge by 1.4e-6. There the second-order one-sided difference is taken from the side
     /// `uv` lies on (the later one when on the crease, as the curves evaluate it). The
     /// creases are the surface's own, known from its curves, so a smooth surface pays nothing.
-    #[inline]
+    /// Always inlined (into `derivs` above all): left to the codegen units, it was inlined in
+    /// one build and called twice per `derivs` in the next, +0.7 % on contact_line.
+    #[inline(always)]
     fn deriv(&self, uv: DVec2, k: usize) -> DVec3 {
         let (mut a, mut b) = (uv, uv);
         a[k] -= H;
