@@ -31,6 +31,7 @@ pub mod polyline;
 pub mod quadspline;
 pub mod quadspline_fit;
 pub mod quadspline_query;
+pub mod root;
 pub mod surface;
 pub mod temple;
 pub mod temple_refine;

@@ -12,6 +12,7 @@ use super::super::refine::{assemble, mid, Patch};
 use super::line::{delta, speed_along, GapAt, MAX_NODES};
 use super::near_any;
 use crate::geom::mesh::Polyline3;
+use crate::geom::root::{illinois, At, Stop};
 use glam::{DVec2, DVec3};
 
 /// How far the scan looks across, and how densely along.
@@ -341,10 +342,10 @@ fn root_along(
 
 /// From `t0` (where `h` is `v0`, within the tolerance), the root a Newton step `step` points
 /// at, bracketed: the step doubled (up to 64 times its length) until `h` changes sign, then
-/// regula falsi (Illinois) to within [`FINE`]. A crossing is a simple root, where the gap
-/// changes sign; a contact a double one, where it does not: a step falling onto the contact
-/// finds no bracket, and the crossing is looked for the other way (beside a branch point `t0`
-/// can lie between the two); where neither way has one, `t0` is kept.
+/// regula falsi ([`illinois`]) to a bracket within [`FINE`]. A crossing is a simple root, where
+/// the gap changes sign; a contact a double one, where it does not: a step falling onto the
+/// contact finds no bracket, and the crossing is looked for the other way (beside a branch point
+/// `t0` can lie between the two); where neither way has one, `t0` is kept.
 fn onto_sign_change(h: &dyn Fn(f64) -> f64, (t0, v0): (f64, f64), step: f64) -> f64 {
     let mut far = None;
     'sides: for side in [1.0, -1.0] {
@@ -361,43 +362,12 @@ fn onto_sign_change(h: &dyn Fn(f64) -> f64, (t0, v0): (f64, f64), step: f64) -> 
             s *= 2.0;
         }
     }
-    let Some(mut hi) = far else {
+    let Some((t1, v1)) = far else {
         return t0;
     };
-    let mut lo = (t0, v0);
-    // Which end the last step replaced: the other's value is halved when it stays twice
-    // running (Illinois), so the bracket closes from both sides.
-    let mut kept = 0;
-    for _ in 0..60 {
-        if (hi.0 - lo.0).abs() <= FINE {
-            break;
-        }
-        let t = (lo.0 * hi.1 - hi.0 * lo.1) / (hi.1 - lo.1);
-        let v = h(t);
-        if v == 0.0 || !v.is_finite() {
-            return if v == 0.0 { t } else { lo.0 };
-        }
-        let side = if v.signum() == lo.1.signum() { 1 } else { 2 };
-        if side == kept {
-            // The other end stayed put twice running.
-            if side == 1 {
-                hi.1 *= 0.5;
-            } else {
-                lo.1 *= 0.5;
-            }
-        }
-        if side == 1 {
-            lo = (t, v);
-        } else {
-            hi = (t, v);
-        }
-        kept = side;
-    }
-    if lo.1.abs() <= hi.1.abs() {
-        lo.0
-    } else {
-        hi.0
-    }
+    let ends = [(t0, v0), (t1, v1)].map(|(t, f)| At { t, f, payload: () });
+    // A NaN on the way (none is known to happen) keeps `t0`, as where no bracket is found.
+    illinois(|t| Some((h(t), ())), ends, Stop::Width(FINE)).map_or(t0, |root| root.t)
 }
 
 /// How far (in parameters) [`root_along`]'s Newton is taken past a value within 0.01·tol: about

@@ -6,6 +6,7 @@
 //! that rounding. A tangent contact's gap has an even root, with no sign change to bracket.
 
 use super::{Node, Patch};
+use crate::geom::root::{illinois, At, Stop};
 use glam::{DVec2, DVec3};
 use std::cell::Cell;
 
@@ -76,8 +77,9 @@ pub(super) fn onto_crossing(
     if lo.1 .0.signum() == hi.1 .0.signum() {
         return None;
     }
-    let root = illinois(&at, lo, hi, 1e-3 * tol)?;
-    (root.1.residual <= tol).then_some(root.1)
+    let end = |(t, (f, payload)): (f64, (f64, Node))| At { t, f, payload };
+    let root = illinois(&at, [end(lo), end(hi)], Stop::Width(1e-3 * tol))?;
+    (root.payload.residual <= tol).then_some(root.payload)
 }
 
 /// The signed gap from `a` at `m`'s parameters moved by `du` to `b` along `nb` (b's unit normal
@@ -137,34 +139,4 @@ fn node_at(
         residual: dist,
     };
     (dist - signed.abs() <= tol && signed.is_finite()).then_some((signed, node))
-}
-
-/// The root of `f` between `x` and `y` (values of opposite signs) by the Illinois method, to
-/// within `eps` or where the value is zero: the nearer node of the last two.
-fn illinois(
-    f: &dyn Fn(f64) -> Option<(f64, Node)>,
-    x: (f64, (f64, Node)),
-    y: (f64, (f64, Node)),
-    eps: f64,
-) -> Option<(f64, Node)> {
-    let (mut p, mut fp) = (x.0, x.1 .0);
-    let (mut q, mut fq) = (y.0, y.1 .0);
-    let mut best = if fp.abs() <= fq.abs() { x.1 } else { y.1 };
-    for _ in 0..60 {
-        if (q - p).abs() <= eps || fq == 0.0 {
-            break;
-        }
-        let r = q - fq * (q - p) / (fq - fp);
-        let got = f(r)?;
-        if got.0.abs() < best.0.abs() {
-            best = got;
-        }
-        if got.0.signum() == fq.signum() {
-            fp *= 0.5;
-        } else {
-            (p, fp) = (q, fq);
-        }
-        (q, fq) = (r, got.0);
-    }
-    Some(best)
 }

@@ -11,11 +11,8 @@
 
 use super::newton::Node;
 use super::Patch;
+use crate::geom::root::{illinois, At, Stop};
 use glam::{DVec2, DVec3};
-
-/// Illinois steps at most: each at least halves the bracket's width every few steps, well
-/// below rounding in 60.
-const STEPS: usize = 60;
 
 /// `(uv, r)`, Newton's refinement from `start` of a seed point on the mesh edge `[va, vb]`, or,
 /// where Newton went the wrong way, the crossing between `va` and `vb` on `s` (when their gaps
@@ -79,9 +76,16 @@ pub(crate) fn within_edge_of(
         s.normalise(&mut q);
         q
     };
-    let gap = |t: f64| gap_of(s.eval(at(t)));
-    match illinois(gap, 0.01 * tol) {
-        Some((t, g)) if g.abs() <= tol => (at(t), g.abs()),
+    let sample = |t: f64| {
+        let q = at(t);
+        (gap_of(s.eval(q)), q)
+    };
+    let ends = [0.0, 1.0].map(|t| {
+        let (f, payload) = sample(t);
+        At { t, f, payload }
+    });
+    match illinois(|t| Some(sample(t)), ends, Stop::Value(0.01 * tol)) {
+        Some(root) if root.f.abs() <= tol => (root.payload, root.f.abs()),
         _ => (uv, r),
     }
 }
@@ -145,76 +149,4 @@ fn within_span(x: DVec3, along: DVec3, [va, vb]: [DVec3; 2]) -> bool {
     let across = d - t * d.dot(t);
     let (ca, cb) = (va.dot(across), vb.dot(across));
     (ca.min(cb)..=ca.max(cb)).contains(&x.dot(across))
-}
-
-/// A root of `f` on [0, 1] where `f(0)` and `f(1)` have opposite signs, to `|f| <= eps` (or
-/// the bracket's rounding): `(t, f(t))`. None without a sign change (or with a NaN).
-fn illinois(f: impl Fn(f64) -> f64, eps: f64) -> Option<(f64, f64)> {
-    // `b` is the latest point, `a` the other end of the bracket (either may be the larger).
-    let (mut a, mut b) = (0.0f64, 1.0f64);
-    let (mut fa, mut fb) = (f(a), f(b));
-    // A NaN end is no bracket.
-    if (fa * fb).partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
-        return None;
-    }
-    // The value at the best point (`fa` may be halved).
-    let mut best = if fa.abs() < fb.abs() {
-        (a, fa)
-    } else {
-        (b, fb)
-    };
-    for _ in 0..STEPS {
-        let (lo, hi) = (a.min(b), a.max(b));
-        let t = (a * fb - b * fa) / (fb - fa);
-        // Rounding may put the secant point on an end (or off the bracket): bisect instead.
-        let t = if t > lo && t < hi { t } else { 0.5 * (lo + hi) };
-        if t <= lo || t >= hi {
-            break;
-        }
-        let ft = f(t);
-        if ft.is_nan() {
-            return None;
-        }
-        if ft.abs() < best.1.abs() {
-            best = (t, ft);
-        }
-        if ft.abs() <= eps {
-            break;
-        }
-        if ft * fb < 0.0 {
-            (a, fa) = (b, fb);
-        } else {
-            // The end `a` kept again: halving its value moves the next secant point off it.
-            fa *= 0.5;
-        }
-        (b, fb) = (t, ft);
-    }
-    Some(best)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_root_found_is_the_one_between_the_ends() {
-        // Roots at 0.2 (between the ends) and 1.5 (beyond): Newton from 0.9, where the slope
-        // points to 1.5's side, would leave the bracket; Illinois stays in it.
-        let f = |t: f64| (t - 0.2) * (t - 1.5);
-        let (t, ft) = illinois(f, 1e-14).unwrap();
-        assert!((t - 0.2).abs() <= 1e-12 && ft.abs() <= 1e-14, "{t} {ft}");
-        // Illinois keeps converging where plain regula falsi stalls on one end.
-        let g = |t: f64| t.powi(8) - 0.5;
-        let (t, gt) = illinois(g, 1e-15).unwrap();
-        assert!(
-            (t - 0.5f64.powf(0.125)).abs() <= 1e-13 && gt.abs() <= 1e-15,
-            "{t} {gt}"
-        );
-    }
-
-    #[test]
-    fn no_sign_change_or_a_nan_end_is_no_bracket() {
-        assert!(illinois(|t| (t - 0.5).powi(2) + 1e-3, 1e-12).is_none());
-        assert!(illinois(|t| if t == 0.0 { f64::NAN } else { t }, 1e-12).is_none());
-    }
 }
