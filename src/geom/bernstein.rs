@@ -4,10 +4,11 @@
 //! Mørken & Reimers): the convex-hull property bounds the polynomial on an interval by its
 //! coefficients, and the variation-diminishing property (Descartes' rule of signs in Bernstein
 //! form) bounds the number of roots by the sign changes of the coefficients. An interval with
-//! one sign change and opposite end values holds exactly one root, found by safeguarded
-//! regula falsi (Illinois). Where the derivative has exactly one root the polynomial has one
-//! extremum, so both monotone halves are solved separately: two roots however close stay two,
-//! and an extremum within the tolerance of zero with no sign change is a tangency.
+//! one sign change and opposite end values holds exactly one root, found by Newton's method
+//! kept inside the shrinking bracket (bisecting where it leaves it). Where the derivative has
+//! exactly one root the polynomial has one extremum, so both monotone halves are solved
+//! separately: two roots however close stay two, and an extremum within the tolerance of zero
+//! with no sign change is a tangency.
 
 use std::ops::{Add, Mul};
 
