@@ -107,24 +107,45 @@ impl Changes {
 mod tests {
     use super::*;
 
+    /// Writes `text` to `file` (when given) and stamps it 3 ms before `since`, as the kernel's
+    /// coarse clock may.
+    fn save_stamped_before(file: &Path, text: Option<&str>, since: SystemTime) {
+        if let Some(text) = text {
+            std::fs::write(file, text).unwrap();
+        }
+        let f = std::fs::File::options().write(true).open(file).unwrap();
+        f.set_modified(since - Duration::from_millis(3)).unwrap();
+    }
+
+    /// A file `name` holding `text` in a new directory, watched (the directory kept alive by
+    /// the first).
+    fn watched(name: &str, text: &str) -> (tempfile::TempDir, PathBuf, Changes) {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join(name);
+        std::fs::write(&file, text).unwrap();
+        let mut c = Changes::new().unwrap();
+        c.watch(std::slice::from_ref(&file));
+        (dir, file, c)
+    }
+
+    /// `c.wait(files, since)` on another thread: what it returns, when it returns.
+    fn wait_apart(mut c: Changes, files: Vec<PathBuf>, since: SystemTime) -> mpsc::Receiver<bool> {
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(c.wait(&files, since, Duration::from_millis(20)));
+        });
+        rx
+    }
+
     /// A save timed before the run's start (the kernel's coarse clock lagging the fine one)
     /// made after the script's directory is watched is still seen. Without the watch before
     /// the run, the event is lost and the file's time says nothing changed: `wait` blocks.
     #[test]
     fn a_save_stamped_before_the_runs_start_is_seen_once_the_directory_is_watched() {
-        let dir = tempfile::tempdir().unwrap();
-        let lib = dir.path().join("lib.lsp");
-        std::fs::write(&lib, "(setq r 4)\n").unwrap();
-        let mut c = Changes::new().unwrap();
-        c.watch(std::slice::from_ref(&lib));
+        let (_dir, lib, c) = watched("lib.lsp", "(setq r 4)\n");
         let since = SystemTime::now();
-        std::fs::write(&lib, "(setq r 7)\n").unwrap();
-        let f = std::fs::File::options().write(true).open(&lib).unwrap();
-        f.set_modified(since - Duration::from_millis(3)).unwrap();
-        let (tx, rx) = mpsc::channel();
-        std::thread::spawn(move || {
-            let _ = tx.send(c.wait(&[lib], since, Duration::from_millis(20)));
-        });
+        save_stamped_before(&lib, Some("(setq r 7)\n"), since);
+        let rx = wait_apart(c, vec![lib], since);
         assert_eq!(rx.recv_timeout(Duration::from_secs(20)), Ok(true));
     }
 
@@ -134,21 +155,12 @@ mod tests {
     /// and `wait` blocked.
     #[test]
     fn a_loaded_file_in_a_new_directory_saved_during_the_run_is_seen_by_its_time() {
-        let dir = tempfile::tempdir().unwrap();
+        let (_dir, script, c) = watched("main.lsp", "(load \"lib\")\n");
         let other = tempfile::tempdir().unwrap();
-        let script = dir.path().join("main.lsp");
         let lib = other.path().join("lib.lsp");
-        std::fs::write(&script, "(load \"lib\")\n").unwrap();
-        let mut c = Changes::new().unwrap();
-        c.watch(std::slice::from_ref(&script));
         let since = SystemTime::now();
-        std::fs::write(&lib, "(setq r 7)\n").unwrap();
-        let f = std::fs::File::options().write(true).open(&lib).unwrap();
-        f.set_modified(since - Duration::from_millis(3)).unwrap();
-        let (tx, rx) = mpsc::channel();
-        std::thread::spawn(move || {
-            let _ = tx.send(c.wait(&[script, lib], since, Duration::from_millis(20)));
-        });
+        save_stamped_before(&lib, Some("(setq r 7)\n"), since);
+        let rx = wait_apart(c, vec![script, lib], since);
         assert_eq!(rx.recv_timeout(Duration::from_secs(20)), Ok(true));
     }
 
@@ -156,21 +168,13 @@ mod tests {
     /// re-run by its time, however recent: the watch's events cover it.
     #[test]
     fn an_unchanged_file_in_a_watched_directory_does_not_rerun_by_its_time() {
-        let dir = tempfile::tempdir().unwrap();
-        let lib = dir.path().join("lib.lsp");
-        std::fs::write(&lib, "(setq r 4)\n").unwrap();
-        let mut c = Changes::new().unwrap();
-        c.watch(std::slice::from_ref(&lib));
+        let (_dir, lib, c) = watched("lib.lsp", "(setq r 4)\n");
         let since = SystemTime::now();
-        let f = std::fs::File::options().write(true).open(&lib).unwrap();
-        f.set_modified(since - Duration::from_millis(3)).unwrap();
-        drop(f);
+        save_stamped_before(&lib, None, since);
+        // Setting the time is an event of its own; it is not a save, so it is let go.
         std::thread::sleep(Duration::from_millis(100));
         while c.rx.try_recv().is_ok() {}
-        let (tx, rx) = mpsc::channel();
-        std::thread::spawn(move || {
-            let _ = tx.send(c.wait(&[lib], since, Duration::from_millis(20)));
-        });
+        let rx = wait_apart(c, vec![lib], since);
         assert!(rx.recv_timeout(Duration::from_millis(500)).is_err());
     }
 }
