@@ -12,7 +12,8 @@ use std::cell::Cell;
 
 /// The point of the crossing through `m` (a point of both `a` and `b` within `tol`, the
 /// midpoint of the chord `p0p1`, where the surfaces' derivatives are about `cols`) on the
-/// line across the chord through it, in `a`: Newton's 1-D step on the signed gap from `a` to
+/// line through it in `a` along which the gap grows fastest (b's normal projected onto a's
+/// tangent plane: across the curve, whatever the chord's direction): Newton's 1-D step on the signed gap from `a` to
 /// `b` (its slope from the normals), and where the gap changes sign there or just beyond, the
 /// root bracketed by the Illinois method (or the step's point, where its gap is at the
 /// rounding). None where the step does not cut the gap eightfold
@@ -31,8 +32,14 @@ pub(super) fn onto_crossing(
     // (Newton's point may be crawled off it by more than the chord is long, deep in densify).
     let reach = 4.0 * (chord.length() + (m.point - p0).cross(chord).length() / chord.length());
     let [su, sv, bu, bv] = cols;
-    let across = su.cross(sv).cross(chord).try_normalize()?;
     let nb = bu.cross(bv).try_normalize()?;
+    let na = su.cross(sv).try_normalize()?;
+    // Across the curve, not the chord: beside a branch point a chord's end can itself be off
+    // the curve, and a line square to that chord then ran almost along the crossing (which
+    // leaves the contact nearly square to it there), where the gap hardly changes; the probe
+    // below took it for a contact's, and the point stayed 1.7e-5 off. Along a good chord the
+    // two directions agree (the curve's tangent is a's normal × b's).
+    let across = (nb - na * na.dot(nb)).try_normalize()?;
     // The parameter direction whose image is `across` (unit speed in space).
     let (e, f, g) = (su.dot(su), su.dot(sv), sv.dot(sv));
     let det = e * g - f * f;
