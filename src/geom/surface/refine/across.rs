@@ -54,8 +54,10 @@ pub(super) fn onto_crossing(
     let g0 = (a.eval(m.uv[0]) - b.eval(m.uv[1])).dot(nb);
     let step = -g0 / across.dot(nb);
     // A gap within a few roundings says nothing of where the root is (beside a branch point
-    // the surfaces are that close over a stretch as wide as the step).
-    if g0.abs() <= 8.0 * noise || !(step.is_finite() && step.abs() <= reach) {
+    // the surfaces are that close over a stretch as wide as the step). `noise` bounds it from
+    // the surfaces' sizes; where the gap is under that bound its own rounding is read.
+    let in_noise = g0.abs() <= 8.0 * noise && g0.abs() <= 8.0 * gap_noise(a, b, m, (cols, nb), g0);
+    if in_noise || !(step.is_finite() && step.abs() <= reach) {
         return None;
     }
     // Most points here are a contact's (Newton crawls onto its double zero too): told first by
@@ -118,6 +120,31 @@ fn probe_at(
 /// nothing.
 pub(super) fn rounding(a: &Patch, b: &Patch) -> f64 {
     4.0 * f64::EPSILON * a.scale().max(b.scale())
+}
+
+/// The rounding of the gap `g0` from `a` to `b` along `nb` at `m` (the surfaces' derivatives
+/// there `cols`), read from the gap itself: each parameter nudged by two ulps in turn, the gap's
+/// change beyond what the derivative predicts is rounding, and its largest, doubled, bounds it.
+/// [`rounding`] takes it from the surfaces' sizes, which beside a small point of a large surface
+/// (a crossing at r = 2 on an 8×8 plate: 1e-14, where the gap's own is 4e-16) hides a gap
+/// that still tells where its root is.
+fn gap_noise(a: &Patch, b: &Patch, m: &Node, (cols, nb): ([DVec3; 4], DVec3), g0: f64) -> f64 {
+    let [su, sv, bu, bv] = cols;
+    let mut spread = 0.0_f64;
+    for (k, col) in [su, sv, -bu, -bv].into_iter().enumerate() {
+        let mut uv = m.uv;
+        let x = &mut uv[k / 2][k % 2];
+        let before = *x;
+        *x = x.next_up().next_up();
+        let h = *x - before;
+        let off = ((a.eval(uv[0]) - b.eval(uv[1])).dot(nb) - g0 - h * col.dot(nb)).abs();
+        // Not a number (a point past a domain's end): the sizes' bound stands.
+        if !off.is_finite() {
+            return f64::INFINITY;
+        }
+        spread = spread.max(off);
+    }
+    2.0 * spread.max(f64::EPSILON * g0.abs())
 }
 
 /// The signed gap from `a` at `ua` to `b` (its nearest point searched from `warm`, which it
