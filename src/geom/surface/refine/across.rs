@@ -13,13 +13,13 @@ use std::cell::Cell;
 /// The point of the crossing through `m` (a point of both `a` and `b` within `tol`, the
 /// midpoint of the chord `p0p1`, where the surfaces' derivatives are about `cols`) on the
 /// line through it in `a` along which the gap grows fastest (b's normal projected onto a's
-/// tangent plane: across the curve, whatever the chord's direction): Newton's 1-D step on the signed gap from `a` to
-/// `b` (its slope from the normals), and where the gap changes sign there or just beyond, the
-/// root bracketed by the Illinois method (or the step's point, where its gap is at the
-/// rounding). None where the step does not cut the gap eightfold
-/// (a contact's even root: it cuts it fourfold, and the gap keeps its sign), where the line
-/// leaves either surface, or where the root would be farther than four times the chord's
-/// length and the point's distance from it (another curve's root).
+/// tangent plane: across the curve, whatever the chord's direction): Newton's 1-D step on the
+/// signed gap from `a` to `b` (its slope from the normals), and where the gap changes sign
+/// there or just beyond, the root bracketed by the Illinois method (or the step's point, where
+/// its gap is at the rounding). None where the step does not cut the gap eightfold (a
+/// contact's even root: it cuts it fourfold, and the gap keeps its sign), where the line leaves
+/// either surface, or where the root would be farther than four times the chord's length and
+/// the point's distance from it (another curve's root).
 pub(super) fn onto_crossing(
     a: &Patch,
     b: &Patch,

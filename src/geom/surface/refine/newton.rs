@@ -48,7 +48,7 @@ pub(super) fn newton_pair_mid(
     uv: [DVec2; 2],
     tol: f64,
 ) -> (Node, Option<[DVec3; 4]>) {
-    let (node, cols, _) = newton_pair_run(a, b, uv, [[false; 2]; 2], tol);
+    let (node, cols) = newton_pair_run(a, b, uv, [[false; 2]; 2], tol);
     // No shortcut for a residual falling about fourfold a step (a contact's double zero): beside
     // a branch point, where the gap is near a triple root, a crossing's point falls so too
     // (3.85-fold, left 1.6e-6 off at 1.5e-2 from an edge); `across`'s probe tells contacts.
@@ -66,15 +66,15 @@ pub(super) fn newton_pair_mid(
     (node, (!sure).then_some(cols))
 }
 
-/// [`newton_pair_held`], the surfaces' derivatives (unheld) at the last point Newton stepped
-/// from, and its last step (length in space, residual before it); None where it took no step.
+/// [`newton_pair_held`], with the surfaces' derivatives (unheld) at the last point Newton
+/// stepped from (None where it took no step).
 fn newton_pair_run(
     a: &Patch,
     b: &Patch,
     mut uv: [DVec2; 2],
     hold: [[bool; 2]; 2],
     tol: f64,
-) -> (Node, Option<[DVec3; 4]>, Option<(f64, f64)>) {
+) -> (Node, Option<[DVec3; 4]>) {
     let mut fixed = hold;
     let mut derivs = None;
     let mut best: Option<Node> = None;
@@ -129,7 +129,7 @@ fn newton_pair_run(
         point: a.eval(uv[0]),
         residual: f64::INFINITY,
     });
-    (node, derivs, last)
+    (node, derivs)
 }
 
 /// Whether Newton, its residual now `r` (within 0.01·`tol`), is to go on: where its `last` step
