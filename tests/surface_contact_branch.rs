@@ -238,13 +238,7 @@ fn off_both(p: &DVec3, (d0, d1): (f64, f64), k: f64) -> [f64; 2] {
 /// debug build).
 fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
     let s = patch(d0, d1);
-    let plate = Surface::plane(vec![
-        DVec3::new(-4.0, -4.0, 0.0),
-        DVec3::new(4.0, -4.0, 0.0),
-        DVec3::new(4.0, 4.0, 0.0),
-        DVec3::new(-4.0, 4.0, 0.0),
-    ])
-    .unwrap();
+    let plate = plate();
     let chord = 1e-6;
     let runs = section_and_both_orders("patch", &s, &plate, seed, chord);
     for (name, run) in runs
@@ -256,6 +250,36 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
         check(&name, &r, (d0, d1), MEET);
         let again = run();
         assert_same_bits(&name, &again, &r);
+    }
+}
+
+/// The plate z = 0, a square wider than the patch.
+fn plate() -> Surface {
+    Surface::plane(vec![
+        DVec3::new(-4.0, -4.0, 0.0),
+        DVec3::new(4.0, -4.0, 0.0),
+        DVec3::new(4.0, 4.0, 0.0),
+        DVec3::new(-4.0, 4.0, 0.0),
+    ])
+    .unwrap()
+}
+
+/// [`check`] on each run of [`section_and_both_orders`] of `patch(d0, d1)` against [`plate`] at
+/// `seed` (curves densified within 1e-6, each run twice for the same bits), the name of each
+/// failing run pushed to `failed` (the check's message goes to stderr from the panic).
+fn list_failing_runs(failed: &mut Vec<String>, tag: &str, (d0, d1): (f64, f64), seed: f64) {
+    let s = patch(d0, d1);
+    let plate = plate();
+    for (name, run) in section_and_both_orders("patch", &s, &plate, seed, 1e-6) {
+        let name = format!("{tag} seed {seed} {name}");
+        let once = || {
+            let r = run();
+            check(&name, &r, (d0, d1), MEET);
+            assert_same_bits(&name, &run(), &r);
+        };
+        if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
+            failed.push(name);
+        }
     }
 }
 
@@ -461,4 +485,65 @@ fn a_crossing_through_a_curved_contact_near_an_edge_comes_back_whole_with_it() {
         }
     }
     assert!(failed.is_empty(), "failing runs: {failed:?}");
+}
+
+/// How wide the near-edge family is: the test above over a wider grid, s ∈ {2.5e-3, 5e-3,
+/// 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2} along the contact from the edge θ = 0 (d running by 16 over
+/// the quarter turn), the branch point on the edge (d = 0..0.3, 0.3..0, 0..16, 16..0) and the
+/// inner one (−0.1..0.3), each at seeds 1e-2, 5e-3 and 1e-3 in the section and both orders:
+/// 108 runs (about 20 s in a release build).
+///
+/// On c7e144c 22 fail. Nine were every run at s = 2e-2: a seed curve of the crossing held a
+/// lens of the contact (two sides of the meshes' section closer than a cell, from the branch
+/// point out to θ ≈ 0.28 and back) refined onto the contact out and back, and `regroup` kept it
+/// whole, none of its first, middle and last points touching: the crossing came back 1.09
+/// too long (the contact lost from the section at seed 1e-2), or with a closed 1.145-long
+/// loop cut from it by `join` (seed 1e-3). `regroup` now probes such a curve where it folds
+/// back (`fold_probes`), and all nine are mended; three runs at s = 2e-2 then fail on what the
+/// spur had hidden (below).
+///
+/// Open (16 of 108), by what the check says:
+/// - a crossing point beside the branch point off the closed form, all in the section:
+///   s = 1.5e-2 seed 5e-3 (6.5e-6 off at W = −3.4e-4), s = 2e-2 seed 5e-3 (9.0e-6 at
+///   W = −3.3e-4), s = 3e-2 seed 5e-3 (1.0e-5 at W = 3.7e-4), s = 1e-2 seed 1e-2 (3.8e-8 at
+///   W = −4.5e-3), s = 3e-2 seed 1e-2 (5.2e-8 at W = −5.5e-3), s = 2e-2 seed 1e-3 (2.8e-8 at
+///   W = 4.6e-3);
+/// - the contact's end on the far edge θ = π/2 off r = 2, plate ∩ patch: s = 3e-2 seed 1e-2
+///   (2.02e-8, allowed 2e-8), s = 2e-2 seed 1e-3 (2.8e-8);
+/// - a seed curve along the contact and on along the stub, all three probes touching (the stub
+///   parts from the plane at a sine under 1e-3), kept whole beside the traced contact: s =
+///   2.5e-3 seed 1e-3, all three runs (three curves, the contact twice);
+/// - a stray piece of the crossing beside the branch point: s = 1.5e-2 seed 1e-2, section (the
+///   stub out and back, 50 points, the test above); s = 1.5e-2 seed 1e-3, plate ∩ patch (a
+///   6-point copy of the stub's end at the branch point, the test above); d = 0..16 seed 1e-3,
+///   plate ∩ patch (a 15-point piece of the crossing, 0.056 long, beside the branch point);
+/// - s = 5e-2 seed 5e-3, plate ∩ patch: the crossing 12.26 long (5.16), made so by `regroup`;
+/// - d = 0..16 seed 5e-3, plate ∩ patch: no curve taken for the crossing. Their shared end,
+///   the branch point solved 1.4e-9 from (2, 0, 0), is 2.4e-9 off the crossing in r, where
+///   `check_sloped`'s `on_line` allows `MEET` (2e-9) measured in r; across the steep crossing
+///   (r′/r about 5 there) it is 4.6e-10 off. The check, not the curves, may be at fault here.
+#[test]
+#[ignore = "open: 16 of 108 runs fail (see doc)"]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole() {
+    let mut failed = Vec::new();
+    for seed in [1e-2, 5e-3, 1e-3] {
+        for s in [2.5e-3, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2] {
+            let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
+            list_failing_runs(&mut failed, &format!("s {s}"), (d0, d0 + 16.0), seed);
+        }
+        for d in [
+            (0.0, 0.3),
+            (0.3, 0.0),
+            (0.0, 16.0),
+            (16.0, 0.0),
+            (-0.1, 0.3),
+        ] {
+            list_failing_runs(&mut failed, &format!("d {}..{}", d.0, d.1), d, seed);
+        }
+    }
+    assert!(
+        failed.is_empty(),
+        "failing runs ({}): {failed:?}",
+        failed.len()
+    );
 }

@@ -17,6 +17,7 @@
 
 mod alongside;
 mod branch;
+mod fold;
 mod line;
 mod ridge;
 mod seeds;
@@ -26,6 +27,7 @@ mod tip;
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use branch::contact_curve_near;
+use fold::{fold_probes, runs_through, Probed};
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
 use seeds::Lows;
@@ -263,8 +265,9 @@ fn regroup(
     let mut touching: Vec<(Polyline3, DVec2)> = Vec::new();
     // Touching at one or two of the probes only (which, of the first, middle and last point):
     // a crossing running into a touch, or one seed curve that ran along a contact and then off
-    // along a crossing leaving it.
-    let mut partly: Vec<(Polyline3, [DVec2; 3], [bool; 3])> = Vec::new();
+    // along a crossing leaving it. Or at none, but where it folds back (see `fold_probes`).
+    let mut partly: Vec<Probed> = Vec::new();
+    let near = beside(a, tol, chord_tol);
     for c in curves {
         let n = c.points.len();
         if n == 0 {
@@ -273,12 +276,24 @@ fn regroup(
         let probes = [c.points[0], c.points[n / 2], c.points[n - 1]].map(|p| a.project(p, None));
         let on = probes.map(tangent);
         match on.iter().position(|t| *t) {
-            None => kept.push(c),
+            None => match fold_probes(a, tangent, &c, near) {
+                Some((probes, on, folds)) => partly.push(Probed {
+                    c,
+                    probes,
+                    on,
+                    folds,
+                }),
+                None => kept.push(c),
+            },
             Some(_) if on.iter().all(|t| *t) => touching.push((c, probes[1])),
-            Some(_) => partly.push((c, probes, on)),
+            Some(_) => partly.push(Probed {
+                c,
+                probes: probes.to_vec(),
+                on: on.to_vec(),
+                folds: Vec::new(),
+            }),
         }
     }
-    let near = beside(a, tol, chord_tol);
     let tols = (tol, chord_tol, near);
     let (mut traced, steps) = trace_contacts(a, gap, &touching, &partly, tols);
     // The pieces a traced contact covers go; any other stays.
@@ -290,8 +305,13 @@ fn regroup(
     );
     // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
     let mut cut: Vec<(Polyline3, [bool; 2])> = Vec::new();
-    for (c, _, _) in partly {
-        if c.points.iter().any(|p| near_any(*p, &traced, near)) {
+    for Probed { c, folds, .. } in partly {
+        // A curve probed at its folds only is cut only where a contact runs through a fold: a
+        // true lens's tip, turning into a contact, is kept whole, as before.
+        let spur = |q: &DVec3| traced.iter().any(|t| runs_through(t, *q, near));
+        if !folds.is_empty() && !folds.iter().any(spur) {
+            kept.push(c);
+        } else if c.points.iter().any(|p| near_any(*p, &traced, near)) {
             cut.extend(off_curves(&c, &traced, near));
         } else {
             kept.push(c);
@@ -321,18 +341,26 @@ fn trace_contacts(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
     touching: &[(Polyline3, DVec2)],
-    partly: &[(Polyline3, [DVec2; 3], [bool; 3])],
+    partly: &[Probed],
     tols: (f64, f64, f64),
 ) -> (Vec<Polyline3>, Vec<f64>) {
     let near = tols.2;
     let mut traced: Vec<Polyline3> = Vec::new();
     let mut steps: Vec<f64> = Vec::new();
-    let touches = |on: [bool; 3]| (0..3).filter(move |&k| on[k]);
+    fn touches(on: &[bool]) -> impl Iterator<Item = usize> + '_ {
+        (0..on.len()).filter(move |&k| on[k])
+    }
+    // A contact traced from a fold counts only where it runs on through one.
+    let through = |t: &Polyline3, folds: &[DVec3]| {
+        folds.is_empty() || folds.iter().any(|q| runs_through(t, *q, near))
+    };
     let first = partly
         .iter()
-        .filter_map(|(c, probes, on)| Some((c, probes[touches(*on).next()?])));
-    for (c, uv) in touching.iter().map(|(c, uv)| (c, *uv)).chain(first) {
-        if let Some((t, len)) = trace_from(a, gap, c, uv, &traced, tols) {
+        .filter_map(|x| Some((&x.c, x.probes[touches(&x.on).next()?], &x.folds[..])));
+    let all = touching.iter().map(|(c, uv)| (c, *uv, &[][..]));
+    for (c, uv, folds) in all.chain(first) {
+        let found = trace_from(a, gap, c, uv, &traced, tols);
+        if let Some((t, len)) = found.filter(|(t, _)| through(t, folds)) {
             traced.push(t);
             steps.push(len);
         }
@@ -342,12 +370,19 @@ fn trace_contacts(
     // contact; the curve, kept whole, then runs on along the contact past the branch point. Its
     // other touching probes are tried too, but only where no traced contact reaches the curve
     // (most seed curves are cut by one, and this costs nothing there).
-    for (c, probes, on) in partly {
+    for Probed {
+        c,
+        probes,
+        on,
+        folds,
+    } in partly
+    {
         if c.points.iter().any(|p| near_any(*p, &traced, near)) {
             continue;
         }
-        for k in touches(*on).skip(1) {
-            if let Some((t, len)) = trace_from(a, gap, c, probes[k], &traced, tols) {
+        for k in touches(on).skip(1) {
+            let found = trace_from(a, gap, c, probes[k], &traced, tols);
+            if let Some((t, len)) = found.filter(|(t, _)| through(t, folds)) {
                 traced.push(t);
                 steps.push(len);
                 break;
