@@ -487,6 +487,21 @@ fn a_crossing_through_a_curved_contact_near_an_edge_comes_back_whole_with_it() {
     assert!(failed.is_empty(), "failing runs: {failed:?}");
 }
 
+/// A crossing through a curved contact 2e-2 along it from the patch's edge θ = 0 (the near-edge
+/// family below), where the meshes' section holds a lens along the contact beside the branch
+/// point: the crossing's seed curve runs out along the contact to θ ≈ 0.28 and back, none of its
+/// first, middle and last points touching. On c7e144c these four runs failed: at seed 1e-2 the
+/// section came back as one curve (the crossing 6.18 long, 1.09 of it the contact out and
+/// back; the rest of the contact lost), both orders with the crossing so and the contact;
+/// at seed 5e-3, plate ∩ patch, the same.
+#[test]
+fn a_crossing_whose_seed_runs_along_the_contact_and_back_comes_back_whole_with_it() {
+    let d0 = -16.0 * (0.5 * 2e-2) / FRAC_PI_2;
+    for (seed, plate_first) in [(1e-2, false), (1e-2, true), (5e-3, true)] {
+        both_curves_come_back((d0, d0 + 16.0), seed, plate_first);
+    }
+}
+
 /// How wide the near-edge family is: the test above over a wider grid, s ∈ {2.5e-3, 5e-3,
 /// 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2} along the contact from the edge θ = 0 (d running by 16 over
 /// the quarter turn), the branch point on the edge (d = 0..0.3, 0.3..0, 0..16, 16..0) and the
