@@ -296,15 +296,24 @@ fn regroup(
     }
     let tols = (tol, chord_tol, near);
     let (mut traced, steps) = trace_contacts(a, gap, &touching, &partly, tols);
-    // The pieces a traced contact covers go; any other stays.
-    kept.extend(
-        touching
-            .into_iter()
-            .map(|(c, _)| c)
-            .filter(|c| !c.points.iter().all(|p| near_any(*p, &traced, near))),
-    );
-    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
+    // The pieces a traced contact covers go; any other stays. Of one it covers in part, the
+    // stretches off it are a crossing's: a seed curve along the contact and on along a
+    // crossing leaving it nearly tangent (the stub beside a branch point, parting at a sine
+    // under `PARALLEL`) touches at all three probes.
     let mut cut: Vec<(Polyline3, [bool; 2])> = Vec::new();
+    for (c, _) in touching {
+        let on: Vec<bool> = c
+            .points
+            .iter()
+            .map(|p| near_any(*p, &traced, near))
+            .collect();
+        if !on.contains(&true) {
+            kept.push(c);
+        } else if on.contains(&false) {
+            cut.extend(off_curves(&c, &traced, near));
+        }
+    }
+    // Of a partly touching curve, the stretches off the contacts: pieces of a crossing.
     for Probed { c, folds, .. } in partly {
         // A curve probed at its folds only is cut only where a contact runs through a fold: a
         // true lens's tip, turning into a contact, is kept whole, as before.
