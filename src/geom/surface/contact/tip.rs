@@ -40,9 +40,9 @@ const MAX_NODES: usize = 1 << 12;
 /// `c` with its chords that were left loose (among `loose`) and are off the surfaces (`off`, the
 /// distance to the farther, beyond `tol + chord_tol` at the chord's midpoint) carried round the
 /// tongue of the crossing or across the tip of the lens each cuts, and the contacts traced from
-/// the lenses' tips. A chord that does neither is left as it is: a seed curve that runs along a contact and then off along a crossing
-/// leaving it has one too, and `regroup` takes such a curve apart (cut there, it came back as a
-/// second copy of the crossing's end).
+/// the lenses' tips. A chord that does neither is left as it is: a seed curve that runs along a
+/// contact and then off along a crossing leaving it has one too, and `regroup` takes such a
+/// curve apart (cut there, it came back as a second copy of the crossing's end).
 pub(crate) fn mend(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,

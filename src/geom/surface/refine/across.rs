@@ -174,3 +174,185 @@ fn node_at(
     };
     (dist - signed.abs() <= tol && signed.is_finite()).then_some((signed, node))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::surface::Surface;
+    use std::f64::consts::{PI, TAU};
+
+    const R: f64 = 2.0;
+
+    /// A ball of radius 2 about `c` and a square plate of half-width `w` through `c`, square
+    /// to `n` (its boundary wound about `n`, so its normal is `n`).
+    fn ball_and_plate(c: DVec3, n: DVec3, w: f64) -> (Surface, Surface) {
+        let e1 = n.cross(DVec3::X).normalize();
+        let e2 = n.cross(e1);
+        let corners = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+        let plate = Surface::plane(corners.map(|(s, t)| c + w * (s * e1 + t * e2)).to_vec());
+        (Surface::sphere(c, R).unwrap(), plate.unwrap())
+    }
+
+    /// What `onto_crossing` hands `gap_noise` at the ball's point at height `z` over the plate
+    /// (the gap's true value, but for the parameters' rounding) and angle `t` about `n`: the
+    /// node (the plate's foot projected), the columns, the plate's normal (from difference
+    /// quotients: 1e-12 off `n` beside a 200-wide plate) and the gap computed as there.
+    fn at(a: &Patch, b: &Patch, n: DVec3, (t, z): (f64, f64)) -> Sample {
+        let e1 = n.cross(DVec3::X).normalize();
+        let e2 = n.cross(e1);
+        let d = (R * R - z * z).sqrt() * (t.cos() * e1 + t.sin() * e2) + z * n;
+        let lon = d.y.atan2(d.x).rem_euclid(TAU) / TAU;
+        let ua = DVec2::new(lon, (d.z / R).asin() / PI + 0.5);
+        let pa = a.eval(ua);
+        let ub = b.project(pa, None);
+        let pb = b.eval(ub);
+        let ((su, sv), (bu, bv)) = (a.derivs(ua), b.derivs(ub));
+        let nb = bu.cross(bv).normalize();
+        assert!(nb.distance(n) <= 1e-9, "{nb} vs {n}");
+        let m = Node {
+            uv: [ua, ub],
+            point: 0.5 * (pa + pb),
+            residual: pa.distance(pb),
+        };
+        let g0 = (pa - pb).dot(nb);
+        Sample {
+            m,
+            cols: [su, sv, bu, bv],
+            nb,
+            g0,
+        }
+    }
+
+    struct Sample {
+        m: Node,
+        cols: [DVec3; 4],
+        nb: DVec3,
+        g0: f64,
+    }
+
+    impl Sample {
+        fn noise(&self, a: &Patch, b: &Patch) -> f64 {
+            gap_noise(a, b, &self.m, (self.cols, self.nb), self.g0)
+        }
+
+        /// The gap's rounding seen independently: each parameter moved by up to 16 ulps each
+        /// way, the gap's change less the closed form's (the ball's derivatives along the
+        /// plate's normal; the plate's own are square to it), at its largest.
+        fn scatter(&self, a: &Patch, b: &Patch) -> f64 {
+            let [ua, _] = self.m.uv;
+            let (lon, lat) = (TAU * ua.x, PI * (ua.y - 0.5));
+            let du = TAU * R * lat.cos() * DVec3::new(-lon.sin(), lon.cos(), 0.0);
+            let dv = PI * R * DVec3::new(-lat.sin() * lon.cos(), -lat.sin() * lon.sin(), lat.cos());
+            let slopes = [du.dot(self.nb), dv.dot(self.nb), 0.0, 0.0];
+            let mut most = 0.0_f64;
+            for (k, slope) in slopes.into_iter().enumerate() {
+                for j in -16_i32..=16 {
+                    let mut uv = self.m.uv;
+                    let x = &mut uv[k / 2][k % 2];
+                    let before = *x;
+                    for _ in 0..j.abs() {
+                        *x = if j > 0 { x.next_up() } else { x.next_down() };
+                    }
+                    let h = *x - before;
+                    let g = (a.eval(uv[0]) - b.eval(uv[1])).dot(self.nb);
+                    most = most.max((g - self.g0 - h * slope).abs());
+                }
+            }
+            most
+        }
+    }
+
+    #[test]
+    fn beside_a_plate_square_to_an_axis_the_noise_is_the_balls_rounding_not_the_plates_size() {
+        // The plate's z is exact (0.3 in every point); the gap's rounding is the ball's, a
+        // fraction of an ulp of its coordinates (about 5e-17), where the sizes' bound of a
+        // 200-wide plate is 2.5e-13.
+        let (c, n) = (DVec3::new(0.1, 0.2, 0.3), DVec3::Z);
+        let (ball, plate) = ball_and_plate(c, n, 100.0);
+        let (a, b) = (Patch::new(&ball), Patch::new(&plate));
+        for t in [0.1, 0.9, 2.0, 3.3, 5.5] {
+            for z in [0.0, 1e-12, -3e-13] {
+                let s = at(&a, &b, n, (t, z));
+                let noise = s.noise(&a, &b);
+                let ulp = f64::EPSILON * s.m.point.abs().max_element();
+                // Within eight times the bound (onto_crossing's test) lie the gap's error
+                // from its true value at the parameters taken (not quite `z`: the ball's
+                // v is rounded, by up to 3.5e-16 in the gap) and its scatter over 16 ulps of
+                // each parameter.
+                let exact = R * (PI * (s.m.uv[0].y - 0.5)).sin();
+                assert!(
+                    (s.g0 - exact).abs() <= 8.0 * noise,
+                    "{t} {z}: {} {noise:e}",
+                    s.g0
+                );
+                assert!(s.scatter(&a, &b) <= 8.0 * noise, "{t} {z}: {noise:e}");
+                // Yet it is the gap's rounding: under an ulp of the point's coordinates.
+                assert!(noise > 0.0 && noise <= ulp, "{t} {z}: {noise:e} vs {ulp:e}");
+                assert!(noise <= 1e-3 * rounding(&a, &b), "{t} {z}: {noise:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_true_gap_of_1e_12_beside_a_large_plate_is_not_taken_for_noise() {
+        // 1e-12 is within eight times the sizes' bound of a 200-wide plate (2.5e-13), which
+        // alone said nothing of where the root is; the gap's own rounding tells it.
+        let (c, n) = (DVec3::new(0.1, 0.2, 0.3), DVec3::Z);
+        let (ball, plate) = ball_and_plate(c, n, 100.0);
+        let (a, b) = (Patch::new(&ball), Patch::new(&plate));
+        for t in [0.1, 0.9, 2.0, 3.3, 5.5] {
+            let s = at(&a, &b, n, (t, 1e-12));
+            assert!((s.g0 - 1e-12).abs() <= 1e-15, "{t}: {:e}", s.g0);
+            assert!(s.g0.abs() <= 8.0 * rounding(&a, &b));
+            let noise = s.noise(&a, &b);
+            assert!(s.g0.abs() > 8.0 * noise, "{t}: {:e} {noise:e}", s.g0);
+        }
+    }
+
+    /// Open defect: one nudge of two ulps per parameter can land where the gap's rounding
+    /// happens to cancel (the plate's comes in steps of 9.5e-16 here, and is 0 at +2 ulps of
+    /// both its parameters at t = 2), and the bound comes out far under the rounding: at 45 of
+    /// these 400 points of the crossing 8·gap_noise is under the gap's scatter over 16 ulps, by
+    /// up to 257-fold. On a grid of t = 0.0157·i (400 points): 37 under-read, and at 44 the
+    /// computed gap itself (truly 0 but for the parameters' rounding) exceeds 8·gap_noise,
+    /// where `onto_crossing` takes rounding for a gap and steps on it; the same read from
+    /// nudges of 1, 2 and 3 ulps each way (24 evaluations, not 4) under-read at none. Beside a
+    /// 4-wide plate 1 point of 400 under-reads; beside a plate square to an axis none.
+    #[test]
+    #[ignore = "open defect: gap_noise's single two-ulp nudge per parameter under-reads the \
+                gap's rounding beside a tilted 200-wide plate (45 of 400 points, up to 257-fold)"]
+    fn beside_a_tilted_plate_the_plates_own_rounding_is_read() {
+        // A plate square to (1, 2, 3) has its points summed from coordinates of 100: the gap
+        // at a point of the crossing is computed to a few times 1e-15, over 4 ulps of the
+        // point's coordinates, and moves by as much from one ulp of the plate's parameters to
+        // the next. That must be taken for noise, not for a gap.
+        let (c, n) = (
+            DVec3::new(0.1, 0.2, 0.3),
+            DVec3::new(1.0, 2.0, 3.0).normalize(),
+        );
+        let (ball, plate) = ball_and_plate(c, n, 100.0);
+        let (a, b) = (Patch::new(&ball), Patch::new(&plate));
+        let (mut most, mut under, mut worst) = (0.0_f64, Vec::new(), 0.0_f64);
+        for i in 0..400 {
+            let t = f64::from(i) * TAU / 400.0;
+            let s = at(&a, &b, n, (t, 0.0));
+            let (noise, scatter) = (s.noise(&a, &b), s.scatter(&a, &b));
+            most = most.max(scatter / (f64::EPSILON * s.m.point.abs().max_element()));
+            assert!(noise <= rounding(&a, &b), "{t}: {noise:e}");
+            worst = worst.max(scatter / noise);
+            if scatter > 8.0 * noise {
+                under.push(format!("t {t:.4}: scatter {scatter:.2e} noise {noise:.2e}"));
+            }
+        }
+        assert!(
+            most > 4.0,
+            "the plate's rounding is not over the point's: {most}"
+        );
+        let list = under.join("\n");
+        assert!(
+            under.is_empty(),
+            "{} of 400, to {worst:.0}-fold:\n{list}",
+            under.len()
+        );
+    }
+}
