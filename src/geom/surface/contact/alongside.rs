@@ -430,7 +430,15 @@ pub(super) fn march(
         });
         match good {
             Some((c, p)) => {
-                t = delta(a, uv, c).normalize();
+                // A node is placed only to within the tolerance (near a branch point, where
+                // the march is refused and its step halved down to 0.01·tol, by the gap's
+                // rounding): a step shorter than that says nothing of the way the crossing
+                // runs, and taking its chord for the way on turned a march back along the
+                // crossing it came up (s = 1.5e-2: a stub traced there and back, 0.154 long).
+                let moved = delta(a, uv, c);
+                if moved.length() * speed > tol {
+                    t = moved.normalize();
+                }
                 uv = c;
                 nodes.push((c, p));
                 if edge.is_some() {
