@@ -40,8 +40,8 @@ pub(super) fn newton_pair_held(
 /// where the curve is, and the point stands). Towards a branch point the surfaces part so
 /// slowly across the curve that a point within 1e-11 of both can lie 1.7e-5 off it:
 /// `min_norm`'s damping caps the steps across to about the residual over √λ (6.7e-7 a step,
-/// the residual falling 4 % a step), and Newton stops crawling. The derivatives are taken at
-/// the point (those Newton last took, from its last start, first tell the points it is sure of).
+/// the residual falling 4 % a step), and Newton stops crawling. The derivatives are those Newton
+/// last took (from its last start), or taken at the point where those say it lies far off.
 pub(super) fn newton_pair_mid(
     a: &Patch,
     b: &Patch,
@@ -60,25 +60,28 @@ pub(super) fn newton_pair_mid(
     let Some(cols) = cols else {
         return (node, None);
     };
-    if sure(&node, cols, tol) {
-        return (node, None);
+    let old = sine(cols);
+    // Not sure by the derivatives at Newton's last start. Its last step can be long beside a
+    // contact (from a chord's parameter midpoint on one surface onto the other), and where the
+    // surfaces' angle grows with the distance from the contact, as beside a branch point, those
+    // had it 1.5e4 times too small: `across` then stepped 1.7e-2 across from a contact's point,
+    // onto another crossing (i13c-s18). A step across they give longer than a chord whose
+    // sagitta is `tol` (crawled points lie 1e-4 off at most; stale angles made it 4e-3 and more)
+    // has them taken again where Newton stopped; otherwise they stand (8 evaluations saved).
+    let chord = (8.0 * tol * a.scale().min(b.scale())).sqrt();
+    if node.residual <= chord * old {
+        return (node, (node.residual > tol * old).then_some(cols));
     }
-    // Not sure by the derivatives at Newton's last start: taken again where it stopped. Its
-    // last step can be long beside a contact (from a chord's parameter midpoint on one surface
-    // onto the other), and where the surfaces' angle grows with the distance from the contact,
-    // as beside a branch point, the old ones had it 1.5e4 times too small: `across` then
-    // stepped 1.7e-2 across from a contact's point, onto another crossing (i13c-s18).
     let ([au, av], [bu, bv]) = (a.derivs(node.uv[0]).into(), b.derivs(node.uv[1]).into());
     let cols = [au, av, bu, bv];
-    (node, (!sure(&node, cols, tol)).then_some(cols))
+    (node, (node.residual > tol * sine(cols)).then_some(cols))
 }
 
-/// Whether `node`'s residual over the sine of the surfaces' angle (the derivatives `cols`)
-/// is within `tol`: how far off the curve it can be.
-fn sure(node: &Node, cols: [DVec3; 4], tol: f64) -> bool {
+/// The sine of the surfaces' angle from their derivatives `cols`: a residual over it is how far
+/// off the curve a point can be.
+fn sine(cols: [DVec3; 4]) -> f64 {
     let (na, nb) = (cols[0].cross(cols[1]), cols[2].cross(cols[3]));
-    let sine = na.cross(nb).length() / (na.length() * nb.length());
-    node.residual <= tol * sine
+    na.cross(nb).length() / (na.length() * nb.length())
 }
 
 /// [`newton_pair_held`], with the surfaces' derivatives (unheld) at the last point Newton
