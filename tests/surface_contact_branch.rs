@@ -551,6 +551,17 @@ fn a_seed_along_the_contact_and_on_along_a_tangent_stub_is_cut_off_the_contact()
     both_curves_come_back((d0, d0 + 16.0), 1e-3, true);
 }
 
+/// A crossing through a curved contact 5e-2 along it from the patch's edge θ = 0, plate ∩ patch
+/// at seed 5e-3: the crossing comes in two pieces cut off its seed curves beside the branch
+/// point, their ends 9e-4 apart, and `join_ends` joins them. On 208b8a0 the root across the
+/// joint's chord from one of its midpoints ran off along the contact and the far stretch of the
+/// crossing: a 7.05-long seam, the crossing 12.26 long (5.19).
+#[test]
+fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
+    let d0 = -16.0 * (0.5 * 5e-2) / FRAC_PI_2;
+    both_curves_come_back((d0, d0 + 16.0), 5e-3, true);
+}
+
 /// How wide the near-edge family is: the test above over a wider grid, s ∈ {2.5e-3, 5e-3,
 /// 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2} along the contact from the edge θ = 0 (d running by 16 over
 /// the quarter turn), the branch point on the edge (d = 0..0.3, 0.3..0, 0..16, 16..0) and the
@@ -581,7 +592,6 @@ fn a_seed_along_the_contact_and_on_along_a_tangent_stub_is_cut_off_the_contact()
 ///   stub out and back, 50 points, the test above); s = 1.5e-2 seed 1e-3, plate ∩ patch (a
 ///   6-point copy of the stub's end at the branch point, the test above); d = 0..16 seed 1e-3,
 ///   plate ∩ patch (a 15-point piece of the crossing, 0.056 long, beside the branch point);
-/// - s = 5e-2 seed 5e-3, plate ∩ patch: the crossing 12.26 long (5.16), made so by `regroup`;
 /// - d = 0..16 seed 5e-3, plate ∩ patch: no curve taken for the crossing. Their shared end,
 ///   the branch point solved 1.4e-9 from (2, 0, 0), is 2.4e-9 off the crossing in r, where
 ///   `check_sloped`'s `on_line` allows `MEET` (2e-9) measured in r; across the steep crossing

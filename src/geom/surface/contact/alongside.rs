@@ -118,7 +118,12 @@ pub(crate) fn join_ends(
     chord_tol: f64,
 ) -> Vec<Polyline3> {
     let node = |p: DVec3| (a.project(p, None), p);
-    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+    // A joint's midpoint lies about its chord (within its length of the chord's middle): the
+    // root across the chord can run far off (beside a branch point, along the contact's double
+    // zero onto the crossing's far stretch: a 7-long seam across a joint 9e-4 long).
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| {
+        between(a, gap, x, y, tol).filter(|m| m.1.distance(x.1.midpoint(y.1)) <= x.1.distance(y.1))
+    };
     'joining: loop {
         for i in 0..pieces.len() {
             for j in 0..pieces.len() {
