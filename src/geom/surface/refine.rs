@@ -16,6 +16,7 @@ mod across;
 mod bracket;
 mod newton;
 mod patch;
+mod plane_across;
 use newton::newton_pair_mid;
 use newton::{min_norm, newton_pair_held, newton_plane_held};
 pub(crate) use newton::{newton_pair, newton_plane, Node};
@@ -419,9 +420,19 @@ pub(crate) fn refine_section_loose(
             nodes.push((uv, s.eval(uv)));
         }
     }
+    // Where Newton crawled beside a branch point, the point is taken across the curve onto
+    // the crossing's root (see `plane_across`), within four chords of the midpoint.
     let mid_of = |a: &(DVec2, DVec3), b: &(DVec2, DVec3)| {
         let (uv, r) = newton_plane(s, mid(s, a.0, b.0), p0, n, tol);
-        (r <= tol).then(|| (uv, s.eval(uv)))
+        if r > tol {
+            return None;
+        }
+        let at = s.eval(uv);
+        let reach = 4.0 * a.1.distance(b.1);
+        match plane_across::onto_plane_crossing(s, (uv, at), (p0, n), tol, reach) {
+            Some(x) => Some((x, s.eval(x))),
+            None => Some((uv, at)),
+        }
     };
     assemble_loose(&nodes, seed.closed, |x| x.1, &mid_of, tol, chord_tol)
 }
