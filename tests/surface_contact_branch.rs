@@ -123,8 +123,8 @@ fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), meet: f64) {
 /// the gap then taken along the patch's edge from the patch to the plate).
 const MEET: f64 = 2e-9;
 
-/// How far a crossing point may be from the closed form (its difference in r times the cosine
-/// of the crossing's slope to the circle) where the crossing is W from the contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
+/// How far a crossing point may be from the closed form (its distance in space to the curve,
+/// [`off_curve`]) where the crossing is W from the contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
 /// (about 4e-16 here) over its slope across the crossing (W², the gap across being
 /// w²(d(1 − w²) − w)) with a margin of 5: where the surfaces part more slowly than that no
 /// computation tells the crossing's point, nor ever farther than W/4 (the contact's side).
@@ -158,21 +158,13 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
     assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
     // On the curves themselves, not only within the tolerance of both surfaces (which, where
     // they meet at a small angle, leaves a point far off the curve): see ON_CROSSING, ON_CONTACT.
-    // The crossing's slope: r′(θ)/r, its distance from a point the difference in r times cos.
-    let dd = (d1 - d0) / FRAC_PI_2;
-    let cos = |th: f64, k: f64| {
-        let (d, w) = (d(th), root(d(th)));
-        let slope = k * (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd / (2.0 + w);
-        1.0 / (1.0 + slope * slope).sqrt()
-    };
-    for (c, k, allow) in [
+    for (c, kr, allow) in [
         (crossing, 1.0, on_crossing as fn(f64) -> f64),
         (contact, 0.0, on_contact),
     ] {
         for p in &c.points {
-            let (r, th) = polar(p);
-            let w = root(d(th));
-            let off = (r - 2.0 - k * w).abs() * cos(th, k);
+            let w = root(d(polar(p).1));
+            let off = off_curve(p, (d0, d1), kr, k);
             assert!(
                 off <= allow(w).max(meet),
                 "{name}: {p} {off:e} off (W = {w:e})"
@@ -211,8 +203,11 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
 }
 
 /// How far `p` is, in space, from the closed-form curve r = 2 + kr·W(d(θ)), z = kc·kr·W over
-/// 0 ≤ θ ≤ π/2 (kr = 0 the contact r = 2, kr = 1 the crossing; kc the cone's slope): its
-/// nearest point found by Newton on the curve's parameter from the point's own θ.
+/// 0 ≤ θ ≤ π/2 (kr = 0 the contact r = 2, kr = 1 the crossing; kc the cone's slope), and on
+/// its closed form's extension a hair past the patch's edges, as `off_both` measures the
+/// surfaces (an end 4.6e-10 outside the edge θ = 0, on the steep crossing's extension, is
+/// 4.8e-9 from its end at θ = 0 but 4.6e-10 from the curve; the ends' θ are checked apart):
+/// its nearest point found by Newton on the curve's parameter from the point's own θ.
 fn off_curve(p: &DVec3, (d0, d1): (f64, f64), kr: f64, kc: f64) -> f64 {
     let dd = (d1 - d0) / FRAC_PI_2;
     let at = |t: f64| {
@@ -228,10 +223,11 @@ fn off_curve(p: &DVec3, (d0, d1): (f64, f64), kr: f64, kc: f64) -> f64 {
         );
         (c, dc)
     };
-    let mut t = p.y.atan2(p.x).clamp(0.0, FRAC_PI_2);
+    let span = |t: f64| t.clamp(-1e-6, FRAC_PI_2 + 1e-6);
+    let mut t = span(p.y.atan2(p.x));
     for _ in 0..8 {
         let (c, dc) = at(t);
-        t = (t + (*p - c).dot(dc) / dc.length_squared()).clamp(0.0, FRAC_PI_2);
+        t = span(t + (*p - c).dot(dc) / dc.length_squared());
     }
     p.distance(at(t).0)
 }
