@@ -677,11 +677,12 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
 /// contact, i13d); d = 0..16 seed 1e-3 plate ∩ patch (a 15-point piece of the crossing, 0.056
 /// long; mended by these merges, not traced which).
 ///
-/// Open on stage-s18 (5 of 108), by what the check says:
-/// - a crossing point beside the branch point off the closed form, in the section: s = 1e-2
-///   seed 1e-2 (3.8e-8 off at W = −4.5e-3), s = 3e-2 seed 1e-2 (5.2e-8 at W = −5.5e-3); the
-///   same points with or without `plane_across` on the midpoints and seed points, so made
-///   elsewhere (untraced);
+/// Mended on stage-s18: two section runs, s = 1e-2 and 3e-2 at seed 1e-2 (a crossing point
+/// 3.8e-8 off at W = −4.5e-3, 5.2e-8 at W = −5.5e-3): section midpoints whose Newton stopped
+/// 4e-12 and 8e-12 off the plane, where `plane_across`'s own Newton step landed on the root
+/// to rounding (1e-17) and, finding no sign change past it, was dropped (it now keeps it).
+///
+/// Open on stage-s18 (3 of 108), by what the check says:
 /// - the contact's end on the far edge θ = π/2 off r = 2, plate ∩ patch: s = 3e-2 seed 1e-2
 ///   (2.02e-8, allowed 2e-8), s = 2e-2 seed 1e-3 (2.8e-8);
 /// - d = 0..16 seed 5e-3, plate ∩ patch: mended in the check (i13c). No curve was taken for
@@ -691,7 +692,7 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
 ///   across a crossing steep there (r′/r about 5); it now measures the distance to the curve
 ///   (`off_curve`), and the run passes whole.
 #[test]
-#[ignore = "open: 5 of 108 runs fail (see doc)"]
+#[ignore = "open: 3 of 108 runs fail (see doc)"]
 fn the_near_edge_family_over_a_wider_grid_comes_back_whole() {
     let mut failed = Vec::new();
     for seed in [1e-2, 5e-3, 1e-3] {

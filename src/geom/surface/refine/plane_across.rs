@@ -15,7 +15,8 @@ use glam::{DVec2, DVec3};
 /// through `p0` with unit normal `n`, at `at` in space): the root of the signed distance on
 /// the line through `uv` along which it grows fastest in space, bracketed from Newton's 1-D
 /// step (or past it by twice the secant's estimate of what is left) and solved by the
-/// Illinois method. None where the point is already as near as the distance's rounding tells,
+/// Illinois method (Newton's step itself where it lands within the distance's rounding). None
+/// where the point is already as near as the distance's rounding tells,
 /// its Newton step is within 1e-3·`tol`, the step does not cut the distance eightfold (a
 /// contact's even root), no sign change lies within `reach`, or the line leaves `s`.
 pub(super) fn onto_plane_crossing(
@@ -57,6 +58,12 @@ pub(super) fn onto_plane_crossing(
         d.is_finite().then_some((d, q))
     };
     let (h1, q1) = dist(1.0)?;
+    // Newton's step landed on the root to the distance's rounding (the point was off only by
+    // Newton's crawl, 3.8e-8 seen at W = −4.5e-3): nothing left to bracket, and no sign change
+    // to find past it.
+    if h1.abs() <= 8.0 * noise {
+        return Some(q1);
+    }
     let (lo, hi) = if h1.signum() != g0.signum() {
         (
             At {
