@@ -598,8 +598,12 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
 ///   seed 1e-2 (3.8e-8 off at W = −4.5e-3), s = 3e-2 seed 1e-2 (5.2e-8 at W = −5.5e-3); the
 ///   same points with or without `plane_across` on the midpoints and seed points, so made
 ///   elsewhere (untraced);
-/// - the contact's end on the far edge θ = π/2 off r = 2, plate ∩ patch: s = 3e-2 seed 1e-2
-///   (2.02e-8, allowed 2e-8), s = 2e-2 seed 1e-3 (2.8e-8);
+/// - mended (i13d-s18c): the contact's end on the far edge θ = π/2 off r = 2, plate ∩ patch,
+///   s = 3e-2 seed 1e-2 (2.09e-8, allowed 2e-8) and s = 2e-2 seed 1e-3 (2.81e-8). Traced from
+///   the plate's parameters (`regroup`'s contact walk), the last 1.6e-4 to the patch's edge
+///   were straight steps (the bisection for the end, shorter than √(tol·size)) along the last
+///   settled chord's line, which leans off the circle by half its turn: now along the arc the
+///   walk turns by (ends 8e-13 and 4e-12 off);
 /// - d = 0..16 seed 5e-3, plate ∩ patch: no curve taken for the crossing. Their shared end,
 ///   the branch point solved 1.4e-9 from (2, 0, 0), is 2.4e-9 off the crossing in r, where
 ///   `check_sloped`'s `on_line` allows `MEET` (2e-9) measured in r; across the steep crossing
