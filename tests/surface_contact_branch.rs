@@ -677,20 +677,23 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
 /// contact, i13d); d = 0..16 seed 1e-3 plate ∩ patch (a 15-point piece of the crossing, 0.056
 /// long; mended by these merges, not traced which).
 ///
-/// Mended on stage-s18: two section runs, s = 1e-2 and 3e-2 at seed 1e-2 (a crossing point
-/// 3.8e-8 off at W = −4.5e-3, 5.2e-8 at W = −5.5e-3): section midpoints whose Newton stopped
-/// 4e-12 and 8e-12 off the plane, where `plane_across`'s own Newton step landed on the root
-/// to rounding (1e-17) and, finding no sign change past it, was dropped (it now keeps it).
+/// Mended on stage-s18 after that: two section runs, s = 1e-2 and 3e-2 at seed 1e-2 (a
+/// crossing point 3.8e-8 off at W = −4.5e-3, 5.2e-8 at W = −5.5e-3): section midpoints whose
+/// Newton stopped 4e-12 and 8e-12 off the plane, where `plane_across`'s own Newton step landed
+/// on the root to rounding (1e-17) and, finding no sign change past it, was dropped (it now
+/// keeps it, i13a). Two plate ∩ patch runs, s = 3e-2 seed 1e-2 and s = 2e-2 seed 1e-3: the
+/// contact's end on the far edge θ = π/2 2.09e-8 and 2.81e-8 off r = 2 (allowed 2e-8). Traced
+/// from the plate's parameters (`regroup`'s contact walk), the last 1.6e-4 to the patch's edge
+/// were straight steps (the bisection for the end, shorter than √(tol·size)) along the last
+/// settled chord's line, which leans off the circle by half its turn; they now follow the arc
+/// the walk turns by (ends 8e-13 and 4e-12 off, i13d). And d = 0..16 seed 5e-3, plate ∩ patch,
+/// mended in the check (i13c): no curve was taken for the crossing, because their shared end,
+/// the branch point solved 1.4e-9 from (2, 0, 0), 4.7e-10 from the crossing in space, 1.2e-9
+/// from the contact and 1.4e-19 off both surfaces (all in closed form), is 2.4e-9 off the
+/// crossing in r, and `on_line` measured `MEET` in r across a crossing steep there (r′/r about
+/// 5); it now measures the distance to the curve (`off_curve`), and the run passes whole.
 ///
-/// Open on stage-s18 (3 of 108), by what the check says:
-/// - the contact's end on the far edge θ = π/2 off r = 2, plate ∩ patch: s = 3e-2 seed 1e-2
-///   (2.02e-8, allowed 2e-8), s = 2e-2 seed 1e-3 (2.8e-8);
-/// - d = 0..16 seed 5e-3, plate ∩ patch: mended in the check (i13c). No curve was taken for
-///   the crossing: their shared end, the branch point solved 1.4e-9 from (2, 0, 0), 4.7e-10
-///   from the crossing in space, 1.2e-9 from the contact and 1.4e-19 off both surfaces (all
-///   in closed form), is 2.4e-9 off the crossing in r, and `on_line` measured `MEET` in r
-///   across a crossing steep there (r′/r about 5); it now measures the distance to the curve
-///   (`off_curve`), and the run passes whole.
+/// Open on stage-s18: LEAD-TBD
 #[test]
 #[ignore = "open: 3 of 108 runs fail (see doc)"]
 fn the_near_edge_family_over_a_wider_grid_comes_back_whole() {
