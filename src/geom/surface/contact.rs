@@ -27,7 +27,7 @@ mod tip;
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use branch::contact_curve_near;
-use fold::{fold_probes, runs_through, Probed};
+use fold::{fold_probes, runs_through_any, Probed};
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
 use seeds::Lows;
@@ -317,8 +317,7 @@ fn regroup(
     for Probed { c, folds, .. } in partly {
         // A curve probed at its folds only is cut only where a contact runs through a fold: a
         // true lens's tip, turning into a contact, is kept whole, as before.
-        let spur = |q: &DVec3| traced.iter().any(|t| runs_through(t, *q, near));
-        if !folds.is_empty() && !folds.iter().any(spur) {
+        if !folds.is_empty() && !traced.iter().any(|t| runs_through_any(t, &folds, near)) {
             kept.push(c);
         } else if c.points.iter().any(|p| near_any(*p, &traced, near)) {
             cut.extend(off_curves(&c, &traced, near));
@@ -360,9 +359,8 @@ fn trace_contacts(
         (0..on.len()).filter(move |&k| on[k])
     }
     // A contact traced from a fold counts only where it runs on through one.
-    let through = |t: &Polyline3, folds: &[DVec3]| {
-        folds.is_empty() || folds.iter().any(|q| runs_through(t, *q, near))
-    };
+    let through =
+        |t: &Polyline3, folds: &[DVec3]| folds.is_empty() || runs_through_any(t, folds, near);
     let first = partly
         .iter()
         .filter_map(|x| Some((&x.c, x.probes[touches(&x.on).next()?], &x.folds[..])));

@@ -23,12 +23,17 @@ pub(super) struct Probed {
 /// than `10·near` from an open contact's ends. A contact traced from a true lens's tip ends
 /// there (`surface_contact_lens`: its two sides retrace within `near` for about 6e-3 beyond
 /// the tip); a mesh lens along a contact lies inside it.
-pub(super) fn runs_through(t: &Polyline3, q: DVec3, near: f64) -> bool {
+fn runs_through(t: &Polyline3, q: DVec3, near: f64) -> bool {
     let (Some(first), Some(last)) = (t.points.first(), t.points.last()) else {
         return false;
     };
     let inside = t.closed || (q.distance(*first) > 10.0 * near && q.distance(*last) > 10.0 * near);
     inside && near_any(q, std::slice::from_ref(t), near)
+}
+
+/// Whether the contact `t` runs through any of `folds` (see [`runs_through`]).
+pub(super) fn runs_through_any(t: &Polyline3, folds: &[DVec3], near: f64) -> bool {
+    folds.iter().any(|q| runs_through(t, *q, near))
 }
 
 /// Most folds of one seed curve probed (see [`fold_probes`]).
