@@ -695,29 +695,67 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
 ///
 /// All 108 runs pass on stage-s18, and the test is no longer ignored; a second grid, below,
 /// holds the open runs found past this one.
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole() {
+///
+/// The grid runs as six tests, one per seed and family (s, or the branch points' d), sharing
+/// [`runs_of_the_family_pass`]: in one test it took 496 s of CI's debug build on one core.
+const WIDER_S: [f64; 7] = [2.5e-3, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2];
+
+/// The branch points of the wider grid (see [`WIDER_S`]): on the edge, and the inner one.
+const WIDER_D: [(f64, f64); 5] = [
+    (0.0, 0.3),
+    (0.3, 0.0),
+    (0.0, 16.0),
+    (16.0, 0.0),
+    (-0.1, 0.3),
+];
+
+/// [`list_failing_runs`] at `seed` for each distance `s` along the contact from the edge θ = 0
+/// (d running by 16 over the quarter turn from −16·(s/2)/(π/2)), then for each d range of `d`;
+/// fails listing every failing run.
+fn runs_of_the_family_pass(seed: f64, s: &[f64], d: &[(f64, f64)]) {
     let mut failed = Vec::new();
-    for seed in [1e-2, 5e-3, 1e-3] {
-        for s in [2.5e-3, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2] {
-            let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
-            list_failing_runs(&mut failed, &format!("s {s}"), (d0, d0 + 16.0), seed);
-        }
-        for d in [
-            (0.0, 0.3),
-            (0.3, 0.0),
-            (0.0, 16.0),
-            (16.0, 0.0),
-            (-0.1, 0.3),
-        ] {
-            list_failing_runs(&mut failed, &format!("d {}..{}", d.0, d.1), d, seed);
-        }
+    for &s in s {
+        let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
+        list_failing_runs(&mut failed, &format!("s {s}"), (d0, d0 + 16.0), seed);
+    }
+    for &d in d {
+        list_failing_runs(&mut failed, &format!("d {}..{}", d.0, d.1), d, seed);
     }
     assert!(
         failed.is_empty(),
         "failing runs ({}): {failed:?}",
         failed.len()
     );
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_2_over_s() {
+    runs_of_the_family_pass(1e-2, &WIDER_S, &[]);
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_2_over_d() {
+    runs_of_the_family_pass(1e-2, &[], &WIDER_D);
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_5e_3_over_s() {
+    runs_of_the_family_pass(5e-3, &WIDER_S, &[]);
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_5e_3_over_d() {
+    runs_of_the_family_pass(5e-3, &[], &WIDER_D);
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_3_over_s() {
+    runs_of_the_family_pass(1e-3, &WIDER_S, &[]);
+}
+
+#[test]
+fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_3_over_d() {
+    runs_of_the_family_pass(1e-3, &[], &WIDER_D);
 }
 
 /// A second grid, past the first (lead, stage-s18, once the first passed whole): s ∈ {4e-3,
@@ -732,22 +770,41 @@ fn the_near_edge_family_over_a_wider_grid_comes_back_whole() {
 ///   the branch point (2, 0, 0);
 /// - d = −0.05..0.5 at seeds 1e-2 and 2e-3: the contact 3.1438 (1e-2) or 3.1423 (2e-3) long
 ///   against π, ends in place: a spur beside the branch point.
+///
+/// The grid runs as five tests, one per seed, sharing [`runs_of_the_family_pass`] (so that
+/// `--ignored` runs them side by side); the open runs are in four of them. The fifth, seed
+/// 1e-3, passes whole but stays ignored with the rest of the grid, out of CI's default run.
+const SECOND_S: [f64; 6] = [4e-3, 7.5e-3, 1.2e-2, 2.5e-2, 4e-2, 7e-2];
+
+/// The branch points of the second grid (see [`SECOND_S`]): on the edge, near it, far from it.
+const SECOND_D: [(f64, f64); 3] = [(0.0, 1.0), (-0.05, 0.5), (-0.3, 0.1)];
+
 #[test]
-#[ignore = "open: 6 of 135 runs fail, all plate ∩ patch (see doc)"]
-fn a_second_grid_past_the_first_comes_back_whole() {
-    let mut failed = Vec::new();
-    for seed in [2e-2, 1e-2, 5e-3, 2e-3, 1e-3] {
-        for s in [4e-3, 7.5e-3, 1.2e-2, 2.5e-2, 4e-2, 7e-2] {
-            let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
-            list_failing_runs(&mut failed, &format!("s {s}"), (d0, d0 + 16.0), seed);
-        }
-        for d in [(0.0, 1.0), (-0.05, 0.5), (-0.3, 0.1)] {
-            list_failing_runs(&mut failed, &format!("d {}..{}", d.0, d.1), d, seed);
-        }
-    }
-    assert!(
-        failed.is_empty(),
-        "failing runs ({}): {failed:?}",
-        failed.len()
-    );
+#[ignore = "open: d = 0..1 fails (see SECOND_S's doc)"]
+fn a_second_grid_past_the_first_comes_back_whole_seed_2e_2() {
+    runs_of_the_family_pass(2e-2, &SECOND_S, &SECOND_D);
+}
+
+#[test]
+#[ignore = "open: d = 0..1 and d = -0.05..0.5 fail (see SECOND_S's doc)"]
+fn a_second_grid_past_the_first_comes_back_whole_seed_1e_2() {
+    runs_of_the_family_pass(1e-2, &SECOND_S, &SECOND_D);
+}
+
+#[test]
+#[ignore = "open: d = 0..1 fails (see SECOND_S's doc)"]
+fn a_second_grid_past_the_first_comes_back_whole_seed_5e_3() {
+    runs_of_the_family_pass(5e-3, &SECOND_S, &SECOND_D);
+}
+
+#[test]
+#[ignore = "open: d = 0..1 and d = -0.05..0.5 fail (see SECOND_S's doc)"]
+fn a_second_grid_past_the_first_comes_back_whole_seed_2e_3() {
+    runs_of_the_family_pass(2e-3, &SECOND_S, &SECOND_D);
+}
+
+#[test]
+#[ignore = "passes whole; held out of the default run with the rest of the second grid"]
+fn a_second_grid_past_the_first_comes_back_whole_seed_1e_3() {
+    runs_of_the_family_pass(1e-3, &SECOND_S, &SECOND_D);
 }
