@@ -389,3 +389,66 @@ fn crossings_through_or_into_a_contact_at_the_users_chordtol() {
         (0.2, -0.05),
     ]));
 }
+
+/// [`check_between`] on each run of [`section_and_both_orders`] of `sheet_between(d0, d1)`
+/// against [`plate`] at `seed` (curves densified within 1e-6, each run twice for the same
+/// bits), the name of each failing run pushed to `failed` (the check's message goes to stderr).
+fn list_failing_runs(failed: &mut Vec<String>, (d0, d1): (f64, f64), seed: f64) {
+    let (s, plate) = (sheet_between(d0, d1), plate());
+    for (name, run) in section_and_both_orders("sheet", &s, &plate, seed, 1e-6) {
+        let name = format!("{name} d = {d0}..{d1} seed {seed}");
+        let once = || {
+            let r = run();
+            check_between(&name, &r, (d0, d1), 1e-6);
+            assert_same_bits(&name, &run(), &r);
+        };
+        if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
+            failed.push(name);
+        }
+    }
+}
+
+/// The sheets with a branch point above (−0.1..0.3 inside, 0..0.3 and 0.3..0 on an edge, and
+/// −0.05..0.2, 0.2..−0.05, run at the user's CHORDTOL only, with chords of CHORDTOL) at seeds
+/// 2e-2, 1e-2, 5e-3, 2e-3 and 1e-3, densified within 1e-6, in the section and both orders:
+/// 75 runs (i13a-s19, looking past the tests above, which run seeds 1e-2 and 1e-3). Open, not
+/// traced past this (8 fail), all beside the branch point, where the surfaces part as a triple
+/// root and points within 1e-9 of both may lie far off the curves (as on the curved contact of
+/// surface_contact_branch):
+/// - −0.1..0.3 at seed 2e-2 (branch point x = 1, crossing √16.16 = 4.01995 long), all three
+///   runs. The section's crossing starts on the contact at x = 0.9445 and runs along it to the
+///   branch point, its piece from x = 0 lost (3.0757 long). sheet ∩ plate: three curves, the
+///   crossing 4.02222 long, with points at x = 0.993..0.998 on the contact and at x =
+///   0.998..1.004 up to 1.5e-4 off the crossing (y ≈ 4.2e-4..5e-4 where d ≈ 3e-4, within
+///   1.3e-11 of both surfaces), and a 12-point copy of its piece from (0.9924, −7.6e-4) to the
+///   branch point. plate ∩ sheet: the crossing 4.02104
+///   long, 34 points at x = 1.0028..1.0038 off it so.
+/// - −0.05..0.2 at seed 5e-3 (branch point x = 0.8, crossing 4.00780 long), both orders: the
+///   crossing 4.00916 and 4.01038 long, points at x = 0.8037..0.8065 off it as above
+///   (sheet ∩ plate also gives a 12-point piece 0.0146 long from the branch point).
+/// - 0.2..−0.05 at seed 5e-3 (branch point x = 3.2), all three runs: the section's contact
+///   4.00114 long (8 of its 32 points off y = 0), both orders' crossing 4.00922 and 4.00987
+///   long, points at x = 3.1925..3.1966 off it as above.
+///
+/// Each fails with the curves densified within 1e-6 or 1e-4 (both orders; the section at 1e-6
+/// only), and passes within 1e-3 or CHORDTOL (the user's path, as above), at seeds 1.5e-2 to
+/// 3e-2 for −0.1..0.3 and 5e-3, 6e-3 for the other two (4e-3 passes): the stray points come
+/// with densifying beside the branch point (inferred from that, not traced).
+#[test]
+#[ignore = "open: 8 of 75 runs fail (see doc)"]
+fn crossings_through_or_into_a_contact_at_every_seed_come_back_whole() {
+    let mut failed = Vec::new();
+    for seed in [2e-2, 1e-2, 5e-3, 2e-3, 1e-3] {
+        for d in [
+            (-0.1, 0.3),
+            (0.0, 0.3),
+            (0.3, 0.0),
+            (-0.05, 0.2),
+            (0.2, -0.05),
+        ] {
+            list_failing_runs(&mut failed, d, seed);
+        }
+    }
+    let n = failed.len();
+    assert!(n == 0, "failing runs ({n}): {failed:?}");
+}
