@@ -146,7 +146,23 @@ fn on_contact(w: f64) -> f64 {
 /// [`check`] for [`sloped_patch`] against the cone z = k·w (the plane z = 0 for k = 0): the
 /// distance to the cone is |z − k·w|·cos(atan k) (the cone is straight along its generators, and
 /// a point's nearest on it lies in its meridian plane).
-fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet: f64) {
+fn check_sloped(name: &str, r: &[Polyline3], d: (f64, f64), k: f64, meet: f64) {
+    check_sloped_within(name, r, d, k, meet, 1e-6);
+}
+
+/// [`check_sloped`] for curves densified within `chord`: chords within `chord` + 1e-9 of both
+/// surfaces, and lengths to 1e-6 over the closed form's but, where `chord` is above 1e-6, up
+/// to its length·`chord`/3 under it (a chord whose middle is h from a curve of curvature κ
+/// is shorter than its arc by about κ·h/3 of it, and κ ≤ 1 here: the contact's 1/2, the
+/// crossing's near it).
+fn check_sloped_within(
+    name: &str,
+    r: &[Polyline3],
+    (d0, d1): (f64, f64),
+    k: f64,
+    meet: f64,
+    chord: f64,
+) {
     assert_eq!(r.len(), 2, "{name}: {}", summary(r));
     let d = |th: f64| d0 + (d1 - d0) * th / FRAC_PI_2;
     let polar = |p: &DVec3| (p.x.hypot(p.y), p.y.atan2(p.x));
@@ -191,15 +207,17 @@ fn check_sloped(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), k: f64, meet:
             "{name}: {}",
             summary(r)
         );
+        let short = if chord > 1e-6 { len * chord / 3.0 } else { 0.0 };
+        let l = c.length();
         assert!(
-            (c.length() - len).abs() <= 1e-6,
+            l <= len + 1e-6 && l >= len - 1e-6 - short,
             "{name}: {} vs {len}",
             summary(r)
         );
     }
-    // Densified within 1e-6 of curves on both surfaces: no chord cuts across anything.
+    // Densified within `chord` of curves on both surfaces: no chord cuts across anything.
     let off = |p: DVec3| off_both(&p, (d0, d1), k).into_iter().fold(0.0, f64::max);
-    assert_chords_on(name, r, off, 1e-6 + 1e-9);
+    assert_chords_on(name, r, off, chord + 1e-9);
 }
 
 /// How far `p` is, in space, from the closed-form curve r = 2 + kr·W(d(θ)), z = kc·kr·W over
@@ -489,6 +507,45 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone_at_every_seed() {
                     let run = || surface_intersect_seeded(x, y, seed, 1e-6, 1e-9).unwrap();
                     let r = run();
                     check_sloped(&name, &r, (d0, d1), k, MEET);
+                    assert_same_bits(&name, &run(), &r);
+                };
+                if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
+                    failed.push(name);
+                }
+            }
+        }
+    }
+    let n = failed.len();
+    assert!(n == 0, "failing runs ({n}): {failed:?}");
+}
+
+/// The same at the user's CHORDTOL (`surface-intersect`: seeding meshes and chords both
+/// within CHORDTOL, 2e-2 to 1e-3), checked by [`check_sloped_within`]: 50 runs (i13a-s19).
+/// Open, not traced: all 10 runs at CHORDTOL 1e-3 fail, both orders, every d range, on the
+/// number of curves (e.g. d = −0.1..0.3: the crossing 3.3314 long and a 5-point piece beside
+/// it, 0.048 long; d = 0..0.3 and 0.3..0: lone points on the contact); 2e-3 and up pass.
+#[test]
+#[ignore = "open: 10 of 50 runs fail, all at CHORDTOL 1e-3 (see doc)"]
+fn a_crossing_through_a_contact_between_a_patch_and_a_cone_at_the_users_chordtol() {
+    let k = 0.5;
+    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
+    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let mut failed = Vec::new();
+    for tol in [2e-2, 1e-2, 5e-3, 2e-3, 1e-3] {
+        for d in [
+            (-0.1, 0.3),
+            (0.0, 0.3),
+            (0.3, 0.0),
+            (-0.05, 0.5),
+            (-0.3, 0.1),
+        ] {
+            let s = sloped_patch(d.0, d.1, k);
+            for (name, x, y) in [("patch ∩ cone", &s, &cone), ("cone ∩ patch", &cone, &s)] {
+                let name = format!("{name} d = {}..{} CHORDTOL {tol}", d.0, d.1);
+                let once = || {
+                    let run = || surface_intersect_seeded(x, y, tol, tol, 1e-9).unwrap();
+                    let r = run();
+                    check_sloped_within(&name, &r, d, k, MEET, tol);
                     assert_same_bits(&name, &run(), &r);
                 };
                 if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
