@@ -80,16 +80,24 @@ const QUICK: f64 = 1e-9;
 /// differences less that bias (h‴ barely changes over the search; two or three steps);
 /// elsewhere [`settle_flat`].
 pub(super) fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> DVec2 {
+    settle_bent(a, h, uv, w).0
+}
+
+/// [`settle`], with the second derivative of `h` along `w` where the search last took it (at
+/// the extremum or one converged step from it; zero or NaN where it had none): its sign tells a
+/// contact from the gap's extremum beside it at a branch point (see [`largest`]).
+fn settle_bent(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -> (DVec2, f64) {
     let f = |x: f64| h(uv + w * x);
     let g5 = slope5(&f, 0.0);
     let (p, z, m) = (f(D), f(0.0), f(-D));
-    let (g, c) = ((p - m) / (2.0 * D), (p - 2.0 * z + m) / (D * D));
+    let (g, mut c) = ((p - m) / (2.0 * D), (p - 2.0 * z + m) / (D * D));
     if !(c.abs() > 0.0 && c.is_finite() && g.is_finite() && g5.is_finite()) {
-        return clamp_bounded(a, uv);
+        return (clamp_bounded(a, uv), c);
     }
     let bias = g - g5;
     if bias.abs() > QUICK * c.abs() {
-        return clamp_bounded(a, uv + w * settle_flat(&f, g5, c));
+        let (s, c) = settle_flat(&f, g5, c);
+        return (clamp_bounded(a, uv + w * s), c);
     }
     let (mut s, mut step) = (0.0, (g5 / c).clamp(-0.05, 0.05));
     for _ in 0..10 {
@@ -98,13 +106,63 @@ pub(super) fn settle(a: &Patch, h: &dyn Fn(DVec2) -> f64, uv: DVec2, w: DVec2) -
             break;
         }
         let (m, z, p) = (f(s - D), f(s), f(s + D));
-        let (g, c) = ((p - m) / (2.0 * D) - bias, (p - 2.0 * z + m) / (D * D));
-        if !(c.abs() > 0.0 && c.is_finite() && g.is_finite()) {
+        let g = (p - m) / (2.0 * D) - bias;
+        let cn = (p - 2.0 * z + m) / (D * D);
+        if !(cn.abs() > 0.0 && cn.is_finite() && g.is_finite()) {
             break;
         }
+        c = cn;
         step = (g / c).clamp(-0.05, 0.05);
     }
-    clamp_bounded(a, uv + w * s)
+    (clamp_bounded(a, uv + w * s), c)
+}
+
+/// Whether the extremum of the gap settled at, with value `h` and second derivative `c` across,
+/// is one where |h| is largest, not least (h·c < 0, h above its rounding, `point`'s
+/// coordinates' ulps times 64, whose sign says nothing): between two zeros of the gap. Beside a
+/// branch point the gap across the contact is about (a/2)·x² − (b/6)·x³: a double zero at
+/// x = 0 (the contact), a simple one at 3a/b (the crossing), and between them such an extremum
+/// at 2a/b, its gap 2a³/(3b²) within the tolerance for |a| up to about ∛tol: a search across
+/// from the wrong side (a long step's tangent running off the contact's convex side) settles
+/// there, up to 1e-3 off the contact. (Surfaces crossing by less than the tolerance have one
+/// too, alone: the contact the tracer follows there.)
+fn largest(h: f64, c: f64, point: DVec3) -> bool {
+    h * c < 0.0 && h.abs() > touching(point)
+}
+
+/// The rounding of a gap at `point`: its coordinates' ulps times 64.
+fn touching(point: DVec3) -> f64 {
+    64.0 * f64::EPSILON * point.abs().max_element()
+}
+
+/// [`settle`] onto the contact, not onto the gap's extremum beside it at a branch point (see
+/// [`largest`]), where the surfaces meet (within `within`): from there the contact lies
+/// 2a/b = √(6·|h/c|) along `w` one way (the crossing half as far again the other, past which
+/// the search comes back to the extremum), so the search is made again from that far either
+/// way and taken where it finds the surfaces touching (the gap zero but for rounding). Where it
+/// does not (surfaces crossing by less than the tolerance, their gap's one extremum), the point
+/// stays. The point and the gap there.
+fn settle_on_contact(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    (uv, w): (DVec2, DVec2),
+    within: f64,
+) -> (DVec2, GapAt) {
+    let h = |uv: DVec2| gap(uv).signed;
+    let (c, bent) = settle_bent(a, &h, uv, w);
+    let g = gap(c);
+    if g.dist > within || !largest(g.signed, bent, g.point) {
+        return (c, g);
+    }
+    let reach = (6.0 * (g.signed / bent).abs()).sqrt();
+    for side in [-1.0, 1.0] {
+        let (q, _) = settle_bent(a, &h, c + w * (side * reach), w);
+        let gq = gap(q);
+        if gq.signed.abs() <= touching(gq.point) {
+            return (q, gq);
+        }
+    }
+    (c, g)
 }
 
 /// The five-point derivative of `f` at `x`.
@@ -116,7 +174,7 @@ fn slope5(f: &dyn Fn(f64) -> f64, x: f64) -> f64 {
 /// derivative `c`) by Newton on the five-point derivative, where the three-point one is off: a
 /// step that does not lessen the derivative is halved, and the search stops where none does
 /// (the derivative at its noise).
-fn settle_flat(f: &dyn Fn(f64) -> f64, mut g: f64, mut c: f64) -> f64 {
+fn settle_flat(f: &dyn Fn(f64) -> f64, mut g: f64, mut c: f64) -> (f64, f64) {
     let mut s = 0.0;
     for it in 0..20 {
         if it > 0 {
@@ -142,7 +200,7 @@ fn settle_flat(f: &dyn Fn(f64) -> f64, mut g: f64, mut c: f64) -> f64 {
             break;
         }
     }
-    s
+    (s, c)
 }
 
 pub(super) fn clamp_bounded(a: &Patch, mut uv: DVec2) -> DVec2 {
@@ -188,7 +246,6 @@ fn walk(
     len: f64,
     tol: f64,
 ) -> (Vec<DVec2>, bool) {
-    let h = |uv: DVec2| gap(uv).signed;
     let g_start = gap(start);
     let p_start = g_start.point;
     // Where the surfaces part: half way from the contact's own gap to the tolerance (half the
@@ -250,8 +307,8 @@ fn walk(
         let (cand, g, settled) = match gs {
             Some(gs) if on(&gs, straight - uv) => (straight, gs, false),
             _ => {
-                let c = settle(a, &h, ahead, t.perp());
-                (c, gap(c), true)
+                let (c, g) = settle_on_contact(a, gap, (ahead, t.perp()), parted);
+                (c, g, true)
             }
         };
         let moved = cand - uv;
@@ -347,12 +404,14 @@ pub(crate) fn contact_curve(
         // the contact to about the tolerance: settled, near a branch point, it would be off by
         // the noise over a vanishing curvature across (see `walk`) and be inserted as a zigzag.
         let m = mid(a, x.0, y.0);
-        let m = if x.1.distance(y.1) <= short {
-            m
+        let (m, g) = if x.1.distance(y.1) <= short {
+            (m, gap(m))
         } else {
-            settle(a, &h, m, across)
+            // Beside a branch point a long chord's midpoint can settle on the gap's extremum
+            // beside the contact, up to 1e-3 off it, and the chords to it would follow that
+            // out and back (a spur on the contact).
+            settle_on_contact(a, gap, (m, across), tol)
         };
-        let g = gap(m);
         (g.dist <= tol).then_some((m, g.point))
     };
     Some(assemble(&nodes, closed, |x| x.1, &mid_of, tol, chord_tol))
@@ -366,4 +425,81 @@ pub(super) fn speed_along(a: &Patch, uv: DVec2, t: DVec2) -> Option<f64> {
     let (su, sv) = a.derivs(w);
     let speed = (su * t.x + sv * t.y).length();
     (speed > 0.0 && speed.is_finite()).then_some(speed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::surface::Surface;
+
+    /// A unit square plate.
+    fn plate() -> Surface {
+        let c = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        Surface::plane(c.map(|(x, y)| DVec3::new(x, y, 0.0)).to_vec()).unwrap()
+    }
+
+    /// The gap over `p` h = level + (a/2)·x² − (b/6)·x³ with x = u − 1/2 (for level 0 the
+    /// section across a contact beside a branch point): the contact at x = 0, the crossing at
+    /// 3a/b, the gap's extremum between them at 2a/b, where h = 2a³/(3b²).
+    fn cubic<'a>(p: &'a Patch<'a>, (a, b, level): (f64, f64, f64)) -> impl Fn(DVec2) -> GapAt + 'a {
+        move |uv: DVec2| {
+            let x = uv.x - 0.5;
+            let signed = level + 0.5 * a * x * x - b / 6.0 * x * x * x;
+            GapAt {
+                signed,
+                dist: signed.abs(),
+                point: p.eval(uv),
+            }
+        }
+    }
+
+    /// Beside a branch point (a = 2d with d = 4.7e-4, b = 6: the extremum 3.1e-4 off the
+    /// contact, its gap 1.5e-11, within tol), a search from past the gap's extremum beside the
+    /// contact lands on it with `settle`, and on the contact with `settle_on_contact`.
+    #[test]
+    fn a_search_settled_beside_the_contact_goes_on_to_it() {
+        let s = plate();
+        let p = Patch::new(&s);
+        for a in [9.4e-4, -9.4e-4] {
+            let b = 6.0;
+            let gap = cubic(&p, (a, b, 0.0));
+            let h = |uv: DVec2| gap(uv).signed;
+            let (beside, start) = (2.0 * a / b, DVec2::new(0.5 + 3.0 * a / b, 0.5));
+            let plain = settle(&p, &h, start, DVec2::X).x - 0.5;
+            assert!((plain - beside).abs() <= 1e-9, "{a}: {plain:e}");
+            let (uv, g) = settle_on_contact(&p, &gap, (start, DVec2::X), 1e-9);
+            assert!((uv.x - 0.5).abs() <= 1e-9, "{a}: {uv} {}", g.signed);
+            assert!((uv.y - 0.5).abs() <= 1e-15);
+        }
+    }
+
+    /// A contact, touching or held apart, is never taken for an extremum where |h| is largest:
+    /// not where its gap is zero but for rounding (whatever the signs), nor where it is held
+    /// 1e-10 apart (|h| least there); the extremum beside a branch point is, on either side.
+    /// Surfaces crossing by 3e-10 (the gap's one extremum, |h| largest between two zeros)
+    /// keep it: no search past it finds them touching.
+    #[test]
+    fn the_extremum_beside_a_contact_is_told_from_it() {
+        let at = DVec3::new(2.0, 0.5, 0.0);
+        for c in [1e-3, -1e-3, 1e-9, -1e-9] {
+            for h in [4e-16, -4e-16, 0.0] {
+                assert!(!largest(h, c, at), "{h:e} {c:e}");
+            }
+            assert!(!largest(1e-10 * c.signum(), c, at));
+        }
+        for (a, b) in [(9.4e-4, 6.0), (-9.4e-4, 6.0), (2e-4, 6.0)] {
+            let x = 2.0 * a / b;
+            let (h, c) = (0.5 * a * x * x - b / 6.0 * x * x * x, a - b * x);
+            assert!(largest(h, c, at), "{a} {b}: {h:e} {c:e}");
+        }
+        let s = plate();
+        let p = Patch::new(&s);
+        for level in [1e-10, -3e-10] {
+            let gap = cubic(&p, (1e-3, 0.0, level));
+            let start = (DVec2::new(0.5003, 0.5), DVec2::X);
+            let (uv, g) = settle_on_contact(&p, &gap, start, 1e-9);
+            assert!((uv.x - 0.5).abs() <= 1e-9, "{level:e}: {uv}");
+            assert!((g.signed - level).abs() <= 1e-15, "{level:e}: {}", g.signed);
+        }
+    }
 }
