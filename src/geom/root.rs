@@ -93,6 +93,92 @@ pub fn illinois<P>(
     Some(if a.f.abs() <= b.f.abs() { a } else { b })
 }
 
+/// Newton's 1-D step from 0 on a function, and the scale its argument is measured in: the
+/// callers' arguments differ in unit (a length in space, or a count of steps), and each keeps
+/// its own arithmetic, so its iterates do not move at rounding level.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NewtonStep {
+    /// The function's value at 0, where the step starts.
+    pub f0: f64,
+    /// Where the step lands: −f0 over the slope at 0.
+    pub t: f64,
+    /// The length one unit of the argument spans (in the units of `reach` and `width`).
+    pub unit: f64,
+    /// How far from 0 the root may lie (farther, it is another root's).
+    pub reach: f64,
+    /// The bracket's width wanted, as `reach` measures it.
+    pub width: f64,
+    /// The value's rounding: a step landing within it is taken as the root, with no bracket.
+    pub rounding: f64,
+}
+
+/// The root of `f` near Newton's step from 0 on it (`step.t`), bracketed and solved by
+/// [`illinois`] to `step.width`:
+/// - the step's own sample where its value is within `step.rounding` (nothing left to
+///   bracket, and maybe no sign change to find past it);
+/// - else, where the step crosses the root, the bracket [0, step];
+/// - else, where it falls short but cuts the value at least eightfold, the bracket from the
+///   step to past it by twice the secant's estimate of what is left.
+///
+/// None where the step cuts the value less than eightfold (an even root, as a tangent
+/// contact's: Newton cuts that fourfold, and the value keeps its sign), where the point past
+/// the step lies beyond `step.reach` (not evaluated there) or brackets no root, where `f0` or
+/// the step is not finite, or where `f` returns None or a value that is not finite.
+///
+/// `start` is the payload at 0 where `f0` is `f`'s own value there. None where `f0` was
+/// computed otherwise (`across`'s gap to b's unprojected foot): `f` is then evaluated at 0 for
+/// the bracket [0, step] (after the step, and only there), and that value's sign must differ
+/// from the step's (an exact zero counts with its sign).
+pub fn from_newton_step<P>(
+    mut f: impl FnMut(f64) -> Option<(f64, P)>,
+    step: NewtonStep,
+    start: Option<P>,
+) -> Option<At<P>> {
+    let NewtonStep { f0, t, unit, .. } = step;
+    if !(f0.is_finite() && t.is_finite()) {
+        return None;
+    }
+    let (f1, payload) = f(t)?;
+    let one = At { t, f: f1, payload };
+    if f1.abs() <= step.rounding {
+        return Some(one);
+    }
+    let (lo, hi) = if f1.signum() != f0.signum() {
+        let zero = match start {
+            Some(payload) => At {
+                t: 0.0,
+                f: f0,
+                payload,
+            },
+            None => {
+                let (f, payload) = f(0.0)?;
+                At { t: 0.0, f, payload }
+            }
+        };
+        (zero, one)
+    } else if 8.0 * f1.abs() > f0.abs() {
+        return None;
+    } else {
+        let beyond = t + 2.0 * t * f1 / (f0 - f1);
+        if beyond.is_nan() || beyond.abs() * unit > step.reach {
+            return None;
+        }
+        let (f, payload) = f(beyond)?;
+        (
+            one,
+            At {
+                t: beyond,
+                f,
+                payload,
+            },
+        )
+    };
+    if lo.f.signum() == hi.f.signum() {
+        return None;
+    }
+    illinois(f, [lo, hi], Stop::Width(step.width / unit))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -257,5 +343,193 @@ mod tests {
         assert!(r.payload >= 2, "{r:?}");
         assert_eq!(seen[r.payload - 2], r.t);
         assert_eq!(r.f, f(r.t));
+    }
+
+    /// [`from_newton_step`] on `f` with its argument as the payload, and the arguments `f` was
+    /// evaluated at, in order.
+    fn from_step(
+        f: impl Fn(f64) -> f64,
+        step: NewtonStep,
+        start: Option<f64>,
+    ) -> (Option<At<f64>>, Vec<f64>) {
+        let mut seen = Vec::new();
+        let r = from_newton_step(
+            |t| {
+                seen.push(t);
+                Some((f(t), t))
+            },
+            step,
+            start,
+        );
+        (r, seen)
+    }
+
+    /// Newton's step from 0 on `f` with slope `slope` there, its argument's unit 1 long.
+    fn newton(f: impl Fn(f64) -> f64, slope: f64, reach: f64, width: f64) -> NewtonStep {
+        NewtonStep {
+            f0: f(0.0),
+            t: -f(0.0) / slope,
+            unit: 1.0,
+            reach,
+            width,
+            rounding: 1e-16,
+        }
+    }
+
+    #[test]
+    fn a_step_onto_the_root_to_rounding_is_kept_though_no_sign_change_lies_past_it() {
+        // t − 1 − 1e-17 has its root at 1 + 1e-17, between 1 and the next float: no argument
+        // has a value of the other sign within reach of the step (which lands on 1, −1e-17,
+        // the start's sign), and twice the secant's estimate past it rounds back onto 1. The
+        // step is as near the root as floats get, and comes back without another evaluation.
+        let f = |t: f64| t - 1.0 - 1e-17;
+        let step = newton(f, 1.0, 4.0, 1e-12);
+        assert_eq!((step.f0, step.t), (-1.0, 1.0));
+        let (r, seen) = from_step(f, step, Some(0.0));
+        let r = r.expect("the step's point");
+        assert_eq!((r.t, r.f, r.payload), (1.0, -1e-17, 1.0));
+        assert_eq!(seen, [1.0]);
+        // Over the rounding it is not kept: t − 1 − 1e-15 is −1e-15 at the step, its root
+        // 4.5 floats past 1, bracketed past the step and solved to its last float.
+        let g = |t: f64| t - 1.0 - 1e-15;
+        let step = NewtonStep {
+            f0: -1.0,
+            width: 1e-17,
+            ..step
+        };
+        let (r, seen) = from_step(g, step, Some(0.0));
+        let r = r.expect("a root past the step");
+        assert!(r.t > 1.0 && (r.t - 1.0 - 1e-15).abs() <= 2.3e-16, "{r:?}");
+        assert!(seen.len() > 1, "{seen:?}");
+    }
+
+    #[test]
+    fn a_step_across_the_root_is_bracketed_with_the_start() {
+        // e^t − 2 from 0 (value −1, slope 1): the step lands on 1, past the root ln 2.
+        let f = |t: f64| t.exp() - 2.0;
+        let step = newton(f, 1.0, 4.0, 1e-12);
+        let (r, seen) = from_step(f, step, Some(0.0));
+        let r = r.expect("ln 2");
+        assert!((r.t - 2f64.ln()).abs() <= 1e-12, "{r:?}");
+        assert_eq!((r.f, r.payload), (f(r.t), r.t));
+        // The start's sample is the caller's: not evaluated again.
+        assert_eq!(seen[0], 1.0);
+        assert!(!seen.contains(&0.0), "{seen:?}");
+        // Without it, `f` is evaluated at 0, once, after the step.
+        let (r, seen) = from_step(f, step, None);
+        assert!((r.expect("ln 2").t - 2f64.ln()).abs() <= 1e-12);
+        assert_eq!(seen[..2], [1.0, 0.0]);
+        assert_eq!(seen.iter().filter(|t| **t == 0.0).count(), 1, "{seen:?}");
+    }
+
+    #[test]
+    fn a_start_whose_own_value_has_the_steps_sign_brackets_nothing() {
+        // f0 computed otherwise (−1) where `f`'s own value at 0 is of the step's sign: e^t −
+        // 0.5 is positive on [0, 1], with no root there, and so is 1 − e^(−t) but for its
+        // exact zero at 0, which counts with its sign (+0): neither is bracketed.
+        let fs: [fn(f64) -> f64; 2] = [|t| t.exp() - 0.5, |t| 1.0 - (-t).exp()];
+        for f in fs {
+            let step = NewtonStep {
+                f0: -1.0,
+                t: 1.0,
+                unit: 1.0,
+                reach: 4.0,
+                width: 1e-12,
+                rounding: 1e-16,
+            };
+            assert!(f(0.0) >= 0.0 && f(0.0).is_sign_positive() && f(1.0) > 0.0);
+            let (r, seen) = from_step(f, step, None);
+            assert!(r.is_none(), "{r:?}");
+            assert_eq!(seen, [1.0, 0.0]);
+        }
+    }
+
+    #[test]
+    fn a_step_short_of_the_root_is_followed_past_it_by_twice_the_secants_estimate() {
+        // ln(1 + 0.3 t) − ln 1.3, root 1, concave: Newton from 0 (slope 0.3) lands short, at
+        // ln(1.3)/0.3 = 0.8745, its value cut 8.9-fold; once the secant's estimate of what is
+        // left reaches 0.985 (still short), twice it 1.095 (past the root).
+        let f = |t: f64| (0.3 * t).ln_1p() - 1.3f64.ln();
+        let step = newton(f, 0.3, 4.0, 1e-12);
+        let f1 = f(step.t);
+        assert!(f1 < 0.0 && 8.0 * f1.abs() < step.f0.abs(), "{f1}");
+        let (r, seen) = from_step(f, step, Some(0.0));
+        let r = r.expect("the root 1");
+        assert!((r.t - 1.0).abs() <= 1e-12 && r.f == f(r.t), "{r:?}");
+        let beyond = seen[1];
+        assert!((beyond - 1.0951).abs() <= 1e-4, "{seen:?}");
+        // The reach and the width are measured in the argument's unit's length: here 100
+        // long, the point past the step lies 109.5 away, and the width of 0.5 is 0.005 in t
+        // (the first bracket, [0.87, 1.10], is under 0.5 wide).
+        let long = NewtonStep {
+            unit: 100.0,
+            reach: 110.0,
+            width: 0.5,
+            ..step
+        };
+        let (r, _) = from_step(f, long, Some(0.0));
+        let r = r.expect("the root 1");
+        assert!((r.t - 1.0).abs() <= 0.005, "{r:?}");
+        // Out of reach: None, and `f` not evaluated there (it may not be able to).
+        let short = NewtonStep {
+            reach: 109.0,
+            ..long
+        };
+        let (r, seen) = from_step(f, short, Some(0.0));
+        assert!(r.is_none(), "{r:?}");
+        assert_eq!(seen, [step.t]);
+    }
+
+    #[test]
+    fn a_step_that_cuts_the_value_less_than_eightfold_finds_no_root() {
+        // Newton on a double root cuts the value fourfold: (t − 1)² from 0 lands on 0.5, 0.25.
+        // No root to find (none is bracketed either way).
+        let double = |t: f64| (t - 1.0) * (t - 1.0);
+        let (r, _) = from_step(double, newton(double, -2.0, 4.0, 1e-12), Some(0.0));
+        assert!(r.is_none(), "{r:?}");
+        // Two roots 0.6 apart about a minimum (a tangent contact's near-double zero, seen
+        // from afar): the step to 0.455 cuts the value 4.4-fold, and twice the secant's
+        // estimate past it would reach 0.72, past the root 0.7. That is not taken for a
+        // simple root's.
+        let pair = |t: f64| (t - 1.0) * (t - 1.0) - 0.09;
+        let step = newton(pair, -2.0, 4.0, 1e-12);
+        let f1 = pair(step.t);
+        assert!(f1 > 0.0 && 8.0 * f1 > step.f0 && 4.0 * f1 < step.f0, "{f1}");
+        let (r, seen) = from_step(pair, step, Some(0.0));
+        assert!(r.is_none(), "{r:?}");
+        assert_eq!(seen, [step.t]);
+    }
+
+    #[test]
+    fn a_step_or_value_that_is_not_a_number_finds_no_root() {
+        let f = |t: f64| t - 0.5;
+        let unused = |_: f64| -> Option<(f64, ())> { panic!("no evaluation needed") };
+        let step = NewtonStep {
+            f0: -0.5,
+            t: 0.5,
+            unit: 1.0,
+            reach: 4.0,
+            width: 1e-12,
+            rounding: 0.0,
+        };
+        for bad in [
+            NewtonStep {
+                t: f64::NAN,
+                ..step
+            },
+            NewtonStep {
+                f0: f64::NEG_INFINITY,
+                ..step
+            },
+        ] {
+            assert!(from_newton_step(unused, bad, Some(())).is_none());
+        }
+        // `f` None or not a number at the step, or None past it.
+        assert!(from_newton_step(|_| None::<(f64, ())>, step, Some(())).is_none());
+        assert!(from_step(|_| f64::NAN, step, Some(0.0)).0.is_none());
+        let short = NewtonStep { t: 0.45, ..step };
+        assert!(from_step(f, short, Some(0.0)).0.is_some());
+        let none_past = |t: f64| (t < 0.46).then_some((f(t), ()));
+        assert!(from_newton_step(none_past, short, Some(())).is_none());
     }
 }

@@ -6,7 +6,7 @@
 //! that rounding. A tangent contact's gap has an even root, with no sign change to bracket.
 
 use super::{Node, Patch};
-use crate::geom::root::{illinois, At, Stop};
+use crate::geom::root::{from_newton_step, NewtonStep};
 use glam::{DVec2, DVec3};
 use std::cell::Cell;
 
@@ -66,28 +66,18 @@ pub(super) fn onto_crossing(
     if probe.signum() == g0.signum() && 8.0 * probe.abs() > g0.abs() {
         return None;
     }
-    let one = at(step)?;
-    let (lo, hi) = if one.0.abs() <= noise {
-        // At the gap's rounding: as near the root as it can be told.
-        return (one.1.residual <= tol).then_some(one.1);
-    } else if one.0.signum() != g0.signum() {
-        ((0.0, at(0.0)?), (step, one))
-    } else if 8.0 * one.0.abs() > g0.abs() {
-        return None;
-    } else {
-        // Short of the root: past it by twice the secant's estimate of what is left.
-        let beyond = step + 2.0 * step * one.0 / (g0 - one.0);
-        let two = at(beyond)?;
-        if two.0.signum() == one.0.signum() || beyond.abs() > reach {
-            return None;
-        }
-        ((step, one), (beyond, two))
+    // `dir` is of unit speed in space, so the reach and the width are the argument's own.
+    let newton = NewtonStep {
+        f0: g0,
+        t: step,
+        unit: 1.0,
+        reach,
+        width: 1e-3 * tol,
+        rounding: noise,
     };
-    if lo.1 .0.signum() == hi.1 .0.signum() {
-        return None;
-    }
-    let end = |(t, (f, payload)): (f64, (f64, Node))| At { t, f, payload };
-    let root = illinois(&at, [end(lo), end(hi)], Stop::Width(1e-3 * tol))?;
+    // The start's gap is taken again for a bracket [0, step]: `g0` is to b's foot at `m`,
+    // `at`'s to b's point projected, and the bracketed sign must be the node's.
+    let root = from_newton_step(&at, newton, None)?;
     (root.payload.residual <= tol).then_some(root.payload)
 }
 
