@@ -27,7 +27,7 @@ mod tip;
 use super::refine::Patch;
 use crate::geom::mesh::{closest_on_triangle, Aabb, Mesh, Polyline3};
 use branch::contact_curve_near;
-use fold::{fold_probes, runs_through_any, Probed};
+use fold::{fold_probes, runs_through_any, step_in, Probed};
 use glam::{DVec2, DVec3};
 use line::{contact_curve, GapAt};
 use seeds::Lows;
@@ -295,7 +295,7 @@ fn regroup(
         }
     }
     let tols = (tol, chord_tol, near);
-    let (mut traced, steps) = trace_contacts(a, gap, &touching, &partly, tols);
+    let (mut traced, steps) = trace_contacts(a, gap, tangent, &touching, &partly, tols);
     // The pieces a traced contact covers go; any other stays. Of one it covers in part, the
     // stretches off it are a crossing's: a seed curve along the contact and on along a
     // crossing leaving it nearly tangent (the stub beside a branch point, parting at a sine
@@ -348,6 +348,7 @@ fn regroup(
 fn trace_contacts(
     a: &Patch,
     gap: &dyn Fn(DVec2) -> GapAt,
+    tangent: &dyn Fn(DVec2) -> bool,
     touching: &[(Polyline3, DVec2)],
     partly: &[Probed],
     tols: (f64, f64, f64),
@@ -387,8 +388,22 @@ fn trace_contacts(
         if c.points.iter().any(|p| near_any(*p, &traced, near)) {
             continue;
         }
-        for k in touches(on).skip(1) {
-            let found = trace_from(a, gap, c, probes[k], &traced, tols);
+        // Nor does a touching probe on a branch point itself, where the gap across flattens to
+        // a triple root (`contact_curve_near`'s steps off it, a seed step long and straight,
+        // end up to its square over twice the radius off a curved contact: from the plate at
+        // d = 0..1, none traced one): the curve's points a step along it from its touching
+        // probes are tried last.
+        let others = touches(on).skip(1).map(|k| probes[k]);
+        let len = longest_step(c);
+        let inward = folds
+            .is_empty()
+            .then(|| step_in(c, on, len))
+            .into_iter()
+            .flatten()
+            .map(|q| a.project(q, None))
+            .filter(|uv| tangent(*uv));
+        for uv in others.chain(inward) {
+            let found = trace_from(a, gap, c, uv, &traced, tols);
             if let Some((t, len)) = found.filter(|(t, _)| through(t, folds)) {
                 traced.push(t);
                 steps.push(len);
@@ -420,16 +435,20 @@ fn trace_from(
     {
         return None;
     }
-    let len = c
-        .points
-        .windows(2)
-        .map(|w| w[0].distance(w[1]))
-        .fold(0.0, f64::max);
+    let len = longest_step(c);
     // A seed curve partly off the traced contacts (where a crossing runs into one, points within
     // the tolerance of both surfaces stray farther from it) can trace one again.
     let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, traced, near));
     let t = contact_curve_near(a, gap, uv, len, tol, chord_tol).filter(fresh)?;
     Some((t, len))
+}
+
+/// The longest segment of `c`: the step along the contacts traced from it.
+fn longest_step(c: &Polyline3) -> f64 {
+    c.points
+        .windows(2)
+        .map(|w| w[0].distance(w[1]))
+        .fold(0.0, f64::max)
 }
 
 /// The crossings beside traced contacts, found in pieces and carried on along them.

@@ -103,3 +103,32 @@ fn retraces(p: &[DVec3], i: usize, near: f64) -> bool {
     };
     near_any(p[j], std::slice::from_ref(&after), near)
 }
+
+/// The points of `c` a run `len` along it from each of its touching probes (its first, middle
+/// and last points; `on` tells which touch): inward from its ends, both ways from its middle.
+/// Where a probe lies on a branch point, the seed curve beside it runs along the contact.
+pub(super) fn step_in(c: &Polyline3, on: &[bool], len: f64) -> Vec<DVec3> {
+    let p = &c.points;
+    let n = p.len();
+    let walk = |from: usize, ahead: bool| {
+        let (mut i, mut run) = (from, 0.0);
+        while run < len {
+            let next = if ahead { i + 1 } else { i.checked_sub(1)? };
+            run += p.get(next)?.distance(p[i]);
+            i = next;
+        }
+        Some(p[i])
+    };
+    let ways = [
+        (0, true),
+        (n / 2, false),
+        (n / 2, true),
+        (n.wrapping_sub(1), false),
+    ];
+    let probe = [0, 1, 1, 2];
+    ways.iter()
+        .zip(probe)
+        .filter(|(_, k)| on.get(*k) == Some(&true))
+        .filter_map(|(&(from, ahead), _)| walk(from, ahead))
+        .collect()
+}
