@@ -20,265 +20,13 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use std::sync::Arc;
 
 mod surface_support;
-use surface_support::{
-    assert_chords_on, assert_meet_at, assert_same_bits, section_and_both_orders, summary,
+use surface_support::{assert_same_bits, section_and_both_orders};
+#[path = "surface_support/branch.rs"]
+mod branch;
+use branch::{
+    check, check_sloped, check_sloped_within, off_curve, on_line, patch, plate, root, sloped_patch,
+    MEET,
 };
-
-/// The product of two polynomials (coefficients from the constant term up).
-fn times(p: &[f64], q: &[f64]) -> Vec<f64> {
-    let mut r = vec![0.0; p.len() + q.len() - 1];
-    for (i, a) in p.iter().enumerate() {
-        for (j, b) in q.iter().enumerate() {
-            r[i + j] += a * b;
-        }
-    }
-    r
-}
-
-/// The radial profile at angle `th` for `d`: z(w) = k·w + d·w² − d·w⁴ − w³ with w = 2u − 1, from
-/// its power coefficients in u to Bernstein ones, b_i = Σ_{j ≤ i} C(i, j)/C(4, j)·a_j.
-fn profile(d: f64, th: f64, k: f64) -> Curve {
-    let w = [-1.0, 2.0];
-    let w2 = times(&w, &w);
-    let w3 = times(&w2, &w);
-    let w4 = times(&w3, &w);
-    let a: Vec<f64> = (0..5)
-        .map(|j| {
-            k * w.get(j).unwrap_or(&0.0) + d * w2.get(j).unwrap_or(&0.0)
-                - d * w4[j]
-                - w3.get(j).unwrap_or(&0.0)
-        })
-        .collect();
-    let choose = |n: usize, k: usize| (0..k).fold(1.0, |c, m| c * (n - m) as f64 / (m + 1) as f64);
-    let ctrl: Vec<DVec3> = (0..5)
-        .map(|i| {
-            let b: f64 = (0..=i).map(|j| choose(i, j) / choose(4, j) * a[j]).sum();
-            let r = 1.0 + 2.0 * i as f64 / 4.0;
-            DVec3::new(r * th.cos(), r * th.sin(), b)
-        })
-        .collect();
-    Curve::bspline(ctrl, 4, None, None).unwrap()
-}
-
-/// The patch for d running from `d0` at θ = 0 to `d1` at θ = π/2.
-fn patch(d0: f64, d1: f64) -> Surface {
-    sloped_patch(d0, d1, 0.0)
-}
-
-/// [`patch`] with k·w added to its height: it then touches and crosses the cone z = k·w (the
-/// line from (1, 0, −k) to (3, 0, k) revolved about z) where the flat patch meets z = 0.
-fn sloped_patch(d0: f64, d1: f64, k: f64) -> Surface {
-    let arc = |r: f64, z: f64| {
-        Arc::new(Curve::arc(DVec3::new(0.0, 0.0, z), r, 0.0, FRAC_PI_2, Some(DVec3::Z)).unwrap())
-    };
-    Surface::boundary([
-        Arc::new(profile(d0, 0.0, k)),
-        arc(3.0, k - 1.0),
-        Arc::new(profile(d1, FRAC_PI_2, k)),
-        arc(1.0, 1.0 - k),
-    ])
-    .unwrap()
-}
-
-/// The crossing's w for `d`.
-fn root(d: f64) -> f64 {
-    2.0 * d / (1.0 + (1.0 + 4.0 * d * d).sqrt())
-}
-
-/// The length of the crossing r = 2 + W(d(θ)), z = k·W over [0, π/2]: ∫ √(r² + (1 + k²)·r′²) dθ
-/// by composite Simpson on 4096 panels (the integrand is smooth; error far under 1e-9).
-fn crossing_length(d0: f64, d1: f64, k: f64) -> f64 {
-    let dd = (d1 - d0) / FRAC_PI_2;
-    let f = |th: f64| {
-        let d = d0 + dd * th;
-        let w = root(d);
-        // From d(1 − w²) = w: w′(d) = (1 − w²)/(1 + 2dw).
-        let dr = (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd;
-        let r = 2.0 + w;
-        (r * r + (1.0 + k * k) * dr * dr).sqrt()
-    };
-    let n = 4096;
-    let h = FRAC_PI_2 / n as f64;
-    let mut s = f(0.0) + f(FRAC_PI_2);
-    for k in 1..n {
-        s += f(k as f64 * h) * if k % 2 == 1 { 4.0 } else { 2.0 };
-    }
-    s * h / 3.0
-}
-
-/// The contact and the crossing of [`patch`]`(d0, d1)` with z = 0: two open curves from θ = 0 to
-/// θ = π/2 (to 1e-9), the contact on r = 2 and the crossing on r = 2 + W(d(θ)) (to
-/// [`on_contact`] and [`on_crossing`]), both with a point within `meet` of the branch point r = 2, d(θ) = 0 where
-/// they meet (a point within 1e-9 of both surfaces near it could be ∛1e-9 off either; it is
-/// solved there), lengths π and the quadrature's to 1e-6, every point within 1e-9 of the plane
-/// and of the patch (its height difference times the cosine of the patch's slope).
-fn check(name: &str, r: &[Polyline3], (d0, d1): (f64, f64), meet: f64) {
-    check_sloped(name, r, (d0, d1), 0.0, meet);
-}
-
-/// How near the branch point both curves come (and how far from the closed form either may be
-/// there): it is solved where the gap's Hessian vanishes (inside the patch: 8.9e-10 the most
-/// seen, patch ∩ cone), or, on the patch's edge θ = 0 or π/2, where the gap's second derivative
-/// along that edge does (4.5e-11 seen from the patch's parameters; 6.0e-13 from the plate's,
-/// the gap then taken along the patch's edge from the patch to the plate).
-const MEET: f64 = 2e-9;
-
-/// How far a crossing point may be from the closed form (its distance in space to the curve,
-/// [`off_curve`]) where the crossing is W from the contact: 1e-9 (GEOMTOL) where W ≥ 1e-3, nearer the branch point the rounding of the gap
-/// (about 4e-16 here) over its slope across the crossing (W², the gap across being
-/// w²(d(1 − w²) − w)) with a margin of 5: where the surfaces part more slowly than that no
-/// computation tells the crossing's point, nor ever farther than W/4 (the contact's side).
-/// Seen: up to 1.3e-6 at W = 1.8e-5 (0.14e-3 from the branch point), 1.3e-7 at W = 5.7e-5;
-/// on c948918, 3.3e-5 at W = 5.3e-4 and 5e-8 where W > 3e-2 (points whose gap came within
-/// 0.01·tol were taken for the crossing's, however flat the gap across it).
-fn on_crossing(w: f64) -> f64 {
-    (2e-15 / (w * w)).min(0.25 * w.abs()).max(1e-9)
-}
-
-/// How far a contact point may be from r = 2: 2e-8 (seen: 1.83e-8 at the contact's ends on the
-/// patch's edges, traced from the plate's parameters; 5.5e-9 elsewhere away from the branch
-/// point), nearer the branch point 2e-11/W (the gap across the contact, d·w², flattens with d,
-/// about W: seen 8.1e-8 at W = 9.8e-5, patch ∩ cone), never farther than W/4.
-fn on_contact(w: f64) -> f64 {
-    (2e-11 / w.abs()).min(0.25 * w.abs()).max(2e-8)
-}
-
-/// [`check`] for [`sloped_patch`] against the cone z = k·w (the plane z = 0 for k = 0): the
-/// distance to the cone is |z − k·w|·cos(atan k) (the cone is straight along its generators, and
-/// a point's nearest on it lies in its meridian plane).
-fn check_sloped(name: &str, r: &[Polyline3], d: (f64, f64), k: f64, meet: f64) {
-    check_sloped_within(name, r, d, k, meet, 1e-6);
-}
-
-/// [`check_sloped`] for curves densified within `chord`: chords within `chord` + 1e-9 of both
-/// surfaces, and lengths to 1e-6 over the closed form's but, where `chord` is above 1e-6, up
-/// to its length·`chord`/3 under it (a chord whose middle is h from a curve of curvature κ
-/// is shorter than its arc by about κ·h/3 of it, and κ ≤ 1 here: the contact's 1/2, the
-/// crossing's near it).
-fn check_sloped_within(
-    name: &str,
-    r: &[Polyline3],
-    (d0, d1): (f64, f64),
-    k: f64,
-    meet: f64,
-    chord: f64,
-) {
-    assert_eq!(r.len(), 2, "{name}: {}", summary(r));
-    let d = |th: f64| d0 + (d1 - d0) * th / FRAC_PI_2;
-    let polar = |p: &DVec3| (p.x.hypot(p.y), p.y.atan2(p.x));
-    let contact = r.iter().find(|c| on_line(c, (d0, d1), 0.0, k, meet));
-    let crossing = r.iter().find(|c| on_line(c, (d0, d1), 1.0, k, meet));
-    let (Some(contact), Some(crossing)) = (contact, crossing) else {
-        panic!("{name}: {}", summary(r));
-    };
-    assert!(!std::ptr::eq(contact, crossing), "{name}: {}", summary(r));
-    // On the curves themselves, not only within the tolerance of both surfaces (which, where
-    // they meet at a small angle, leaves a point far off the curve): see ON_CROSSING, ON_CONTACT.
-    for (c, kr, allow) in [
-        (crossing, 1.0, on_crossing as fn(f64) -> f64),
-        (contact, 0.0, on_contact),
-    ] {
-        for p in &c.points {
-            let w = root(d(polar(p).1));
-            let off = off_curve(p, (d0, d1), kr, k);
-            assert!(
-                off <= allow(w).max(meet),
-                "{name}: {p} {off:e} off (W = {w:e})"
-            );
-        }
-    }
-    let th = -d0 / (d1 - d0) * FRAC_PI_2;
-    let branch = DVec3::new(2.0 * th.cos(), 2.0 * th.sin(), 0.0);
-    assert_meet_at(name, &[contact, crossing], branch, meet);
-    for (c, len) in [(contact, PI), (crossing, crossing_length(d0, d1, k))] {
-        assert!(!c.closed, "{name}: {}", summary(r));
-        for p in &c.points {
-            let (r, th) = polar(p);
-            let [off, off_patch] = off_both(p, (d0, d1), k);
-            assert!(off <= 1e-9, "{name}: {p} off the plane or cone");
-            assert!(off_patch <= 1e-9, "{name}: {p} off the patch");
-            assert!((1.0..=3.0).contains(&r), "{name}: {p}");
-            assert!((-1e-9..=FRAC_PI_2 + 1e-9).contains(&th), "{name}: {p}");
-        }
-        let ends = [c.points[0], c.points[c.points.len() - 1]].map(|p| polar(&p).1);
-        let (a, b) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
-        assert!(
-            a.abs() <= 1e-9 && (b - FRAC_PI_2).abs() <= 1e-9,
-            "{name}: {}",
-            summary(r)
-        );
-        let short = if chord > 1e-6 { len * chord / 3.0 } else { 0.0 };
-        let l = c.length();
-        assert!(
-            l <= len + 1e-6 && l >= len - 1e-6 - short,
-            "{name}: {} vs {len}",
-            summary(r)
-        );
-    }
-    // Densified within `chord` of curves on both surfaces: no chord cuts across anything.
-    let off = |p: DVec3| off_both(&p, (d0, d1), k).into_iter().fold(0.0, f64::max);
-    assert_chords_on(name, r, off, chord + 1e-9);
-}
-
-/// How far `p` is, in space, from the closed-form curve r = 2 + kr·W(d(θ)), z = kc·kr·W over
-/// 0 ≤ θ ≤ π/2 (kr = 0 the contact r = 2, kr = 1 the crossing; kc the cone's slope), and on
-/// its closed form's extension a hair past the patch's edges, as `off_both` measures the
-/// surfaces (an end 4.6e-10 outside the edge θ = 0, on the steep crossing's extension, is
-/// 4.8e-9 from its end at θ = 0 but 4.6e-10 from the curve; the ends' θ are checked apart):
-/// its nearest point found by Newton on the curve's parameter from the point's own θ.
-fn off_curve(p: &DVec3, (d0, d1): (f64, f64), kr: f64, kc: f64) -> f64 {
-    let dd = (d1 - d0) / FRAC_PI_2;
-    let at = |t: f64| {
-        let d = d0 + dd * t;
-        let w = root(d);
-        let dw = (1.0 - w * w) / (1.0 + 2.0 * d * w) * dd;
-        let (r, dr) = (2.0 + kr * w, kr * dw);
-        let c = DVec3::new(r * t.cos(), r * t.sin(), kc * kr * w);
-        let dc = DVec3::new(
-            dr * t.cos() - r * t.sin(),
-            dr * t.sin() + r * t.cos(),
-            kc * dr,
-        );
-        (c, dc)
-    };
-    let span = |t: f64| t.clamp(-1e-6, FRAC_PI_2 + 1e-6);
-    let mut t = span(p.y.atan2(p.x));
-    for _ in 0..8 {
-        let (c, dc) = at(t);
-        t = span(t + (*p - c).dot(dc) / dc.length_squared());
-    }
-    p.distance(at(t).0)
-}
-
-/// Whether every point of `c` is on the curve r = 2 + kr·W(d(θ)) (kr = 0 the contact, 1 the
-/// crossing) on the cone of slope `kc`: within W/4 in r (which tells the crossing from the
-/// contact away from the branch point), or within `meet` of the curve in space. Beside the
-/// branch point that is the distance to the curve, not the difference in r: where the crossing
-/// is steep (d 0..16: r′/r about 5 at θ = 0) the branch point's solved end, 4.7e-10 from the
-/// crossing and 1.4e-9 from the branch point, is 2.4e-9 from it in r, and no curve was taken
-/// for the crossing.
-fn on_line(c: &Polyline3, (d0, d1): (f64, f64), kr: f64, kc: f64, meet: f64) -> bool {
-    c.points.iter().all(|p| {
-        let (r, th) = (p.x.hypot(p.y), p.y.atan2(p.x));
-        let w = root(d0 + (d1 - d0) * th / FRAC_PI_2);
-        (r - 2.0 - kr * w).abs() <= 0.25 * w.abs() || off_curve(p, (d0, d1), kr, kc) <= meet
-    })
-}
-
-/// How far `p` is from the plane or cone z = k·w and from the patch (its height difference
-/// times the cosine of its slope), w = r − 2.
-fn off_both(p: &DVec3, (d0, d1): (f64, f64), k: f64) -> [f64; 2] {
-    let (r, th) = (p.x.hypot(p.y), p.y.atan2(p.x));
-    let (w, dt) = (r - 2.0, d0 + (d1 - d0) * th / FRAC_PI_2);
-    let z = k * w + w * w * (dt * (1.0 - w * w) - w);
-    let dz_dr = k + 2.0 * dt * w - 4.0 * dt * w.powi(3) - 3.0 * w * w;
-    let dz_dth = w * w * (1.0 - w * w) * (d1 - d0) / FRAC_PI_2 / r;
-    let cos = 1.0 / (1.0 + dz_dr * dz_dr + dz_dth * dz_dth).sqrt();
-    [
-        (p.z - k * w).abs() / (1.0 + k * k).sqrt(),
-        (p.z - z).abs() * cos,
-    ]
-}
 
 /// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the
 /// plate z = 0 (a square wider than the patch), the seeding meshes made within `seed` and the
@@ -298,36 +46,6 @@ fn both_curves_come_back((d0, d1): (f64, f64), seed: f64, plate_first: bool) {
         check(&name, &r, (d0, d1), MEET);
         let again = run();
         assert_same_bits(&name, &again, &r);
-    }
-}
-
-/// The plate z = 0, a square wider than the patch.
-fn plate() -> Surface {
-    Surface::plane(vec![
-        DVec3::new(-4.0, -4.0, 0.0),
-        DVec3::new(4.0, -4.0, 0.0),
-        DVec3::new(4.0, 4.0, 0.0),
-        DVec3::new(-4.0, 4.0, 0.0),
-    ])
-    .unwrap()
-}
-
-/// [`check`] on each run of [`section_and_both_orders`] of `patch(d0, d1)` against [`plate`] at
-/// `seed` (curves densified within 1e-6, each run twice for the same bits), the name of each
-/// failing run pushed to `failed` (the check's message goes to stderr from the panic).
-fn list_failing_runs(failed: &mut Vec<String>, tag: &str, (d0, d1): (f64, f64), seed: f64) {
-    let s = patch(d0, d1);
-    let plate = plate();
-    for (name, run) in section_and_both_orders("patch", &s, &plate, seed, 1e-6) {
-        let name = format!("{tag} seed {seed} {name}");
-        let once = || {
-            let r = run();
-            check(&name, &r, (d0, d1), MEET);
-            assert_same_bits(&name, &run(), &r);
-        };
-        if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
-            failed.push(name);
-        }
     }
 }
 
@@ -688,7 +406,7 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone_at_the_users_chordtol
 /// [`a_crossing_near_an_edge_seen_from_the_plate_at_seed_1e_3`].
 ///
 /// With both sixth-round changes merged (stage-s18) all 8 runs pass, and the test is no longer
-/// ignored; the wider grid below holds the family's open runs.
+/// ignored; the wider grid (`surface_contact_branch_grid`) holds the family's open runs.
 #[test]
 fn a_crossing_through_a_curved_contact_near_an_edge_comes_back_whole_with_it() {
     let mut failed = Vec::new();
@@ -717,12 +435,12 @@ fn a_crossing_near_an_edge_seen_from_the_plate_at_seed_1e_3() {
 }
 
 /// A crossing through a curved contact 2e-2 along it from the patch's edge θ = 0 (the near-edge
-/// family below), where the meshes' section holds a lens along the contact beside the branch
-/// point: the crossing's seed curve runs out along the contact to θ ≈ 0.28 and back, none of its
-/// first, middle and last points touching. On c7e144c these four runs failed: at seed 1e-2 the
-/// section came back as one curve (the crossing 6.18 long, 1.09 of it the contact out and
-/// back; the rest of the contact lost), both orders with the crossing so and the contact;
-/// at seed 5e-3, plate ∩ patch, the same.
+/// family, `surface_contact_branch_grid`), where the meshes' section holds a lens along the contact
+/// beside the branch point: the crossing's seed curve runs out along the contact to θ ≈ 0.28 and
+/// back, none of its first, middle and last points touching. On c7e144c these four runs failed: at
+/// seed 1e-2 the section came back as one curve (the crossing 6.18 long, 1.09 of it the contact out
+/// and back; the rest of the contact lost), both orders with the crossing so and the contact; at
+/// seed 5e-3, plate ∩ patch, the same.
 #[test]
 fn a_crossing_whose_seed_runs_along_the_contact_and_back_comes_back_whole_with_it() {
     let d0 = -16.0 * (0.5 * 2e-2) / FRAC_PI_2;
@@ -754,18 +472,18 @@ fn a_crossing_joined_across_the_branch_point_keeps_its_joint_short() {
     both_curves_come_back((d0, d0 + 16.0), 5e-3, true);
 }
 
-/// An inner branch point near the edge θ = 0 (d = −0.05..0.5: θ = π/22), seen from the plate
-/// at seeds 1e-2 and 2e-3 (two runs of the second grid below). On f9f728b the contact came back
-/// 3.1438 (1e-2) or 3.1423 (2e-3) long, its ends in place: a spur out to 3.2e-4 beside the
-/// branch point and back, its points at r − 2 ≈ 2W/3, on the gap's other extremum between the
-/// contact and the crossing (the gap across, d·w² − w³ near the branch point, has a maximum of
-/// 4d³/27 there, within the tolerance for |d| up to 1.5e-3). The contact walk (`contact/line.rs`)
-/// settled there: at 1e-2 a step 0.25 long from θ = 0.27 (its tangent running off the
-/// contact's convex side, onto the crossing's) landed on that extremum at θ = 0.1441, and
+/// An inner branch point near the edge θ = 0 (d = −0.05..0.5: θ = π/22), seen from the plate at
+/// seeds 1e-2 and 2e-3 (two runs of the second grid, `surface_contact_branch_grid`). On f9f728b the
+/// contact came back 3.1438 (1e-2) or 3.1423 (2e-3) long, its ends in place: a spur out to 3.2e-4
+/// beside the branch point and back, its points at r − 2 ≈ 2W/3, on the gap's other extremum
+/// between the contact and the crossing (the gap across, d·w² − w³ near the branch point, has a
+/// maximum of 4d³/27 there, within the tolerance for |d| up to 1.5e-3). The contact walk
+/// (`contact/line.rs`) settled there: at 1e-2 a step 0.25 long from θ = 0.27 (its tangent running
+/// off the contact's convex side, onto the crossing's) landed on that extremum at θ = 0.1441, and
 /// densifying followed it out and back; at 2e-3 the midpoint of a chord 0.064 long spanning the
-/// branch point did. A settled point whose gap is larger, not smaller, than beside it (h·h″ < 0,
-/// h above its rounding) is now searched past, 2a/b = √(6|h/h″|) either way, and the contact
-/// found there (the surfaces touching) taken instead (`line::settle_on_contact`).
+/// branch point did. A settled point whose gap is larger, not smaller, than beside it (h·h″ < 0, h
+/// above its rounding) is now searched past, 2a/b = √(6|h/h″|) either way, and the contact found
+/// there (the surfaces touching) taken instead (`line::settle_on_contact`).
 #[test]
 fn a_contact_past_an_inner_branch_point_near_an_edge_has_no_spur() {
     for seed in [1e-2, 2e-3] {
@@ -796,161 +514,4 @@ fn a_crossing_from_a_branch_point_on_an_edge_at_d_0_to_1_comes_back_whole() {
     for seed in [2e-2, 1e-2, 5e-3, 2e-3] {
         both_curves_come_back((0.0, 1.0), seed, true);
     }
-}
-
-/// How wide the near-edge family is: the test above over a wider grid, s ∈ {2.5e-3, 5e-3,
-/// 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2} along the contact from the edge θ = 0 (d running by 16 over
-/// the quarter turn), the branch point on the edge (d = 0..0.3, 0.3..0, 0..16, 16..0) and the
-/// inner one (−0.1..0.3), each at seeds 1e-2, 5e-3 and 1e-3 in the section and both orders:
-/// 108 runs (about 20 s in a release build).
-///
-/// On c7e144c 22 fail. Nine were every run at s = 2e-2: a seed curve of the crossing held a
-/// lens of the contact (two sides of the meshes' section closer than a cell, from the branch
-/// point out to θ ≈ 0.28 and back) refined onto the contact out and back, and `regroup` kept it
-/// whole, none of its first, middle and last points touching: the crossing came back 1.09
-/// too long (the contact lost from the section at seed 1e-2), or with a closed 1.145-long
-/// loop cut from it by `join` (seed 1e-3). `regroup` now probes such a curve where it folds
-/// back (`fold_probes`), and all nine are mended; three runs at s = 2e-2 then fail on what the
-/// spur had hidden (below). Three more were s = 2.5e-3 at seed 1e-3, all three runs: a seed
-/// curve along the contact and on along the stub, all three probes touching (the stub parts
-/// from the plane at a sine under 1e-3), kept whole beside the traced contact (three curves,
-/// the contact twice); `regroup` now cuts such a curve off the contact.
-///
-/// On 208b8a0, 12 of 108 failed (13 before fb7e2b6, which mended the stray stub at s = 1.5e-2
-/// seed 1e-2 in the section). Mended since: four section runs (s = 1.5e-2, 2e-2, 3e-2 at seed
-/// 5e-3: 6.5e-6, 9.0e-6, 1.0e-5 off at |W| ≈ 3.5e-4; s = 2e-2 seed 1e-3, 2.8e-8 at W = 4.6e-3),
-/// section midpoints where Newton crawled onto the crossing beside the contact's double zero
-/// and stopped within 0.01·tol of the plane, now taken across the curve onto the distance's
-/// root (`refine::plane_across`); s = 1.5e-2 seed 1e-3 plate ∩ patch (a 6-point copy of the
-/// stub's end, a contact midpoint stepped across by stale derivatives, i13c); s = 5e-2 seed
-/// 5e-3 plate ∩ patch (the crossing 12.26 long, a seam of `join_ends` run off along the
-/// contact, i13d); d = 0..16 seed 1e-3 plate ∩ patch (a 15-point piece of the crossing, 0.056
-/// long; mended by these merges, not traced which).
-///
-/// Mended on stage-s18 after that: two section runs, s = 1e-2 and 3e-2 at seed 1e-2 (a
-/// crossing point 3.8e-8 off at W = −4.5e-3, 5.2e-8 at W = −5.5e-3): section midpoints whose
-/// Newton stopped 4e-12 and 8e-12 off the plane, where `plane_across`'s own Newton step landed
-/// on the root to rounding (1e-17) and, finding no sign change past it, was dropped (it now
-/// keeps it, i13a). Two plate ∩ patch runs, s = 3e-2 seed 1e-2 and s = 2e-2 seed 1e-3: the
-/// contact's end on the far edge θ = π/2 2.09e-8 and 2.81e-8 off r = 2 (allowed 2e-8). Traced
-/// from the plate's parameters (`regroup`'s contact walk), the last 1.6e-4 to the patch's edge
-/// were straight steps (the bisection for the end, shorter than √(tol·size)) along the last
-/// settled chord's line, which leans off the circle by half its turn; they now follow the arc
-/// the walk turns by (ends 8e-13 and 4e-12 off, i13d). And d = 0..16 seed 5e-3, plate ∩ patch,
-/// mended in the check (i13c): no curve was taken for the crossing, because their shared end,
-/// the branch point solved 1.4e-9 from (2, 0, 0), 4.7e-10 from the crossing in space, 1.2e-9
-/// from the contact and 1.4e-19 off both surfaces (all in closed form), is 2.4e-9 off the
-/// crossing in r, and `on_line` measured `MEET` in r across a crossing steep there (r′/r about
-/// 5); it now measures the distance to the curve (`off_curve`), and the run passes whole.
-///
-/// All 108 runs pass on stage-s18, and the test is no longer ignored; a second grid, below,
-/// holds the open runs found past this one.
-///
-/// The grid runs as six tests, one per seed and family (s, or the branch points' d), sharing
-/// [`runs_of_the_family_pass`]: in one test it took 496 s of CI's debug build on one core.
-const WIDER_S: [f64; 7] = [2.5e-3, 5e-3, 1e-2, 1.5e-2, 2e-2, 3e-2, 5e-2];
-
-/// The branch points of the wider grid (see [`WIDER_S`]): on the edge, and the inner one.
-const WIDER_D: [(f64, f64); 5] = [
-    (0.0, 0.3),
-    (0.3, 0.0),
-    (0.0, 16.0),
-    (16.0, 0.0),
-    (-0.1, 0.3),
-];
-
-/// [`list_failing_runs`] at `seed` for each distance `s` along the contact from the edge θ = 0
-/// (d running by 16 over the quarter turn from −16·(s/2)/(π/2)), then for each d range of `d`;
-/// fails listing every failing run.
-fn runs_of_the_family_pass(seed: f64, s: &[f64], d: &[(f64, f64)]) {
-    let mut failed = Vec::new();
-    for &s in s {
-        let d0 = -16.0 * (0.5 * s) / FRAC_PI_2;
-        list_failing_runs(&mut failed, &format!("s {s}"), (d0, d0 + 16.0), seed);
-    }
-    for &d in d {
-        list_failing_runs(&mut failed, &format!("d {}..{}", d.0, d.1), d, seed);
-    }
-    assert!(
-        failed.is_empty(),
-        "failing runs ({}): {failed:?}",
-        failed.len()
-    );
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_2_over_s() {
-    runs_of_the_family_pass(1e-2, &WIDER_S, &[]);
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_2_over_d() {
-    runs_of_the_family_pass(1e-2, &[], &WIDER_D);
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_5e_3_over_s() {
-    runs_of_the_family_pass(5e-3, &WIDER_S, &[]);
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_5e_3_over_d() {
-    runs_of_the_family_pass(5e-3, &[], &WIDER_D);
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_3_over_s() {
-    runs_of_the_family_pass(1e-3, &WIDER_S, &[]);
-}
-
-#[test]
-fn the_near_edge_family_over_a_wider_grid_comes_back_whole_seed_1e_3_over_d() {
-    runs_of_the_family_pass(1e-3, &[], &WIDER_D);
-}
-
-/// A second grid, past the first (lead, stage-s18, once the first passed whole): s ∈ {4e-3,
-/// 7.5e-3, 1.2e-2, 2.5e-2, 4e-2, 7e-2} along the contact from the edge θ = 0, the branch
-/// point on the edge with d = 0..1, and inner branch points near the edge (d = −0.05..0.5,
-/// θ = π/22) and far from it (d = −0.3..0.1, θ = 3π/8), at seeds 2e-2, 1e-2, 5e-3,
-/// 2e-3 and 1e-3, in the section and both orders: 135 runs. All 90 runs of the s family pass,
-/// and every section and patch ∩ plate run. On f9f728b 6 of 135 failed, all plate ∩ patch (the
-/// gap taken from the plate's parameters), all mended on stage-s19 and now passing:
-/// - d = 0..1 at seeds 2e-2, 1e-2, 5e-3, 2e-3: three curves; not the crossing in two pieces,
-///   but the crossing short of the branch point and a seed curve along the contact kept whole,
-///   no contact traced from it in `regroup` (i13c); see
-///   [`a_crossing_from_a_branch_point_on_an_edge_at_d_0_to_1_comes_back_whole`];
-/// - d = −0.05..0.5 at seeds 1e-2 and 2e-3: the contact 3.1438 (1e-2) or 3.1423 (2e-3) long
-///   against π, ends in place, a spur beside the branch point on the gap's other extremum
-///   (i13d); see [`a_contact_past_an_inner_branch_point_near_an_edge_has_no_spur`].
-///
-/// The grid runs as five tests, one per seed, sharing [`runs_of_the_family_pass`], so that
-/// libtest runs them side by side.
-const SECOND_S: [f64; 6] = [4e-3, 7.5e-3, 1.2e-2, 2.5e-2, 4e-2, 7e-2];
-
-/// The branch points of the second grid (see [`SECOND_S`]): on the edge, near it, far from it.
-const SECOND_D: [(f64, f64); 3] = [(0.0, 1.0), (-0.05, 0.5), (-0.3, 0.1)];
-
-#[test]
-fn a_second_grid_past_the_first_comes_back_whole_seed_2e_2() {
-    runs_of_the_family_pass(2e-2, &SECOND_S, &SECOND_D);
-}
-
-#[test]
-fn a_second_grid_past_the_first_comes_back_whole_seed_1e_2() {
-    runs_of_the_family_pass(1e-2, &SECOND_S, &SECOND_D);
-}
-
-#[test]
-fn a_second_grid_past_the_first_comes_back_whole_seed_5e_3() {
-    runs_of_the_family_pass(5e-3, &SECOND_S, &SECOND_D);
-}
-
-#[test]
-fn a_second_grid_past_the_first_comes_back_whole_seed_2e_3() {
-    runs_of_the_family_pass(2e-3, &SECOND_S, &SECOND_D);
-}
-
-#[test]
-fn a_second_grid_past_the_first_comes_back_whole_seed_1e_3() {
-    runs_of_the_family_pass(1e-3, &SECOND_S, &SECOND_D);
 }
