@@ -191,13 +191,30 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone() {
 /// The test above past its one seed (i13a-s19): the patch ∩ cone branch point for the d ranges
 /// of the plate's grids (d = −0.1..0.3 inside, 0..0.3 and 0.3..0 on an edge, −0.05..0.5 near
 /// it, −0.3..0.1 far from it) at seeds 2e-2, 1e-2, 5e-3, 2e-3 and 1e-3, in both orders: 50
-/// runs. Open, not traced (12 fail; the branch point at θ = −d0/(d1 − d0)·π/2):
+/// runs. Open (12 fail; the branch point at θ = −d0/(d1 − d0)·π/2):
 /// - every run at seed 1e-3 (10): the contact whole (π to 1e-6), the crossing in pieces, some
 ///   overlapping (copies of stretches 0.15 to 0.31 long, some out from the edge θ = 0 and
 ///   back; in patch ∩ cone d = −0.3..0.1 a 1263-point piece 1.688 long with both ends beside
 ///   the branch point), and lone points or short pieces (1 to 17 points) within 1.6e-2 of the
 ///   branch point, 2.4e-4 to 4.2e-4 off r = 2; worst, cone ∩ patch d = 0.3..0: 40 lone points
-///   along the contact every π/128 and the crossing in 20 pieces (one of 16015 points);
+///   along the contact every π/128 and the crossing in 20 pieces (one of 16015 points).
+///   Traced (i13d-s19b, d = −0.1..0.3, both orders alike up to `regroup_pair`): it starts in
+///   the seed. At 1e-3 both seeding meshes have a vertex on the contact every π/128, but the
+///   meshes' curve (591 points, 5.324 long: the crossing from θ = π/2 to 21π/128, then the
+///   contact's side) does not run along the contact between them: it is a sawtooth through
+///   those vertices out to |r − 2| ≈ 0.03 (where the surfaces part by about d·w², under the
+///   meshes' 1e-3), with 41 near-empty loops at the vertices and 3 loops 0.15 to 0.19 long in
+///   the wedge by θ = 0. At 2e-3 (all 10 runs pass) 212 of its 401 points, θ = 0.12..1.03,
+///   are within 1e-6 of r = 2. `refine_pair_curve` takes each sawtooth point onto both surfaces, but into
+///   the band beside the contact where they are within GEOMTOL (the gap w²(d(1 − w²) − w) at
+///   most 4.0e-10 there): 44077 points, 6.856 long (1825 and 5.232 at 2e-3), 42734 of them
+///   more than 1e-6 off both the contact and the crossing, 31099 densified between θ = 0.3436
+///   and the branch point π/8 alone, up to 5.9e-4 off r = 2 within 1.6e-2 of it; it runs on
+///   and off the crossing (θ = 0.246..0.252 three times). `regroup_pair` traces the contact
+///   whole from it but keeps the rest: the overlapping crossing stretches, and the band's
+///   points as the lone points and stubs. The user's-CHORDTOL test below seeds at 1e-3 from
+///   the same meshes (seed tolerance = CHORDTOL), so from this sawtooth; past the seed it was
+///   not traced here;
 /// - patch ∩ cone d = 0.3..0 seed 2e-2: eight curves, six of them pieces of 1 to 151 points
 ///   about the branch point on the edge θ = π/2;
 /// - cone ∩ patch d = −0.05..0.5 seed 1e-2: a 2147-point curve from θ = π/2 back to it, 6.4236
