@@ -459,6 +459,7 @@ fn list_failing_runs(failed: &mut Vec<String>, (d0, d1): (f64, f64), seed: f64) 
 ///   x = 0.998..1.004, y = 4.2e-4..5e-4 lie farther than that from it, and the stretch off it
 ///   is kept as a crossing with no check that it lies on one (no sign change of the gap across
 ///   it).
+///
 /// A cause-level fix would find a crossing's midpoint beside a branch point across the chord
 /// (towards the sign change, not the contact) or not densify a chord whose midpoints land
 /// where neither curve is; neither was tried (round of 40 min).
