@@ -5,10 +5,11 @@
 //! past ~800 lines) unchanged: a test "above" in these docs is one of that file's.
 
 mod surface_support;
-use surface_support::{assert_same_bits, section_and_both_orders};
+use lispcad::geom::mesh::Polyline3;
+use surface_support::section_and_both_orders;
 #[path = "surface_support/branch.rs"]
 mod branch;
-use branch::{check, check_sloped_within, patch, plate, MEET};
+use branch::{check, check_sloped_within, list_if_failing, patch, plate, MEET};
 use std::f64::consts::FRAC_PI_2;
 
 /// [`check`] on each run of [`section_and_both_orders`] of `patch(d0, d1)` against [`plate`] at
@@ -19,14 +20,8 @@ fn list_failing_runs(failed: &mut Vec<String>, tag: &str, (d0, d1): (f64, f64), 
     let plate = plate();
     for (name, run) in section_and_both_orders("patch", &s, &plate, seed, 1e-6) {
         let name = format!("{tag} seed {seed} {name}");
-        let once = || {
-            let r = run();
-            check(&name, &r, (d0, d1), MEET);
-            assert_same_bits(&name, &run(), &r);
-        };
-        if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
-            failed.push(name);
-        }
+        let check = |name: &str, r: &[Polyline3]| check(name, r, (d0, d1), MEET);
+        list_if_failing(failed, name, run, check);
     }
 }
 
@@ -220,14 +215,10 @@ fn runs_at_the_users_chordtol_pass(tol: f64) {
         let s = patch(d0, d1);
         for (name, run) in section_and_both_orders("patch", &s, &plate, tol, tol) {
             let name = format!("{name} d = {d0}..{d1} CHORDTOL {tol}");
-            let once = || {
-                let r = run();
-                check_sloped_within(&name, &r, (d0, d1), 0.0, MEET, tol);
-                assert_same_bits(&name, &run(), &r);
+            let check = |name: &str, r: &[Polyline3]| {
+                check_sloped_within(name, r, (d0, d1), 0.0, MEET, tol);
             };
-            if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
-                failed.push(name);
-            }
+            list_if_failing(&mut failed, name, run, check);
         }
     }
     let n = failed.len();

@@ -5,7 +5,7 @@
 //! both curves against their closed forms.
 #![allow(dead_code)] // each test file uses its own part of this module
 
-use crate::surface_support::{assert_chords_on, assert_meet_at, summary};
+use crate::surface_support::{assert_chords_on, assert_meet_at, assert_same_bits, summary};
 use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
 use lispcad::geom::surface::Surface;
@@ -278,4 +278,22 @@ pub fn plate() -> Surface {
         DVec3::new(-4.0, 4.0, 0.0),
     ])
     .unwrap()
+}
+
+/// One run of a sweep: `run` twice, the first result checked by `check` and the second the same
+/// bits; a failure (any panic) is listed in `failed` by `name`, so a sweep reports all of its.
+pub fn list_if_failing(
+    failed: &mut Vec<String>,
+    name: String,
+    run: impl Fn() -> Vec<Polyline3>,
+    check: impl Fn(&str, &[Polyline3]),
+) {
+    let once = || {
+        let r = run();
+        check(&name, &r);
+        assert_same_bits(&name, &run(), &r);
+    };
+    if std::panic::catch_unwind(std::panic::AssertUnwindSafe(once)).is_err() {
+        failed.push(name);
+    }
 }
