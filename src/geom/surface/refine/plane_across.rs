@@ -16,9 +16,9 @@ use glam::{DVec2, DVec3};
 /// the line through `uv` along which it grows fastest in space, bracketed from Newton's 1-D
 /// step (or past it by twice the secant's estimate of what is left) and solved by the
 /// Illinois method (Newton's step itself where it lands within the distance's rounding). None
-/// where the point is already as near as the distance's rounding tells,
-/// its Newton step is within 1e-3·`tol`, the step does not cut the distance eightfold (a
-/// contact's even root), no sign change lies within `reach`, or the line leaves `s`.
+/// where the point is already as near as the distance's rounding tells, its Newton step is
+/// within 1e-3·`tol`, the step does not cut the distance eightfold (a contact's even root), no
+/// sign change lies within `reach`, or the line leaves `s`.
 pub(super) fn onto_plane_crossing(
     s: &Patch,
     (uv, at): (DVec2, DVec3),
