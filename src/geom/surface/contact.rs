@@ -17,6 +17,7 @@
 
 mod alongside;
 mod branch;
+mod copies;
 mod fold;
 mod line;
 mod ridge;
@@ -479,7 +480,8 @@ impl Crossings<'_> {
     ) -> Vec<Polyline3> {
         let (seed_tol, tol, chord_tol) = self.tols;
         let unfold = |c: &Polyline3| {
-            alongside::unfold_overshoots(self.a, self.gap, c.clone(), tol, chord_tol)
+            let c = alongside::unfold_overshoots(self.a, self.gap, c.clone(), tol, chord_tol);
+            copies::without_retraces(self.a, self.gap, c, tol, chord_tol)
         };
         let mut pieces: Vec<Polyline3> = cut.iter().map(|x| unfold(&x.0)).collect();
         self.extend(&mut pieces, &cut);
@@ -510,7 +512,20 @@ impl Crossings<'_> {
             self.extend(&mut pieces, &found);
         }
         let reach = 2.0 * self.len;
-        let joined = alongside::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
+        // Several seed curves can refine onto one stretch of a crossing (at a CHORDTOL as coarse
+        // as the contact's band): its copies go before joining, which would double back over them
+        // or leave them beside it; what lay between pieces only until they were joined (a stub
+        // on the crossing between two ends) goes after. No surface is evaluated where nothing
+        // is cut.
+        let (pieces, cut) = copies::without_copies(pieces, self.near);
+        let mut joined = alongside::join_ends(self.a, self.gap, pieces, reach, tol, chord_tol);
+        if cut {
+            let (pieces, again) = copies::without_copies(joined, self.near);
+            joined = pieces;
+            if again {
+                joined = alongside::join_ends(self.a, self.gap, joined, reach, tol, chord_tol);
+            }
+        }
         branch::run_into(
             (self.a, self.other),
             self.gap,
