@@ -288,9 +288,10 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone_at_the_users_chordtol
 /// the crossing was cut at the walk (44 curves). A walk along which the gap reaches past a
 /// tenth of the tolerance on both sides of zero is no contact (`line::crosses`), and the contact
 /// is traced from a step in along the seed curve. Checked here: no one-point curve, no curve
-/// lying about the branch point, the contact whole. (The full check still fails: a copy of a
-/// stretch of the crossing beside it, and, d = 0..0.3, the crossing stopping 0.038 short of the
-/// branch point with detours; see `…at_the_users_chordtol`.)
+/// lying about the branch point, the contact whole. (With this fix alone the full check failed
+/// on a copy of a stretch of the crossing beside it, and, d = 0..0.3, the crossing stopping
+/// 0.038 short of the branch point; with i13a-s20's copies cut out too, both runs pass it in
+/// `…at_the_users_chordtol`.)
 #[test]
 fn a_contact_traced_from_a_branch_point_on_an_edge_runs_along_it() {
     let k = 0.5;
