@@ -534,18 +534,8 @@ pub(crate) fn unfold_overshoots(
         }
         p.swap(k, k + 1);
         let hi = (k + 2).min(p.len() - 1);
-        let mut prev = None;
-        let nodes: Vec<(DVec2, DVec3)> = p[k - 1..=hi]
-            .iter()
-            .map(|&q| {
-                let uv = a.project(q, prev);
-                prev = Some(uv);
-                (uv, q)
-            })
-            .collect();
-        let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
-        let dense = assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol).points;
-        let added = dense.len() - nodes.len();
+        let dense = densified(a, gap, &p[k - 1..=hi], tol, chord_tol);
+        let added = dense.len() - (hi + 2 - k);
         p.splice(k - 1..=hi, dense);
         // On past the point put back, which may itself have overshot the one after.
         k += 1 + added;
@@ -554,6 +544,28 @@ pub(crate) fn unfold_overshoots(
         points: p,
         closed: piece.closed,
     }
+}
+
+/// `points` of a crossing, taken onto `a` in turn, with each chord densified within `chord_tol`
+/// on the true surfaces (its midpoints the gap's roots across it, see [`between`]).
+pub(super) fn densified(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    points: &[DVec3],
+    tol: f64,
+    chord_tol: f64,
+) -> Vec<DVec3> {
+    let mut prev = None;
+    let nodes: Vec<(DVec2, DVec3)> = points
+        .iter()
+        .map(|&q| {
+            let uv = a.project(q, prev);
+            prev = Some(uv);
+            (uv, q)
+        })
+        .collect();
+    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
+    assemble(&nodes, false, |x| x.1, &mid_of, tol, chord_tol).points
 }
 
 /// Drops the points of the last half of `points` from its first fold (a point where the polyline

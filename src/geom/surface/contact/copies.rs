@@ -6,8 +6,8 @@
 //! (a detour), and those that join nothing stay beside it as extra curves. A stretch lying along
 //! another piece is that piece's, not a new curve.
 
-use super::super::refine::{assemble, Patch};
-use super::alongside::between;
+use super::super::refine::Patch;
+use super::alongside::densified;
 use super::line::GapAt;
 use super::near_any;
 use crate::geom::mesh::Polyline3;
@@ -117,22 +117,12 @@ pub(super) fn without_retraces(
     if across.is_empty() {
         return piece;
     }
-    let mid_of = |x: &(DVec2, DVec3), y: &(DVec2, DVec3)| between(a, gap, x, y, tol);
     let mut points = Vec::with_capacity(p.len());
     for (n, &k) in kept.iter().enumerate() {
         if across.contains(&n) {
             let x = points.last().copied().unwrap_or(p[k]);
-            let ux = a.project(x, None);
-            let uy = a.project(p[k], Some(ux));
-            let chord = assemble(
-                &[(ux, x), (uy, p[k])],
-                false,
-                |n| n.1,
-                &mid_of,
-                tol,
-                chord_tol,
-            );
-            points.extend_from_slice(&chord.points[1..chord.points.len() - 1]);
+            let chord = densified(a, gap, &[x, p[k]], tol, chord_tol);
+            points.extend_from_slice(&chord[1..chord.len() - 1]);
         }
         points.push(p[k]);
     }
