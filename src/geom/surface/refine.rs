@@ -17,6 +17,7 @@ mod bracket;
 mod newton;
 mod patch;
 mod plane_across;
+use across::Across;
 use newton::newton_pair_mid;
 use newton::{min_norm, newton_pair_held, newton_plane_held};
 pub(crate) use newton::{newton_pair, newton_plane, Node};
@@ -179,7 +180,10 @@ fn densify<N: Copy>(
 /// lie off the curve (see `newton::newton_pair_mid`: towards a branch point the surfaces part
 /// so slowly across the curve that a point within 0.01·`tol` of both lies far off it), it is
 /// taken across the chord onto the simple root of the gap, if there is one (a crossing's); a
-/// contact's even root has none, and its point is kept as Newton left it.
+/// contact's even root has none, and its point is kept as Newton left it. A point that is
+/// neither (see `across::flat`: beside a branch point, off both curves) is None, as one that
+/// does not converge: `densify` stops there and leaves the chord loose rather than put in a
+/// point off both curves, where it would bisect on towards the branch point through more.
 fn pair_mid<'p>(
     a: &'p Patch<'p>,
     b: &'p Patch<'p>,
@@ -191,9 +195,14 @@ fn pair_mid<'p>(
         if m.residual > tol {
             return None;
         }
-        let x =
-            unsure.and_then(|d| across::onto_crossing(a, b, &m, ((n0.point, n1.point), d), tol));
-        Some(x.unwrap_or(m))
+        let Some(cols) = unsure else {
+            return Some(m);
+        };
+        match across::onto_crossing(a, b, &m, ((n0.point, n1.point), cols), tol) {
+            Across::Onto(x) => Some(x),
+            Across::Stands => Some(m),
+            Across::Neither => None,
+        }
     }
 }
 
@@ -430,8 +439,10 @@ pub(crate) fn refine_section_loose(
         let at = s.eval(uv);
         let reach = 4.0 * a.1.distance(b.1);
         match plane_across::onto_plane_crossing(s, (uv, at), (p0, n), tol, reach) {
-            Some(x) => Some((x, s.eval(x))),
-            None => Some((uv, at)),
+            Across::Onto(x) => Some((x, s.eval(x))),
+            Across::Stands => Some((uv, at)),
+            // Off both curves beside a branch point: not put in (see `pair_mid`).
+            Across::Neither => None,
         }
     };
     assemble_loose(&nodes, seed.closed, |x| x.1, &mid_of, tol, chord_tol)

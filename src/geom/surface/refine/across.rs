@@ -6,7 +6,7 @@
 //! that rounding. A tangent contact's gap has an even root, with no sign change to bracket.
 
 use super::{Node, Patch};
-use crate::geom::root::{from_newton_step, NewtonStep};
+use crate::geom::root::{from_newton_step, illinois, At, NewtonStep, Stop};
 use glam::{DVec2, DVec3};
 use std::cell::Cell;
 
@@ -19,14 +19,37 @@ use std::cell::Cell;
 /// its gap is at the rounding). None where the step does not cut the gap eightfold (a
 /// contact's even root: it cuts it fourfold, and the gap keeps its sign), where the line leaves
 /// either surface, or where the root would be farther than four times the chord's length and
-/// the point's distance from it (another curve's root).
+/// the point's distance from it (another curve's root). Where the step cuts it so but is
+/// longer than a contact's (see [`flat`]), [`Across::Neither`] unless a sign change lies within
+/// three steps (see [`past_flat`]).
 pub(super) fn onto_crossing(
     a: &Patch,
     b: &Patch,
     m: &Node,
     ((p0, p1), cols): ((DVec3, DVec3), [DVec3; 4]),
     tol: f64,
-) -> Option<Node> {
+) -> Across<Node> {
+    crossing_across(a, b, m, ((p0, p1), cols), tol).unwrap_or(Across::Stands)
+}
+
+/// What became of a point Newton may have left off the curve, taken across it.
+pub(super) enum Across<P> {
+    /// The crossing's point on the line across.
+    Onto(P),
+    /// The point stands as Newton left it: on a contact's double zero, or nothing better found.
+    Stands,
+    /// The point is neither a crossing's nor a contact's: not to be put in the curve.
+    Neither,
+}
+
+/// [`onto_crossing`], None where Newton's point stands.
+fn crossing_across(
+    a: &Patch,
+    b: &Patch,
+    m: &Node,
+    ((p0, p1), cols): ((DVec3, DVec3), [DVec3; 4]),
+    tol: f64,
+) -> Option<Across<Node>> {
     let chord = p1 - p0;
     // How far the root may lie: four times the chord's length and the point's distance from it
     // (Newton's point may be crawled off it by more than the chord is long, deep in densify).
@@ -64,7 +87,14 @@ pub(super) fn onto_crossing(
     // a probe with b's foot moved one Gauss–Newton step, its error third order in the step.
     let probe = probe_at(a, b, m, (dir * step, [bu, bv], nb))?;
     if probe.signum() == g0.signum() && 8.0 * probe.abs() > g0.abs() {
-        return None;
+        if !flat(step, tol, a.scale().min(b.scale())) {
+            return None;
+        }
+        let found = past_flat(&at, (g0, 3.0 * step), (reach, noise), 1e-3 * tol, None);
+        return Some(match found {
+            Some(root) if root.payload.residual <= tol => Across::Onto(root.payload),
+            _ => Across::Neither,
+        });
     }
     // `dir` is of unit speed in space, so the reach and the width are the argument's own.
     let newton = NewtonStep {
@@ -78,7 +108,65 @@ pub(super) fn onto_crossing(
     // The start's gap is taken again for a bracket [0, step]: `g0` is to b's foot at `m`,
     // `at`'s to b's point projected, and the bracketed sign must be the node's.
     let root = from_newton_step(&at, newton, None)?;
-    (root.payload.residual <= tol).then_some(root.payload)
+    (root.payload.residual <= tol).then_some(Across::Onto(root.payload))
+}
+
+/// Whether a Newton step of length `step` across a curve (in space) that cut the gap only as
+/// a contact's double zero does is longer than a contact's: within the tolerance `tol` of both
+/// surfaces Newton leaves a point of a contact whose gap curves on the surfaces' `scale` about
+/// √(tol·scale)/10 off it, its step half that; beside a branch point, where the crossing runs
+/// into the contact and the gap across flattens to a triple root, points are left up to ∛tol
+/// off both curves (5e-4 on the sheet of surface_contact_crossing, `near` there 2.9e-4), and
+/// their steps are as long as a quarter of √(tol·scale) (1.8e-5 there) and more. Only such
+/// points pay for [`past_flat`]: the surfaces of the benches (a torus touching a plane) have
+/// contacts that curve on their own scale, and their midpoints' steps are far shorter.
+pub(super) fn flat(step: f64, tol: f64, scale: f64) -> bool {
+    step.abs() > 0.25 * (tol * scale).sqrt()
+}
+
+/// The crossing's root between 0 and `far` (three Newton steps, on `f`'s argument) where the
+/// gap `g0` at 0 fell under the first step only as at a contact's double zero: beside a branch
+/// point the gap across is near a triple root and Newton cuts a crossing's gap so too (3.4 to
+/// 4-fold), the root up to three steps on (a double zero's lies two on, and the gap three on is
+/// a quarter of `g0`, its sign the same). Bracketed where the gap at `far` has the other sign
+/// (beyond `noise`) and solved by the Illinois method to `width`; None where it keeps its sign,
+/// `far` lies beyond `reach`, or `f` cannot be evaluated. `start` is `f`'s payload at 0 where
+/// `g0` is `f`'s own value there (else `f` is evaluated at 0 for the bracket).
+pub(super) fn past_flat<P>(
+    mut f: impl FnMut(f64) -> Option<(f64, P)>,
+    (g0, far): (f64, f64),
+    (reach, noise): (f64, f64),
+    width: f64,
+    start: Option<P>,
+) -> Option<At<P>> {
+    if !(far.is_finite() && far.abs() <= reach) {
+        return None;
+    }
+    let (g, payload) = f(far)?;
+    if g.signum() == g0.signum() || g.abs() <= noise || !g.is_finite() {
+        return None;
+    }
+    let zero = match start {
+        Some(payload) => At {
+            t: 0.0,
+            f: g0,
+            payload,
+        },
+        None => {
+            let (f0, payload) = f(0.0)?;
+            At {
+                t: 0.0,
+                f: f0,
+                payload,
+            }
+        }
+    };
+    let end = At {
+        t: far,
+        f: g,
+        payload,
+    };
+    illinois(f, [zero, end], Stop::Width(width))
 }
 
 /// The signed gap from `a` at `m`'s parameters moved by `du` to `b` along `nb` (b's unit normal

@@ -7,6 +7,7 @@
 //! and bracketed it is found to its rounding — what `across::onto_crossing` does for two
 //! surfaces.
 
+use super::across::{flat, past_flat, Across};
 use super::Patch;
 use crate::geom::root::{from_newton_step, NewtonStep};
 use glam::{DVec2, DVec3};
@@ -18,14 +19,27 @@ use glam::{DVec2, DVec3};
 /// Illinois method (Newton's step itself where it lands within the distance's rounding). None
 /// where the point is already as near as the distance's rounding tells, its Newton step is
 /// within 1e-3·`tol`, the step does not cut the distance eightfold (a contact's even root), no
-/// sign change lies within `reach`, or the line leaves `s`.
+/// sign change lies within `reach`, or the line leaves `s`: [`Across::Stands`] then, but
+/// [`Across::Neither`] where the step cut it so and is longer than a contact's (see
+/// `across::flat`) and no sign change lies within three steps (see `across::past_flat`).
 pub(super) fn onto_plane_crossing(
     s: &Patch,
     (uv, at): (DVec2, DVec3),
     (p0, n): (DVec3, DVec3),
     tol: f64,
     reach: f64,
-) -> Option<DVec2> {
+) -> Across<DVec2> {
+    plane_crossing(s, (uv, at), (p0, n), tol, reach).unwrap_or(Across::Stands)
+}
+
+/// [`onto_plane_crossing`], None where the point stands.
+fn plane_crossing(
+    s: &Patch,
+    (uv, at): (DVec2, DVec3),
+    (p0, n): (DVec3, DVec3),
+    tol: f64,
+    reach: f64,
+) -> Option<Across<DVec2>> {
     let g0 = n.dot(at - p0);
     // The distance's rounding: a few ulps of the coordinates' size.
     let noise = 8.0 * f64::EPSILON * (at.abs().max_element() + p0.abs().max_element());
@@ -57,6 +71,26 @@ pub(super) fn onto_plane_crossing(
         let d = n.dot(s.eval(q) - p0);
         d.is_finite().then_some((d, q))
     };
+    // A step longer than a contact's that cuts the distance as a contact's double zero does
+    // (beside a branch point): the crossing looked for within three steps, the point given up
+    // where none is (its step's distance is taken again by `from_newton_step` otherwise: only
+    // such long steps pay for it).
+    if flat(len, tol, s.scale()) {
+        let (f1, _) = dist(1.0)?;
+        if f1.abs() > 8.0 * noise && f1.signum() == g0.signum() && 8.0 * f1.abs() > g0.abs() {
+            let found = past_flat(
+                dist,
+                (g0, 3.0),
+                (reach / len, 8.0 * noise),
+                1e-3 * tol / len,
+                Some(uv),
+            );
+            return Some(match found {
+                Some(root) if root.f.abs() <= tol => Across::Onto(root.payload),
+                _ => Across::Neither,
+            });
+        }
+    }
     // Newton's step lands within the distance's rounding where the point was off only by
     // Newton's crawl (3.8e-8 seen at W = −4.5e-3): kept, with nothing left to bracket and no
     // sign change past it. Its distance is then within `tol` (the start's is, and the
@@ -70,7 +104,7 @@ pub(super) fn onto_plane_crossing(
         rounding: 8.0 * noise,
     };
     let root = from_newton_step(dist, newton, Some(uv))?;
-    (root.f.abs() <= tol).then_some(root.payload)
+    (root.f.abs() <= tol).then_some(Across::Onto(root.payload))
 }
 
 #[cfg(test)]
@@ -97,7 +131,10 @@ mod tests {
                 let g0 = n.dot(at - p0);
                 // Within the tolerance, and far over the distance's rounding.
                 assert!(g0.abs() <= tol && g0.abs() >= 1e-9, "{q} {delta}: {g0:e}");
-                let x = onto_plane_crossing(s, (uv, at), (p0, n), tol, 1.0);
+                let x = match onto_plane_crossing(s, (uv, at), (p0, n), tol, 1.0) {
+                    Across::Onto(x) => Some(x),
+                    Across::Stands | Across::Neither => None,
+                };
                 // Within the distance's rounding as `onto_plane_crossing` bounds it (a few
                 // ulps of the coordinates), the kept step's promise.
                 out.push(x.map(|x| {
