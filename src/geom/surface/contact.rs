@@ -412,6 +412,26 @@ fn trace_contacts(
             }
         }
     }
+    // One-point touching seeds (no step of their own) trace with the longest step of the other
+    // seeds, where nothing traced runs by them: a seed curve coming into a branch point along the
+    // crossing (densify leaving the chord there loose) steps in onto the crossing, not the contact.
+    let step = touching
+        .iter()
+        .map(|(c, _)| c)
+        .chain(partly.iter().map(|x| &x.c))
+        .map(longest_step)
+        .fold(0.0, f64::max);
+    for (c, uv) in touching.iter().filter(|(c, _)| c.points.len() == 1) {
+        if step <= 0.0 || near_any(c.points[0], &traced, near) {
+            continue;
+        }
+        let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, &traced, near));
+        let (tol, chord_tol, _) = tols;
+        if let Some(t) = contact_curve_near(a, gap, *uv, step, tol, chord_tol).filter(fresh) {
+            traced.push(t);
+            steps.push(step);
+        }
+    }
     (traced, steps)
 }
 
