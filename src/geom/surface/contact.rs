@@ -412,27 +412,41 @@ fn trace_contacts(
             }
         }
     }
-    // One-point touching seeds (no step of their own) trace with the longest step of the other
-    // seeds, where nothing traced runs by them: a seed curve coming into a branch point along the
-    // crossing (densify leaving the chord there loose) steps in onto the crossing, not the contact.
+    trace_lone_points(a, gap, touching, partly, (&mut traced, &mut steps), tols);
+    (traced, steps)
+}
+
+/// One-point touching seeds (no step of their own) trace with the longest step of the other
+/// seeds, where nothing traced runs by them: a seed curve coming into a branch point along the
+/// crossing (densify leaving the chord there loose) steps in onto the crossing, not the contact,
+/// and the contact's lone seed points are then all that is left on it.
+fn trace_lone_points(
+    a: &Patch,
+    gap: &dyn Fn(DVec2) -> GapAt,
+    touching: &[(Polyline3, DVec2)],
+    partly: &[Probed],
+    (traced, steps): (&mut Vec<Polyline3>, &mut Vec<f64>),
+    (tol, chord_tol, near): (f64, f64, f64),
+) {
     let step = touching
         .iter()
         .map(|(c, _)| c)
         .chain(partly.iter().map(|x| &x.c))
         .map(longest_step)
         .fold(0.0, f64::max);
+    if step <= 0.0 {
+        return;
+    }
     for (c, uv) in touching.iter().filter(|(c, _)| c.points.len() == 1) {
-        if step <= 0.0 || near_any(c.points[0], &traced, near) {
+        if near_any(c.points[0], traced, near) {
             continue;
         }
-        let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, &traced, near));
-        let (tol, chord_tol, _) = tols;
+        let fresh = |t: &Polyline3| !t.points.iter().all(|p| near_any(*p, traced, near));
         if let Some(t) = contact_curve_near(a, gap, *uv, step, tol, chord_tol).filter(fresh) {
             traced.push(t);
             steps.push(step);
         }
     }
-    (traced, steps)
 }
 
 /// The contact traced on the true surfaces from `uv`, a touching probe of the seed curve `c`,
