@@ -33,6 +33,22 @@ pub struct At<P> {
     pub payload: P,
 }
 
+impl<P> At<P> {
+    /// The sample at 0: `start`'s payload with `f0` where `f0` is `f`'s own value there (the
+    /// caller already evaluated it), else `f` evaluated at 0.
+    pub fn at_zero(
+        f0: f64,
+        start: Option<P>,
+        f: impl FnOnce(f64) -> Option<(f64, P)>,
+    ) -> Option<Self> {
+        let (f, payload) = match start {
+            Some(payload) => (f0, payload),
+            None => f(0.0)?,
+        };
+        Some(At { t: 0.0, f, payload })
+    }
+}
+
 /// The root of `f` bracketed by `ends` (already evaluated; values of opposite signs, or one of
 /// them zero), solved until `stop` holds, the secant point stops moving off the bracket's ends,
 /// or after [`STEPS`]: of the last bracket's two ends, the one with the lesser |value| (the
@@ -144,17 +160,7 @@ pub fn from_newton_step<P>(
         return Some(one);
     }
     let (lo, hi) = if f1.signum() != f0.signum() {
-        let zero = match start {
-            Some(payload) => At {
-                t: 0.0,
-                f: f0,
-                payload,
-            },
-            None => {
-                let (f, payload) = f(0.0)?;
-                At { t: 0.0, f, payload }
-            }
-        };
+        let zero = At::at_zero(f0, start, &mut f)?;
         (zero, one)
     } else if 8.0 * f1.abs() > f0.abs() {
         return None;

@@ -43,7 +43,11 @@ pub(super) fn without_copies(pieces: Vec<Polyline3>, r: f64) -> (Vec<Polyline3>,
 /// The runs of `c` left when its runs of two or more points within `r` of `others` are cut
 /// out (none when all of its points are within `r`); None where nothing is cut.
 fn off_others(c: &Polyline3, others: &[&Polyline3], r: f64) -> Option<Vec<Polyline3>> {
-    let near = |p: DVec3| others.iter().any(|o| near_any(p, std::slice::from_ref(*o), r));
+    let near = |p: DVec3| {
+        others
+            .iter()
+            .any(|o| near_any(p, std::slice::from_ref(*o), r))
+    };
     let on: Vec<bool> = c.points.iter().map(|p| near(*p)).collect();
     if on.iter().all(|x| *x) {
         return Some(Vec::new());

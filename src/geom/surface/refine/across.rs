@@ -146,21 +146,7 @@ pub(super) fn past_flat<P>(
     if g.signum() == g0.signum() || g.abs() <= noise || !g.is_finite() {
         return None;
     }
-    let zero = match start {
-        Some(payload) => At {
-            t: 0.0,
-            f: g0,
-            payload,
-        },
-        None => {
-            let (f0, payload) = f(0.0)?;
-            At {
-                t: 0.0,
-                f: f0,
-                payload,
-            }
-        }
-    };
+    let zero = At::at_zero(g0, start, &mut f)?;
     let end = At {
         t: far,
         f: g,
