@@ -395,6 +395,8 @@ pub(super) fn march(
     stop: &dyn Fn(DVec2, DVec2, DVec3) -> bool,
 ) -> Vec<(DVec2, DVec3)> {
     let (mut uv, mut t) = (uv, dir.normalize_or_zero());
+    // The node the way was last taken from (see below).
+    let mut anchor = uv;
     let mut nodes = Vec::new();
     let mut frac = 1.0;
     while nodes.len() < MAX_NODES && t != DVec2::ZERO {
@@ -435,14 +437,20 @@ pub(super) fn march(
         });
         match good {
             Some((c, p)) => {
-                // A node is placed only to within the tolerance (near a branch point, where
-                // the march is refused and its step halved down to 0.01·tol, by the gap's
-                // rounding): a step shorter than that says nothing of the way the crossing
-                // runs, and taking its chord for the way on turned a march back along the
-                // crossing it came up (s = 1.5e-2: a stub traced there and back, 0.154 long).
-                let moved = delta(a, uv, c);
-                if moved.length() * speed > tol {
+                // A node is placed only to within the tolerance, near a branch point (where
+                // the march is refused and its step halved down to 0.01·tol) only to within the
+                // gap's rounding over its slope across, several tolerances: the chord of a step
+                // not much longer than that says nothing of the way the crossing runs, and
+                // taking it for the way on turned marches back along the crossing they came up
+                // (s = 1.5e-2: a stub traced there and back, 0.154 long, from steps under the
+                // tolerance; cone ∩ patch d = −0.05..0.5 seed 1e-2: the crossing there and back,
+                // 6.42 long, from steps of 1e-9 to 1e-8 placed 4e-9 apart across). The way is
+                // taken from the chord back to the node it was last taken at, once that is a
+                // thousandth of the full step: at full steps, from the last node, as before.
+                let moved = delta(a, anchor, c);
+                if moved.length() * speed > tol.max(1e-3 * len) {
                     t = moved.normalize();
+                    anchor = c;
                 }
                 uv = c;
                 nodes.push((c, p));
