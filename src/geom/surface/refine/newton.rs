@@ -33,11 +33,12 @@ pub(super) fn newton_pair_held(
     newton_pair_run(a, b, uv, hold, tol).0
 }
 
-/// [`newton_pair`] for a midpoint between two points of a curve (`refine::pair_mid`), with the
-/// surfaces' derivatives there where the point is not known to be on the curve: its residual
-/// over the sine of the surfaces' angle (how far off the curve it may be) exceeds `tol`, and
-/// the residual is above the rounding (see `across::rounding`; within it no computation tells
-/// where the curve is, and the point stands). Towards a branch point the surfaces part so
+/// [`newton_pair`] for a midpoint between two points of a curve (`refine::pair_mid`) or a free
+/// seed point (`refine::seed_node`), with the surfaces' derivatives there where the point is
+/// not known to be on the curve: its residual over the sine of the surfaces' angle (how far off
+/// the curve it may be) exceeds `tol`, and the residual is above the rounding (see
+/// `across::rounding`; within it no computation tells where the curve is, and the point
+/// stands). Towards a branch point the surfaces part so
 /// slowly across the curve that a point within 1e-11 of both can lie 1.7e-5 off it:
 /// `min_norm`'s damping caps the steps across to about the residual over √λ (6.7e-7 a step,
 /// the residual falling 4 % a step), and Newton stops crawling. The derivatives are those Newton
