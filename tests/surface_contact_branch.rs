@@ -12,20 +12,18 @@
 //! the root of d(1 − w²) = w, passing through the contact where d = 0: a branch point, the gap
 //! across a triple root (−w³).
 
-use lispcad::geom::curve::Curve;
 use lispcad::geom::mesh::Polyline3;
-use lispcad::geom::surface::{surface_intersect_seeded, Surface};
+use lispcad::geom::surface::surface_intersect_seeded;
 use lispcad::geom::DVec3;
 use std::f64::consts::{FRAC_PI_2, PI};
-use std::sync::Arc;
 
 mod surface_support;
 use surface_support::{assert_same_bits, section_and_both_orders, summary};
 #[path = "surface_support/branch.rs"]
 mod branch;
 use branch::{
-    check, check_sloped, check_sloped_within, list_if_failing, off_curve, on_line, patch, plate,
-    root, sloped_patch, MEET,
+    check, check_sloped, check_sloped_within, cone, list_if_failing, off_curve, on_line, patch,
+    plate, root, sloped_patch, MEET,
 };
 
 /// [`check`] in section and patch ∩ plate (or, `plate_first`, in plate ∩ patch only) with the
@@ -178,8 +176,7 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone() {
     let k = 0.5;
     let (d0, d1) = (-0.1, 0.3);
     let s = sloped_patch(d0, d1, k);
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     for (name, x, y) in [("patch ∩ cone", &s, &cone), ("cone ∩ patch", &cone, &s)] {
         let run = || surface_intersect_seeded(x, y, 1e-2, 1e-6, 1e-9).unwrap();
         let r = run();
@@ -244,8 +241,7 @@ fn a_crossing_marched_into_a_branch_point_does_not_turn_back() {
     let k = 0.5;
     let d = (-0.05, 0.5);
     let s = sloped_patch(d.0, d.1, k);
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     let r = surface_intersect_seeded(&cone, &s, 1e-2, 1e-6, 1e-9).unwrap();
     check_sloped("cone ∩ patch d = -0.05..0.5 seed 0.01", &r, d, k, MEET);
 }
@@ -321,8 +317,7 @@ fn a_crossing_through_a_contact_between_a_patch_and_a_cone_at_the_users_chordtol
 #[test]
 fn a_contact_traced_from_a_branch_point_on_an_edge_runs_along_it() {
     let k = 0.5;
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     for d in [(0.0, 0.3), (0.3, 0.0)] {
         let s = sloped_patch(d.0, d.1, k);
         let r = surface_intersect_seeded(&cone, &s, 1e-3, 1e-3, 1e-9).unwrap();
@@ -359,8 +354,7 @@ fn a_contact_traced_from_a_branch_point_on_an_edge_runs_along_it() {
 #[test]
 fn a_crossing_beside_a_contact_at_chordtol_1e_3_comes_back_once() {
     let (k, tol) = (0.5, 1e-3);
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     let mut failed = Vec::new();
     for (d, cone_first) in [
         ((0.0, 0.3), false),
@@ -390,8 +384,7 @@ fn a_crossing_beside_a_contact_at_chordtol_1e_3_comes_back_once() {
 #[test]
 fn a_branch_point_between_a_cone_and_a_patch_is_solved_within_meet() {
     let (k, tol, d) = (0.5, 1e-3, (-0.1, 0.3));
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     let s = sloped_patch(d.0, d.1, k);
     let r = surface_intersect_seeded(&cone, &s, tol, tol, 1e-9).unwrap();
     check_sloped_within(
@@ -414,8 +407,7 @@ fn a_branch_point_between_a_cone_and_a_patch_is_solved_within_meet() {
 #[test]
 fn seed_points_beside_a_branch_point_at_chordtol_1e_3_are_on_the_crossing() {
     let (k, tol, d) = (0.5, 1e-3, (-0.3, 0.1));
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     let s = sloped_patch(d.0, d.1, k);
     let mut failed = Vec::new();
     for (name, x, y) in [("patch ∩ cone", &s, &cone), ("cone ∩ patch", &cone, &s)] {
@@ -432,8 +424,7 @@ fn seed_points_beside_a_branch_point_at_chordtol_1e_3_are_on_the_crossing() {
 /// run checked against the closed form within its chord and for the same bits a second time.
 fn cone_runs_pass(at: impl Fn(f64) -> (String, f64, f64)) {
     let k = 0.5;
-    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
-    let cone = Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap();
+    let cone = cone(k);
     let mut failed = Vec::new();
     for t in [2e-2, 1e-2, 5e-3, 2e-3, 1e-3] {
         let (tag, seed, chord) = at(t);

@@ -69,6 +69,13 @@ pub fn sloped_patch(d0: f64, d1: f64, k: f64) -> Surface {
     .unwrap()
 }
 
+/// The cone z = k·w (w = r − 2): the line from (1, 0, −k) to (3, 0, k) revolved about z, which
+/// [`sloped_patch`] touches along r = 2 and crosses.
+pub fn cone(k: f64) -> Surface {
+    let line = Curve::line(DVec3::new(1.0, 0.0, -k), DVec3::new(3.0, 0.0, k)).unwrap();
+    Surface::revolve(Arc::new(line), DVec3::ZERO, DVec3::Z, 2.0 * PI).unwrap()
+}
+
 /// The crossing's w for `d`.
 pub fn root(d: f64) -> f64 {
     2.0 * d / (1.0 + (1.0 + 4.0 * d * d).sqrt())

@@ -195,14 +195,29 @@ fn pair_mid<'p>(
         if m.residual > tol {
             return None;
         }
-        let Some(cols) = unsure else {
-            return Some(m);
-        };
-        match across::onto_crossing(a, b, &m, ((n0.point, n1.point), cols), tol) {
+        match taken_across(a, b, &m, unsure, (n0.point, n1.point), tol) {
             Across::Onto(x) => Some(x),
             Across::Stands => Some(m),
             Across::Neither => None,
         }
+    }
+}
+
+/// Newton's point `m` taken across `chord` onto the crossing (`across::onto_crossing`) where it
+/// may lie off its curve (`unsure`: the surfaces' derivatives there); where it is sure it
+/// stands. Searched only there (the surfaces nearly tangent): crossings at an angle, and points
+/// Newton brought to the rounding, cost nothing more.
+fn taken_across(
+    a: &Patch,
+    b: &Patch,
+    m: &Node,
+    unsure: Option<[DVec3; 4]>,
+    chord: (DVec3, DVec3),
+    tol: f64,
+) -> Across<Node> {
+    match unsure {
+        Some(cols) => across::onto_crossing(a, b, m, (chord, cols), tol),
+        None => Across::Stands,
     }
 }
 
@@ -213,13 +228,7 @@ fn pair_mid<'p>(
 /// across crawl, and it stopped on its residual up to 3.6e-6 off the crossing.
 fn seed_node(a: &Patch, b: &Patch, uv: [DVec2; 2], chord: (DVec3, DVec3), tol: f64) -> Node {
     let (m, unsure) = newton_pair_mid(a, b, uv, tol);
-    // Searched across only where Newton's point may lie off its curve by more than `tol` (the
-    // surfaces nearly tangent there): crossings at an angle, and points Newton brought to the
-    // rounding, cost nothing more.
-    let Some(cols) = unsure else {
-        return m;
-    };
-    match across::onto_crossing(a, b, &m, (chord, cols), tol) {
+    match taken_across(a, b, &m, unsure, chord, tol) {
         Across::Onto(x) => x,
         // A midpoint off both curves leaves its chord loose; a seed node has no chord to leave,
         // and stands as Newton left it (for regrouping to sort out, as before).
@@ -268,10 +277,7 @@ pub(crate) fn refine_pair_curve(
         );
         let n = held.unwrap_or_else(|| seed_node(a, b, start, chord, tol));
         let n = match edges.get(i).copied().flatten() {
-            Some(e) => {
-                let along = seed.points[(i + 1).min(last)] - seed.points[i.saturating_sub(1)];
-                bracket::pair_within_edge((a, b), e, (start, along), n, tol)
-            }
+            Some(e) => bracket::pair_within_edge((a, b), e, (start, chord.1 - chord.0), n, tol),
             _ => n,
         };
         if n.residual <= tol {
