@@ -17,6 +17,7 @@
 
 mod alongside;
 mod branch;
+mod branch_out;
 mod copies;
 mod fold;
 mod line;
@@ -337,8 +338,11 @@ fn regroup(
     };
     let found = crossings.beside(cut, &steps, &kept);
     kept.extend(found);
-    let mut kept =
+    let (kept, found) =
         branch::through_branch_points((a, other), gap, kept, &mut traced, near, (tol, chord_tol));
+    let len = steps.iter().copied().fold(0.0, f64::max);
+    let tols = (tol, chord_tol);
+    let mut kept = branch_out::march_out(a, gap, kept, (&traced, &found), (len, near), tols);
     kept.extend(traced);
     kept
 }

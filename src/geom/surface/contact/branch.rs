@@ -447,12 +447,12 @@ pub(crate) fn through_branch_points(
     contacts: &mut [Polyline3],
     near: f64,
     (tol, chord_tol): (f64, f64),
-) -> Vec<Polyline3> {
+) -> (Vec<Polyline3>, Vec<Node>) {
     let mut found: Vec<Node> = Vec::new();
     {
         let lines: Vec<&Polyline3> = contacts.iter().filter(|k| k.points.len() >= 2).collect();
         if lines.is_empty() {
-            return pieces;
+            return (pieces, found);
         }
         let mid_of = |x: &Node, y: &Node| between(a, gap, x, y, tol);
         for c in &mut pieces {
@@ -493,7 +493,7 @@ pub(crate) fn through_branch_points(
         let g = gap(m);
         (g.dist <= tol).then_some((m, g.point))
     };
-    for b in found {
+    for &b in &found {
         let at = contacts
             .iter()
             .enumerate()
@@ -515,7 +515,7 @@ pub(crate) fn through_branch_points(
             contacts[j].points = q;
         }
     }
-    pieces
+    (pieces, found)
 }
 
 /// The `contacts` that are lines (two points or more).
