@@ -634,7 +634,7 @@ fn to_contacts(p: DVec3, contacts: &[&Polyline3]) -> f64 {
 }
 
 /// The distance from `p` to the segment `xy`.
-fn to_segment(p: DVec3, x: DVec3, y: DVec3) -> f64 {
+pub(super) fn to_segment(p: DVec3, x: DVec3, y: DVec3) -> f64 {
     let d = y - x;
     let f = ((p - x).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
     p.distance(x + d * f)

@@ -8,6 +8,7 @@
 //! double zero beside it does not have), the crossing no longer depends on the seed.
 
 use super::alongside::{between, changes_sign, join_ends, march};
+use super::branch::to_segment;
 use super::line::{delta, GapAt};
 use super::{near_any, off_curves};
 use crate::geom::mesh::Polyline3;
@@ -219,20 +220,13 @@ fn in_band(
     };
     let uv = a.project(p, None);
     let along = delta(a, a.project(x, Some(uv)), a.project(y, Some(uv)));
-    let off = to_segment(p, (x, y));
+    let off = to_segment(p, x, y);
     !changes_sign(a, gap, uv, along, 0.5 * off, tol)
-}
-
-/// The distance from `p` to the segment `xy`.
-fn to_segment(p: DVec3, (x, y): (DVec3, DVec3)) -> f64 {
-    let d = y - x;
-    let f = ((p - x).dot(d) / d.length_squared().max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
-    p.distance(x + d * f)
 }
 
 /// The segment of `contacts` nearest `p`.
 fn nearest_segment(p: DVec3, contacts: &[Polyline3]) -> Option<(DVec3, DVec3)> {
-    let to = |s: &(DVec3, DVec3)| to_segment(p, *s);
+    let to = |s: &(DVec3, DVec3)| to_segment(p, s.0, s.1);
     contacts
         .iter()
         .filter(|k| k.points.len() >= 2)
