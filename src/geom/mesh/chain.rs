@@ -19,6 +19,18 @@ pub struct Polyline3 {
 }
 
 impl Polyline3 {
+    /// Its segments as point pairs (with the closing one of a closed polyline); none for fewer
+    /// than two points.
+    pub fn segments(&self) -> impl Iterator<Item = (DVec3, DVec3)> + '_ {
+        let m = self.points.len();
+        let segs = match m {
+            0 | 1 => 0,
+            _ if self.closed => m,
+            _ => m - 1,
+        };
+        (0..segs).map(move |i| (self.points[i], self.points[(i + 1) % m]))
+    }
+
     /// Total length (including the closing segment of a closed polyline).
     pub fn length(&self) -> f64 {
         let mut l: f64 = self.points.windows(2).map(|w| w[0].distance(w[1])).sum();

@@ -622,15 +622,11 @@ fn edge_branch_point(
 
 /// The distance from `p` to the nearest segment of `contacts`.
 fn to_contacts(p: DVec3, contacts: &[&Polyline3]) -> f64 {
-    let mut best = f64::INFINITY;
-    for k in contacts {
-        let m = k.points.len();
-        let segs = if k.closed { m } else { m - 1 };
-        for i in 0..segs {
-            best = best.min(to_segment(p, k.points[i], k.points[(i + 1) % m]));
-        }
-    }
-    best
+    contacts
+        .iter()
+        .flat_map(|k| k.segments())
+        .map(|(x, y)| to_segment(p, x, y))
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// The distance from `p` to the segment `xy`.

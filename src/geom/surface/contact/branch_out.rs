@@ -107,7 +107,8 @@ fn directions(
     let cubic = cubic_direction(a, gap, b, contacts, tol);
     let piece = piece_directions(a, b, pieces, near);
     // Where the piece through the branch point gives the way too, the form must agree with it
-    // (seen: plate ∩ patch d = −0.3..0.1 at CHORDTOL 1e-2, the form 1.4 rad off); where not,
+    // (seen: plate ∩ patch d = −0.3..0.1 at CHORDTOL 1e-2, the form about 4.5° off with the
+    // contact's direction from its nearest chord); where not,
     // the piece's way, 4·near out and so off the band, is taken.
     match (cubic, piece) {
         (Some(d), Some(p)) if p.iter().any(|x| x.dot(d).abs() >= 0.9) => Some(vec![-d, d]),
@@ -229,12 +230,7 @@ fn nearest_segment(p: DVec3, contacts: &[Polyline3]) -> Option<(DVec3, DVec3)> {
     let to = |s: &(DVec3, DVec3)| to_segment(p, s.0, s.1);
     contacts
         .iter()
-        .filter(|k| k.points.len() >= 2)
-        .flat_map(|k| {
-            let m = k.points.len();
-            let segs = if k.closed { m } else { m - 1 };
-            (0..segs).map(move |i| (k.points[i], k.points[(i + 1) % m]))
-        })
+        .flat_map(|k| k.segments())
         .min_by(|x, y| to(x).total_cmp(&to(y)))
 }
 
